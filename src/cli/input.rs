@@ -1,0 +1,229 @@
+//! Reading the JSON input of `run`: every error names the field it is about.
+//!
+//! Numbers may be JSON numbers or strings; both are read exactly as rationals (serde_json is
+//! built with `arbitrary_precision`, so a JSON number keeps its decimal text and `0.1` means
+//! 1/10, not the double nearest to it).
+
+use crate::scalar::parse::parse_rational;
+use crate::scalar::BigRational;
+use serde_json::{Map, Value};
+
+/// A user-facing input error: one line, naming the field.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("{0}")]
+pub struct InputError(pub String);
+
+pub fn fail<T>(message: impl Into<String>) -> Result<T, InputError> {
+    Err(InputError(message.into()))
+}
+
+/// Parse the whole input document, which must be a JSON object.
+pub fn parse_document(text: &str) -> Result<Map<String, Value>, InputError> {
+    match serde_json::from_str::<Value>(text) {
+        Ok(Value::Object(map)) => Ok(map),
+        Ok(other) => fail(format!(
+            "input: expected a JSON object, found {}",
+            kind(&other)
+        )),
+        Err(e) => fail(format!("input: malformed JSON: {e}")),
+    }
+}
+
+/// A short name for the JSON type of `v`, for error messages.
+pub fn kind(v: &Value) -> &'static str {
+    match v {
+        Value::Null => "null",
+        Value::Bool(_) => "a boolean",
+        Value::Number(_) => "a number",
+        Value::String(_) => "a string",
+        Value::Array(_) => "an array",
+        Value::Object(_) => "an object",
+    }
+}
+
+/// The field `name` of `obj`, or an error naming it.
+pub fn field<'a>(obj: &'a Map<String, Value>, name: &str) -> Result<&'a Value, InputError> {
+    obj.get(name)
+        .ok_or_else(|| InputError(format!("input: missing field \"{name}\"")))
+}
+
+/// Reject fields the algorithm does not know (a misspelt optional field would otherwise be
+/// silently ignored).
+pub fn only_fields(obj: &Map<String, Value>, known: &[&str]) -> Result<(), InputError> {
+    match obj.keys().find(|k| !known.contains(&k.as_str())) {
+        Some(k) => fail(format!(
+            "input: unknown field \"{k}\" (expected {})",
+            known.join(", ")
+        )),
+        None => Ok(()),
+    }
+}
+
+/// A number (JSON number or numeric string) at `path`, read exactly.
+pub fn number(v: &Value, path: &str) -> Result<BigRational, InputError> {
+    let text = match v {
+        Value::Number(n) => n.to_string(),
+        Value::String(s) => s.clone(),
+        other => {
+            return fail(format!(
+                "field \"{path}\": expected a number or a numeric string, found {}",
+                kind(other)
+            ))
+        }
+    };
+    parse_rational(&text).map_err(|e| InputError(format!("field \"{path}\": {e}")))
+}
+
+/// A non-negative whole number at `path`, at most `max`.
+pub fn count(v: &Value, path: &str, max: usize) -> Result<usize, InputError> {
+    let q = number(v, path)?;
+    let n = crate::scalar::parse::denotes_integer(&q)
+        .filter(|n| *n >= 0)
+        .ok_or_else(|| {
+            InputError(format!(
+                "field \"{path}\": expected a whole number ≥ 0, found {q}"
+            ))
+        })?;
+    if n as u128 > max as u128 {
+        return fail(format!(
+            "field \"{path}\": {n} is larger than the supported maximum {max}"
+        ));
+    }
+    Ok(n as usize)
+}
+
+/// An array at `path`.
+pub fn array<'a>(v: &'a Value, path: &str) -> Result<&'a Vec<Value>, InputError> {
+    v.as_array().ok_or_else(|| {
+        InputError(format!(
+            "field \"{path}\": expected an array, found {}",
+            kind(v)
+        ))
+    })
+}
+
+/// An interval [a, b] with b > a at `path`.
+pub fn interval(v: &Value, path: &str) -> Result<(BigRational, BigRational), InputError> {
+    let items = array(v, path)?;
+    if items.len() != 2 {
+        return fail(format!(
+            "field \"{path}\": expected [t0, t1], found {} values",
+            items.len()
+        ));
+    }
+    let a = number(&items[0], &format!("{path}[0]"))?;
+    let b = number(&items[1], &format!("{path}[1]"))?;
+    if b <= a {
+        return fail(format!(
+            "field \"{path}\": t1 = {b} must be greater than t0 = {a}"
+        ));
+    }
+    Ok((a, b))
+}
+
+/// A value that is either a number or a point (an array of numbers).
+#[derive(Clone, Debug, PartialEq)]
+pub enum NumOrPoint {
+    Number(BigRational),
+    Point(Vec<BigRational>),
+}
+
+/// A list whose entries are all numbers or all points of one dimension d ≥ 1. Returns the
+/// entries as points (a number is a point of dimension 1) and whether they were points.
+pub fn uniform_values(v: &Value, path: &str) -> Result<(Vec<Vec<BigRational>>, bool), InputError> {
+    let items = array(v, path)?;
+    if items.is_empty() {
+        return fail(format!(
+            "field \"{path}\": needs at least one value (the position)"
+        ));
+    }
+    let mut out = Vec::with_capacity(items.len());
+    let mut shape: Option<Option<usize>> = None; // Some(None): numbers, Some(Some(d)): points
+    for (i, item) in items.iter().enumerate() {
+        let p = format!("{path}[{i}]");
+        let value = match item {
+            Value::Array(coords) => {
+                if coords.is_empty() {
+                    return fail(format!(
+                        "field \"{p}\": a point needs at least one coordinate"
+                    ));
+                }
+                let c = coords
+                    .iter()
+                    .enumerate()
+                    .map(|(k, x)| number(x, &format!("{p}[{k}]")))
+                    .collect::<Result<Vec<_>, _>>()?;
+                NumOrPoint::Point(c)
+            }
+            other => NumOrPoint::Number(number(other, &p)?),
+        };
+        let this = match &value {
+            NumOrPoint::Number(_) => None,
+            NumOrPoint::Point(c) => Some(c.len()),
+        };
+        match shape {
+            None => shape = Some(this),
+            Some(s) if s != this => {
+                let describe = |s: Option<usize>| {
+                    s.map_or("a number".to_string(), |d| {
+                        format!("a point of dimension {d}")
+                    })
+                };
+                return fail(format!(
+                    "field \"{p}\": mixed dimensions: {} where earlier values are {}",
+                    describe(this),
+                    describe(s)
+                ));
+            }
+            Some(_) => {}
+        }
+        out.push(match value {
+            NumOrPoint::Number(q) => vec![q],
+            NumOrPoint::Point(c) => c,
+        });
+    }
+    Ok((out, matches!(shape, Some(Some(_)))))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use serde_json::json;
+
+    #[test]
+    fn numbers_are_exact_from_json_and_strings() {
+        let doc = parse_document(r#"{"a": 0.1, "b": "3/5", "c": 1e-3}"#).unwrap();
+        assert_eq!(
+            number(&doc["a"], "a").unwrap(),
+            BigRational::new(1.into(), 10.into())
+        );
+        assert_eq!(
+            number(&doc["b"], "b").unwrap(),
+            BigRational::new(3.into(), 5.into())
+        );
+        assert_eq!(
+            number(&doc["c"], "c").unwrap(),
+            BigRational::new(1.into(), 1000.into())
+        );
+    }
+
+    #[test]
+    fn errors_name_the_field() {
+        let e = number(&json!("NaN"), "start[2]").unwrap_err();
+        assert!(e.0.starts_with("field \"start[2]\""), "{e}");
+        let e = uniform_values(&json!([1, [1, 2]]), "end").unwrap_err();
+        assert!(
+            e.0.contains("end[1]") && e.0.contains("mixed dimensions"),
+            "{e}"
+        );
+        let e = interval(&json!([1, 1]), "interval").unwrap_err();
+        assert!(e.0.contains("interval"), "{e}");
+        assert!(parse_document("[1]").is_err());
+        assert!(parse_document("{")
+            .unwrap_err()
+            .0
+            .contains("malformed JSON"));
+        let e = count(&json!(2.5), "derivatives", 10).unwrap_err();
+        assert!(e.0.contains("whole number"), "{e}");
+    }
+}

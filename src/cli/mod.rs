@@ -1,0 +1,247 @@
+//! The command line: `verify`, `list` and `run <algorithm>` (DESIGN.md, "Command line").
+//!
+//! No mathematics lives here: arguments and JSON are read, an algorithm of the library is
+//! called, and JSON or a summary is printed. Every user error becomes one line on stderr and
+//! exit status 2, with nothing on stdout; `verify` exits 1 when a claim failed.
+
+pub mod input;
+pub mod output;
+mod run_hermite;
+
+use crate::claims::{self, Paper, Verdict};
+use crate::report;
+use crate::scalar::ScalarKind;
+use clap::{Parser, Subcommand, ValueEnum};
+use output::{render_certified, render_plain, Out};
+use serde_json::Value;
+use std::io::Read;
+use std::path::PathBuf;
+
+/// Verify the claims of five papers on curves and trajectories, in exact rationals, MPFR and f64.
+#[derive(Parser, Debug)]
+#[command(name = "trajverify", version, about, long_about = None)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Check every claim; write claims.json, a Markdown report per paper and SVG figures.
+    Verify {
+        /// Only these papers (id such as 000_d51e5cedfa8471cf, or short name such as hermite).
+        #[arg(long = "paper", value_name = "ID")]
+        papers: Vec<String>,
+        /// Where to write the ledger, reports and figures.
+        #[arg(long, value_name = "DIR", default_value = "reports")]
+        out: PathBuf,
+    },
+    /// List the claim ids with their locations in the papers (runs nothing).
+    List {
+        /// Only these papers.
+        #[arg(long = "paper", value_name = "ID")]
+        papers: Vec<String>,
+    },
+    /// Run one algorithm on a JSON object (from --input or stdin); print a JSON object.
+    #[command(after_long_help = RUN_HELP)]
+    Run {
+        algorithm: Algorithm,
+        /// Number type: f64, rational (exact), or mpfr:<bits> (printed with the digits that
+        /// agree between <bits> and 2·<bits>). Default: f64 for hermite, mpfr:256 for
+        /// hermite-condition.
+        #[arg(long, value_name = "SCALAR", value_parser = parse_scalar)]
+        scalar: Option<ScalarKind>,
+        /// Read the input from this file instead of stdin.
+        #[arg(long, value_name = "FILE")]
+        input: Option<PathBuf>,
+    },
+}
+
+const RUN_HELP: &str = r#"Algorithms and their input:
+  hermite            {"start": [x0, x0', ..., x0^(m)], "end": [x1, ..., x1^(m)], "interval": [t0, t1]}
+                     each value a number or a point [x, y, ...]; output {"degree", "control_points"}
+  hermite-condition  {"derivatives": m, "interval": [t0, t1], "matrix": "transform" | "binomial"}
+                     output {"condition_number", "certified_digits", "f64"}
+Numbers may be JSON numbers or strings ("3/5", "0.6", "1e-3"); both are read exactly."#;
+
+/// The algorithms `run` knows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum Algorithm {
+    /// Two-point Hermite data → Bernstein control points (paper 000, Eqs. 11–18).
+    Hermite,
+    /// Condition number κ₂ of the Hermite transform (paper 000, Eq. 10, Fig. 5).
+    HermiteCondition,
+}
+
+fn parse_scalar(s: &str) -> Result<ScalarKind, String> {
+    s.parse()
+}
+
+/// What `run` prints, before it is turned into JSON text.
+pub enum Rendered {
+    Json(Value),
+    /// Two MPFR results, at p and 2p bits, to be printed with their agreeing digits.
+    Certified(Box<(Out<rug::Float>, Out<rug::Float>)>),
+}
+
+impl Rendered {
+    pub fn plain<T: crate::scalar::Field>(out: Out<T>) -> Self {
+        Rendered::Json(render_plain(&out))
+    }
+    pub fn certified(lo: Out<rug::Float>, hi: Out<rug::Float>) -> Self {
+        Rendered::Certified(Box::new((lo, hi)))
+    }
+}
+
+/// How a command ended, for the exit status.
+#[derive(Debug)]
+pub enum Failure {
+    /// Bad input or usage: exit 2.
+    Usage(String),
+    /// A claim failed or a file could not be written: exit 1.
+    Run(String),
+}
+
+impl Failure {
+    pub fn exit_code(&self) -> i32 {
+        match self {
+            Failure::Usage(_) => 2,
+            Failure::Run(_) => 1,
+        }
+    }
+    pub fn message(&self) -> &str {
+        match self {
+            Failure::Usage(m) | Failure::Run(m) => m,
+        }
+    }
+}
+
+/// Run a parsed command line; the text to print on stdout on success.
+pub fn execute(cli: Cli) -> Result<String, Failure> {
+    match cli.command {
+        Command::List { papers } => list(&select(&papers)?),
+        Command::Verify { papers, out } => verify(&select(&papers)?, &out),
+        Command::Run {
+            algorithm,
+            scalar,
+            input,
+        } => run(algorithm, scalar, input),
+    }
+}
+
+fn select(names: &[String]) -> Result<Vec<Paper>, Failure> {
+    let all = claims::papers();
+    if names.is_empty() {
+        return Ok(all);
+    }
+    for name in names {
+        if !all.iter().any(|p| p.id == name || p.short == name) {
+            let known: Vec<String> = all
+                .iter()
+                .map(|p| format!("{} ({})", p.id, p.short))
+                .collect();
+            return Err(Failure::Usage(format!(
+                "option --paper: unknown paper {name:?}; known: {}",
+                known.join(", ")
+            )));
+        }
+    }
+    Ok(all
+        .into_iter()
+        .filter(|p| names.iter().any(|n| n == p.id || n == p.short))
+        .collect())
+}
+
+fn list(papers: &[Paper]) -> Result<String, Failure> {
+    let mut out = String::new();
+    for paper in papers {
+        out.push_str(&format!(
+            "# {} ({}): {}\n",
+            paper.id, paper.short, paper.title
+        ));
+        for spec in paper.specs {
+            out.push_str(&format!("{}\t{}\n", spec.id, spec.location));
+        }
+    }
+    Ok(out)
+}
+
+fn verify(papers: &[Paper], out_dir: &std::path::Path) -> Result<String, Failure> {
+    let mut all_claims = Vec::new();
+    let mut files = Vec::new();
+    let mut summary = String::new();
+    for paper in papers {
+        let output = (paper.verify)();
+        let (r, d, f) = report::counts(&output.claims);
+        summary.push_str(&format!(
+            "{} ({}): {} claims: {r} reproduced, {d} discrepancy, {f} failed\n",
+            paper.id,
+            paper.short,
+            output.claims.len()
+        ));
+        for c in output
+            .claims
+            .iter()
+            .filter(|c| c.verdict == Verdict::Failed)
+        {
+            summary.push_str(&format!("  FAILED {}: {}\n", c.id, c.evidence));
+        }
+        files.push((format!("{}.md", paper.id), output.markdown));
+        files.extend(output.figures);
+        all_claims.extend(output.claims);
+    }
+    files.push(("claims.json".to_string(), report::ledger_json(&all_claims)));
+    report::write_files(out_dir, &files)
+        .map_err(|e| Failure::Run(format!("writing {}: {e}", out_dir.display())))?;
+    summary.push_str(&format!(
+        "wrote {} files to {}\n",
+        files.len(),
+        out_dir.display()
+    ));
+    let (_, _, failed) = report::counts(&all_claims);
+    if failed > 0 {
+        Err(Failure::Run(format!("{summary}{failed} claim(s) failed")))
+    } else {
+        Ok(summary)
+    }
+}
+
+fn run(
+    algorithm: Algorithm,
+    scalar: Option<ScalarKind>,
+    input: Option<PathBuf>,
+) -> Result<String, Failure> {
+    let text = match &input {
+        Some(path) => std::fs::read_to_string(path).map_err(|e| {
+            Failure::Usage(format!(
+                "option --input: cannot read {}: {e}",
+                path.display()
+            ))
+        })?,
+        None => {
+            let mut s = String::new();
+            std::io::stdin()
+                .read_to_string(&mut s)
+                .map_err(|e| Failure::Usage(format!("input: cannot read stdin: {e}")))?;
+            s
+        }
+    };
+    let doc = input::parse_document(&text).map_err(|e| Failure::Usage(e.0))?;
+    let rendered = match algorithm {
+        Algorithm::Hermite => run_hermite::run_hermite(&doc, scalar.unwrap_or(ScalarKind::F64)),
+        Algorithm::HermiteCondition => {
+            run_hermite::run_condition(&doc, scalar.unwrap_or(ScalarKind::Mpfr(256)))
+        }
+    }
+    .map_err(|e| Failure::Usage(e.0))?;
+    let value = match rendered {
+        Rendered::Json(v) => v,
+        Rendered::Certified(pair) => {
+            render_certified(&pair.0, &pair.1, "").map_err(Failure::Usage)?
+        }
+    };
+    let mut s =
+        serde_json::to_string(&value).map_err(|e| Failure::Run(format!("internal: {e}")))?;
+    s.push('\n');
+    Ok(s)
+}

@@ -1,0 +1,171 @@
+//! Dense linear algebra written once over [`Field`] / [`Real`].
+//!
+//! - [`Matrix`]: a row-major dense matrix with products and transposes.
+//! - [`gauss`]: Gaussian elimination with partial pivoting: `solve`, `inverse`, `determinant`.
+//!   Exact in rationals (any non-zero pivot is exact; the largest one is chosen anyway so
+//!   the same code is the backward-stable choice in floating point).
+//! - [`svd`]: singular values by one-sided Jacobi at any precision.
+//! - [`reference`]: the same quantities in f64 through nalgebra, the reference our generic
+//!   routines are tested against and the "what f64 gives" column of every report.
+//!
+//! nalgebra's decompositions need `ComplexField`, which neither `rug::Float` nor
+//! `BigRational` implement, hence these short generic routines (DESIGN.md, "Scalars").
+
+pub mod gauss;
+pub mod reference;
+pub mod svd;
+
+use crate::scalar::Field;
+use std::ops::{Index, IndexMut};
+
+pub use gauss::{determinant, inverse, solve, SingularMatrix};
+pub use svd::{condition_number, singular_values};
+
+/// A dense `rows × cols` matrix stored row by row.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Matrix<T> {
+    rows: usize,
+    cols: usize,
+    data: Vec<T>,
+}
+
+impl<T: Field> Matrix<T> {
+    /// The zero matrix.
+    pub fn zeros(rows: usize, cols: usize, ctx: &T::Ctx) -> Self {
+        Matrix {
+            rows,
+            cols,
+            data: vec![T::zero_in(ctx); rows * cols],
+        }
+    }
+
+    /// The identity of order `n`.
+    pub fn identity(n: usize, ctx: &T::Ctx) -> Self {
+        let mut m = Self::zeros(n, n, ctx);
+        for i in 0..n {
+            m[(i, i)] = T::one_in(ctx);
+        }
+        m
+    }
+
+    /// A matrix from its rows, which must all have the same length.
+    pub fn from_rows(rows: Vec<Vec<T>>) -> Self {
+        let cols = rows.first().map_or(0, Vec::len);
+        assert!(
+            rows.iter().all(|r| r.len() == cols),
+            "rows of different lengths"
+        );
+        let n = rows.len();
+        Matrix {
+            rows: n,
+            cols,
+            data: rows.into_iter().flatten().collect(),
+        }
+    }
+
+    /// The matrix with entry (i, j) = f(i, j).
+    pub fn from_fn(rows: usize, cols: usize, mut f: impl FnMut(usize, usize) -> T) -> Self {
+        let data = (0..rows * cols).map(|k| f(k / cols, k % cols)).collect();
+        Matrix { rows, cols, data }
+    }
+
+    pub fn rows(&self) -> usize {
+        self.rows
+    }
+    pub fn cols(&self) -> usize {
+        self.cols
+    }
+    pub fn is_square(&self) -> bool {
+        self.rows == self.cols
+    }
+
+    /// Row `i` as a slice.
+    pub fn row(&self, i: usize) -> &[T] {
+        &self.data[i * self.cols..(i + 1) * self.cols]
+    }
+
+    /// The entries in row order.
+    pub fn entries(&self) -> &[T] {
+        &self.data
+    }
+
+    pub fn transpose(&self) -> Self {
+        Self::from_fn(self.cols, self.rows, |i, j| self[(j, i)].clone())
+    }
+
+    /// The product `self · other`. Panics if the inner dimensions differ.
+    pub fn mul(&self, other: &Matrix<T>) -> Matrix<T> {
+        assert_eq!(self.cols, other.rows, "inner dimensions differ");
+        Self::from_fn(self.rows, other.cols, |i, j| {
+            let mut acc = self[(i, 0)].clone() * &other[(0, j)];
+            for k in 1..self.cols {
+                acc += &(self[(i, k)].clone() * &other[(k, j)]);
+            }
+            acc
+        })
+    }
+
+    /// The product `self · x`. Panics if the lengths differ.
+    pub fn mul_vec(&self, x: &[T]) -> Vec<T> {
+        assert_eq!(
+            self.cols,
+            x.len(),
+            "vector length differs from the column count"
+        );
+        (0..self.rows)
+            .map(|i| {
+                let row = self.row(i);
+                let mut acc = row[0].clone() * &x[0];
+                for k in 1..self.cols {
+                    acc += &(row[k].clone() * &x[k]);
+                }
+                acc
+            })
+            .collect()
+    }
+
+    /// Apply `f` to every entry (for example to change the number type).
+    pub fn map<U>(&self, f: impl FnMut(&T) -> U) -> Matrix<U> {
+        Matrix {
+            rows: self.rows,
+            cols: self.cols,
+            data: self.data.iter().map(f).collect(),
+        }
+    }
+}
+
+impl<T> Index<(usize, usize)> for Matrix<T> {
+    type Output = T;
+    fn index(&self, (i, j): (usize, usize)) -> &T {
+        assert!(i < self.rows && j < self.cols, "index out of range");
+        &self.data[i * self.cols + j]
+    }
+}
+
+impl<T> IndexMut<(usize, usize)> for Matrix<T> {
+    fn index_mut(&mut self, (i, j): (usize, usize)) -> &mut T {
+        assert!(i < self.rows && j < self.cols, "index out of range");
+        &mut self.data[i * self.cols + j]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scalar::BigRational;
+
+    #[test]
+    fn products_and_transpose() {
+        let a = Matrix::from_rows(vec![vec![1.0, 2.0], vec![3.0, 4.0], vec![5.0, 6.0]]);
+        let at = a.transpose();
+        assert_eq!(at.rows(), 2);
+        let ata = at.mul(&a);
+        assert_eq!(
+            ata,
+            Matrix::from_rows(vec![vec![35.0, 44.0], vec![44.0, 56.0]])
+        );
+        assert_eq!(a.mul_vec(&[1.0, -1.0]), vec![-1.0, -1.0, -1.0]);
+        let id = Matrix::<BigRational>::identity(3, &());
+        assert_eq!(id.mul(&id), id);
+    }
+}

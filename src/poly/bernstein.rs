@@ -1,0 +1,256 @@
+//! A polynomial in Bernstein form on an interval [t₀, t₁] (paper 000, Sec. 2.1 and 3.1).
+//!
+//! B(t) = Σₖ pₖ b̄ₖⁿ(t) with b̄ₖⁿ(t) = C(n,k)(t₁−t)ⁿ⁻ᵏ(t−t₀)ᵏ/(t₁−t₀)ⁿ (Eqs. 1–4). The
+//! j-th derivative is again in Bernstein form:
+//! dʲB/dtʲ = n!/(n−j)!/(t₁−t₀)ʲ Σₖ b̄ₖⁿ⁻ʲ(t) Δʲpₖ (Eqs. 12–13), so at the ends it is
+//! n!/(n−j)!/(t₁−t₀)ʲ·Δʲp₀ and n!/(n−j)!/(t₁−t₀)ʲ·∇ʲpₙ (Eqs. 14–15).
+//!
+//! Evaluation is by de Casteljau (convex combinations: stable in floating point, exact in
+//! rationals). [`Bernstein::to_power_basis`] expands the basis polynomials directly, without
+//! the difference operators, and serves as the independent check of the derivative
+//! formulas.
+
+use super::differences::{backward_differences, forward_differences};
+use super::{binomial, falling_factorial, int_in};
+use crate::scalar::{powi, Field};
+
+/// A scalar polynomial of degree n = `control_points.len() − 1` on [t₀, t₁].
+#[derive(Clone, Debug, PartialEq)]
+pub struct Bernstein<T> {
+    pub control_points: Vec<T>,
+    pub t0: T,
+    pub t1: T,
+}
+
+/// The value at `t` of the basis polynomial b̄ₖⁿ on [t₀, t₁] (Eq. 4).
+pub fn basis<T: Field>(n: usize, k: usize, t: &T, t0: &T, t1: &T) -> T {
+    let ctx = t.ctx();
+    let c: T = int_in(&binomial(n, k), &ctx);
+    let left = t1.clone() - t;
+    let right = t.clone() - t0;
+    let width = t1.clone() - t0;
+    c * &powi(&left, (n - k) as u32) * &powi(&right, k as u32) / &powi(&width, n as u32)
+}
+
+impl<T: Field> Bernstein<T> {
+    /// A polynomial from its control points on [t₀, t₁]. Needs at least one control point
+    /// and t₀ ≠ t₁ (the callers that take user input check t₀ < t₁ first).
+    pub fn new(control_points: Vec<T>, t0: T, t1: T) -> Self {
+        assert!(
+            !control_points.is_empty(),
+            "a Bernstein polynomial needs a control point"
+        );
+        Bernstein {
+            control_points,
+            t0,
+            t1,
+        }
+    }
+
+    pub fn degree(&self) -> usize {
+        self.control_points.len() - 1
+    }
+
+    /// t₁ − t₀.
+    pub fn duration(&self) -> T {
+        self.t1.clone() - &self.t0
+    }
+
+    /// ζ = (t − t₀)/(t₁ − t₀) (Eq. 3).
+    pub fn local_parameter(&self, t: &T) -> T {
+        (t.clone() - &self.t0) / &self.duration()
+    }
+
+    /// B(t) by de Casteljau's algorithm.
+    pub fn eval(&self, t: &T) -> T {
+        let zeta = self.local_parameter(t);
+        let one_minus = T::one_in(&zeta.ctx()) - &zeta;
+        let mut row = self.control_points.clone();
+        for len in (1..row.len()).rev() {
+            for i in 0..len {
+                row[i] = one_minus.clone() * &row[i] + &(zeta.clone() * &row[i + 1]);
+            }
+        }
+        row.swap_remove(0)
+    }
+
+    /// The derivative dB/dt as a polynomial of degree n − 1 (Eq. 5 with the factor
+    /// 1/(t₁−t₀) of Eq. 13). The derivative of a constant is the zero constant.
+    pub fn derivative(&self) -> Bernstein<T> {
+        let ctx = self.t0.ctx();
+        let n = self.degree();
+        if n == 0 {
+            return Bernstein::new(vec![T::zero_in(&ctx)], self.t0.clone(), self.t1.clone());
+        }
+        let scale = T::from_i64(n as i64, &ctx) / &self.duration();
+        let points = self
+            .control_points
+            .windows(2)
+            .map(|w| (w[1].clone() - &w[0]) * &scale)
+            .collect();
+        Bernstein::new(points, self.t0.clone(), self.t1.clone())
+    }
+
+    /// The j-th derivative dʲB/dtʲ as a polynomial (repeated [`Self::derivative`]).
+    pub fn nth_derivative(&self, j: usize) -> Bernstein<T> {
+        (0..j).fold(self.clone(), |b, _| b.derivative())
+    }
+
+    /// The j-th derivative in the closed form of Eqs. 12–13: the polynomial of degree n−j
+    /// with control points n!/(n−j)!/(t₁−t₀)ʲ·Δʲpₖ, k = 0…n−j. For j > n, the zero constant.
+    pub fn derivative_closed_form(&self, j: usize) -> Bernstein<T> {
+        let ctx = self.t0.ctx();
+        if j > self.degree() {
+            return Bernstein::new(vec![T::zero_in(&ctx)], self.t0.clone(), self.t1.clone());
+        }
+        let factor = self.derivative_factor(j);
+        let n = self.degree();
+        let points = (0..=n - j)
+            .map(|k| forward_differences(&self.control_points[k..=k + j])[j].clone() * &factor)
+            .collect();
+        Bernstein::new(points, self.t0.clone(), self.t1.clone())
+    }
+
+    /// The factor n!/(n−j)!/(t₁−t₀)ʲ of Eqs. 13–15.
+    pub fn derivative_factor(&self, j: usize) -> T {
+        let ctx = self.t0.ctx();
+        let ff: T = int_in(&falling_factorial(self.degree(), j), &ctx);
+        ff / &powi(&self.duration(), j as u32)
+    }
+
+    /// dʲB/dtʲ(t₀) = n!/(n−j)!/(t₁−t₀)ʲ·Δʲp₀ (Eq. 14); zero for j > n.
+    pub fn derivative_at_start(&self, j: usize) -> T {
+        match forward_differences(&self.control_points).get(j) {
+            Some(d) => d.clone() * &self.derivative_factor(j),
+            None => T::zero_in(&self.t0.ctx()),
+        }
+    }
+
+    /// dʲB/dtʲ(t₁) = n!/(n−j)!/(t₁−t₀)ʲ·∇ʲpₙ (Eq. 15); zero for j > n.
+    pub fn derivative_at_end(&self, j: usize) -> T {
+        match backward_differences(&self.control_points).get(j) {
+            Some(d) => d.clone() * &self.derivative_factor(j),
+            None => T::zero_in(&self.t0.ctx()),
+        }
+    }
+
+    /// The coefficients a₀…aₙ of B in powers of the local parameter, B = Σ aᵢ ζⁱ, obtained by
+    /// expanding each C(n,k)(1−ζ)ⁿ⁻ᵏζᵏ with the binomial theorem (no difference operators).
+    pub fn to_power_basis(&self) -> Vec<T> {
+        let ctx = self.t0.ctx();
+        let n = self.degree();
+        let mut a = vec![T::zero_in(&ctx); n + 1];
+        for (k, p) in self.control_points.iter().enumerate() {
+            let ck = binomial(n, k);
+            // (1−ζ)^(n−k) ζ^k = Σ_l C(n−k, l)(−1)^l ζ^(k+l)
+            for l in 0..=n - k {
+                let c: T = int_in(&(ck.clone() * binomial(n - k, l)), &ctx);
+                let term = c * p;
+                if l % 2 == 0 {
+                    a[k + l] += &term;
+                } else {
+                    a[k + l] -= &term;
+                }
+            }
+        }
+        a
+    }
+
+    /// The same curve as a polynomial of degree n + 1:
+    /// p̂ᵢ = i/(n+1)·pᵢ₋₁ + (1 − i/(n+1))·pᵢ (end of Sec. 4).
+    pub fn elevate(&self) -> Bernstein<T> {
+        let ctx = self.t0.ctx();
+        let n = self.degree();
+        let m = (n + 1) as i64;
+        let p = &self.control_points;
+        let points = (0..=n + 1)
+            .map(|i| {
+                let w = T::from_ratio(i as i64, m, &ctx);
+                let one_minus = T::one_in(&ctx) - &w;
+                match i {
+                    0 => p[0].clone(),
+                    i if i == n + 1 => p[n].clone(),
+                    i => w * &p[i - 1] + &(one_minus * &p[i]),
+                }
+            })
+            .collect();
+        Bernstein::new(points, self.t0.clone(), self.t1.clone())
+    }
+
+    /// Elevate `times` times.
+    pub fn elevate_by(&self, times: usize) -> Bernstein<T> {
+        (0..times).fold(self.clone(), |b, _| b.elevate())
+    }
+}
+
+/// The j-th derivative with respect to t at ζ of a polynomial given by power-basis
+/// coefficients in ζ on an interval of length `duration`: Σᵢ i!/(i−j)! aᵢ ζ^(i−j) / durationʲ.
+pub fn power_basis_derivative<T: Field>(a: &[T], j: usize, zeta: &T, duration: &T) -> T {
+    let ctx = zeta.ctx();
+    let mut acc = T::zero_in(&ctx);
+    for i in (j..a.len()).rev() {
+        // Horner in ζ over the differentiated coefficients.
+        let c: T = int_in(&falling_factorial(i, j), &ctx);
+        acc = acc * zeta + &(c * &a[i]);
+    }
+    acc / &powi(duration, j as u32)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scalar::BigRational;
+
+    fn q(n: i64, d: i64) -> BigRational {
+        BigRational::new(n.into(), d.into())
+    }
+
+    fn sample() -> Bernstein<BigRational> {
+        Bernstein::new(vec![q(1, 1), q(-2, 1), q(3, 2), q(5, 1)], q(1, 1), q(3, 1))
+    }
+
+    #[test]
+    fn de_casteljau_matches_basis_sum() {
+        let b = sample();
+        for t in [q(1, 1), q(3, 2), q(7, 3), q(3, 1)] {
+            let direct = (0..=3).fold(q(0, 1), |acc, k| {
+                acc + basis(3, k, &t, &b.t0, &b.t1) * &b.control_points[k]
+            });
+            assert_eq!(b.eval(&t), direct);
+        }
+        assert_eq!(b.eval(&q(1, 1)), q(1, 1));
+        assert_eq!(b.eval(&q(3, 1)), q(5, 1));
+    }
+
+    #[test]
+    fn end_derivatives_match_power_basis() {
+        let b = sample();
+        let a = b.to_power_basis();
+        let zero = q(0, 1);
+        let one = q(1, 1);
+        for j in 0..=4 {
+            assert_eq!(
+                b.derivative_at_start(j),
+                power_basis_derivative(&a, j, &zero, &b.duration())
+            );
+            assert_eq!(
+                b.derivative_at_end(j),
+                power_basis_derivative(&a, j, &one, &b.duration())
+            );
+            assert_eq!(
+                b.nth_derivative(j).eval(&q(2, 1)),
+                power_basis_derivative(&a, j, &q(1, 2), &b.duration())
+            );
+        }
+    }
+
+    #[test]
+    fn elevation_keeps_the_curve() {
+        let b = sample();
+        let e = b.elevate_by(3);
+        assert_eq!(e.degree(), 6);
+        let mut pa = b.to_power_basis();
+        pa.resize(7, q(0, 1));
+        assert_eq!(e.to_power_basis(), pa);
+    }
+}

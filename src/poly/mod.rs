@@ -1,0 +1,53 @@
+//! Polynomials in Bernstein form and the difference operators behind their derivatives.
+//!
+//! - [`differences`]: forward and backward differences (paper 000, Eqs. 6–7), their
+//!   inverses (Eqs. 8–9) and the matrix forms (App. A, Eqs. A1–A3).
+//! - [`bernstein`]: the Bernstein basis on [t₀, t₁] (Eqs. 1–4), de Casteljau evaluation,
+//!   derivatives (Eqs. 5, 12, 13), conversion to the power basis, degree elevation.
+//!
+//! Everything is generic over [`Field`](crate::scalar::Field): exact in rationals.
+
+pub mod bernstein;
+pub mod differences;
+
+pub use bernstein::Bernstein;
+
+use crate::scalar::{BigInt, Field};
+use num_traits::One;
+
+/// The binomial coefficient C(n, k) as an exact integer.
+pub fn binomial(n: usize, k: usize) -> BigInt {
+    if k > n {
+        return BigInt::from(0);
+    }
+    let k = k.min(n - k);
+    let mut c = BigInt::one();
+    for i in 0..k {
+        c = c * (n - i) / (i + 1);
+    }
+    c
+}
+
+/// The falling factorial n!/(n−j)! = n(n−1)…(n−j+1) as an exact integer.
+pub fn falling_factorial(n: usize, j: usize) -> BigInt {
+    (0..j).fold(BigInt::one(), |acc, i| acc * (n - i))
+}
+
+/// An exact integer as a value of `T` (correctly rounded).
+pub fn int_in<T: Field>(n: &BigInt, ctx: &T::Ctx) -> T {
+    T::from_rational(&crate::scalar::BigRational::from_integer(n.clone()), ctx)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn pascal_and_falling() {
+        assert_eq!(binomial(5, 2), BigInt::from(10));
+        assert_eq!(binomial(61, 30).to_string(), "232714176627630544");
+        assert_eq!(binomial(3, 4), BigInt::from(0));
+        assert_eq!(falling_factorial(5, 2), BigInt::from(20));
+        assert_eq!(falling_factorial(5, 0), BigInt::from(1));
+    }
+}

@@ -1,0 +1,127 @@
+//! Turning checked claims into files: the ledger `claims.json`, one Markdown report per paper
+//! and SVG figures (module [`plot`]).
+//!
+//! Output is deterministic: no timestamps, host names or timings, claims in spec order, and
+//! figures drawn from values computed in MPFR or by IEEE basic operations only, so the same
+//! bytes come out on every machine and thread count.
+
+pub mod plot;
+
+use crate::claims::{Claim, Verdict};
+use serde::Serialize;
+use std::path::Path;
+
+#[derive(Serialize)]
+struct Summary {
+    total: usize,
+    reproduced: usize,
+    discrepancy: usize,
+    failed: usize,
+}
+
+#[derive(Serialize)]
+struct LedgerFile<'a> {
+    summary: Summary,
+    claims: &'a [Claim],
+}
+
+/// Counts of claims by verdict: (reproduced, discrepancy, failed).
+pub fn counts(claims: &[Claim]) -> (usize, usize, usize) {
+    let n = |v| claims.iter().filter(|c| c.verdict == v).count();
+    (
+        n(Verdict::Reproduced),
+        n(Verdict::Discrepancy),
+        n(Verdict::Failed),
+    )
+}
+
+/// The contents of `claims.json`: a summary of counts by verdict and every claim.
+pub fn ledger_json(claims: &[Claim]) -> String {
+    let (reproduced, discrepancy, failed) = counts(claims);
+    let file = LedgerFile {
+        summary: Summary {
+            total: claims.len(),
+            reproduced,
+            discrepancy,
+            failed,
+        },
+        claims,
+    };
+    // Serialising plain structs of strings cannot fail.
+    let mut s = serde_json::to_string_pretty(&file).unwrap_or_default();
+    s.push('\n');
+    s
+}
+
+/// A Markdown table. Cells are escaped for `|` and line breaks.
+pub fn table(headers: &[&str], rows: &[Vec<String>]) -> String {
+    let esc = |s: &str| s.replace('|', "\\|").replace('\n', " ");
+    let mut out = format!(
+        "| {} |\n|{}\n",
+        headers
+            .iter()
+            .map(|h| esc(h))
+            .collect::<Vec<_>>()
+            .join(" | "),
+        "---|".repeat(headers.len())
+    );
+    for row in rows {
+        out.push_str(&format!(
+            "| {} |\n",
+            row.iter().map(|c| esc(c)).collect::<Vec<_>>().join(" | ")
+        ));
+    }
+    out
+}
+
+/// The ledger section of a paper report: every claim with its verdict and evidence.
+pub fn claims_section(claims: &[Claim]) -> String {
+    let rows: Vec<Vec<String>> = claims
+        .iter()
+        .map(|c| {
+            vec![
+                format!("`{}`", c.id),
+                c.location.clone(),
+                c.published.clone().unwrap_or_else(|| "—".into()),
+                c.reproduced.clone(),
+                c.scalar.clone(),
+                format!("**{}**", c.verdict.as_str()),
+            ]
+        })
+        .collect();
+    let mut out = String::from("## Claims ledger\n\n");
+    out.push_str(&table(
+        &[
+            "id",
+            "location",
+            "published",
+            "reproduced",
+            "scalar",
+            "verdict",
+        ],
+        &rows,
+    ));
+    out.push_str("\n### Evidence\n\n");
+    for c in claims {
+        out.push_str(&format!(
+            "- `{}` ({}) — {}: {}\n",
+            c.id,
+            c.verdict.as_str(),
+            c.statement,
+            c.evidence
+        ));
+    }
+    out
+}
+
+/// Write every file, creating `dir` if needed. Each file goes to a temporary name first and
+/// is renamed into place, so an interrupted run leaves either the old or the new file.
+pub fn write_files(dir: &Path, files: &[(String, String)]) -> std::io::Result<()> {
+    std::fs::create_dir_all(dir)?;
+    for (name, contents) in files {
+        let tmp = dir.join(format!(".{name}.tmp"));
+        std::fs::write(&tmp, contents)?;
+        std::fs::rename(&tmp, dir.join(name))?;
+    }
+    Ok(())
+}

@@ -1,0 +1,279 @@
+//! SVG figures with plotters: panels of line and marker series, linear or log₁₀ y axes.
+//!
+//! plotters is built without a font backend, so text sizes are estimated by a fixed rule
+//! rather than measured from system fonts: the SVG bytes do not depend on the machine.
+//! A log axis is drawn as log₁₀ of the data on a linear axis with ticks labelled 1eK, which
+//! keeps one code path for both kinds of axis.
+
+use plotters::prelude::*;
+use plotters::style::RGBColor;
+
+/// How a series is drawn.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Style {
+    Solid,
+    Dashed,
+    Dotted,
+    /// A marker at each point, no line.
+    Markers,
+    /// Solid line with a marker at each point.
+    LineMarkers,
+}
+
+/// One named series of (x, y) points.
+#[derive(Clone, Debug)]
+pub struct Series {
+    pub name: String,
+    pub points: Vec<(f64, f64)>,
+    pub style: Style,
+    /// Index into the palette (black, blue, red, green, orange, purple).
+    pub color: usize,
+}
+
+impl Series {
+    pub fn new(
+        name: impl Into<String>,
+        points: Vec<(f64, f64)>,
+        style: Style,
+        color: usize,
+    ) -> Self {
+        Series {
+            name: name.into(),
+            points,
+            style,
+            color,
+        }
+    }
+}
+
+/// One chart: axes, labels and series.
+#[derive(Clone, Debug, Default)]
+pub struct Panel {
+    pub title: String,
+    pub x_label: String,
+    pub y_label: String,
+    pub series: Vec<Series>,
+    /// Draw y on a log₁₀ axis (non-positive values are skipped).
+    pub log_y: bool,
+    /// Same scale on both axes (for paths in the plane).
+    pub equal_aspect: bool,
+    /// Where the legend goes: true for the lower right, false for the upper left.
+    pub legend_lower_right: bool,
+}
+
+const PALETTE: [RGBColor; 6] = [
+    RGBColor(0, 0, 0),
+    RGBColor(0, 90, 181),
+    RGBColor(220, 50, 32),
+    RGBColor(0, 140, 70),
+    RGBColor(230, 140, 0),
+    RGBColor(120, 50, 160),
+];
+
+/// A figure could not be drawn.
+#[derive(Debug, thiserror::Error)]
+#[error("drawing figure failed: {0}")]
+pub struct PlotError(String);
+
+fn err<E: std::fmt::Debug>(e: E) -> PlotError {
+    PlotError(format!("{e:?}"))
+}
+
+/// Render `panels` on a grid of `rows × cols` cells into an SVG document of `size` pixels.
+pub fn render(
+    panels: &[Panel],
+    (rows, cols): (usize, usize),
+    size: (u32, u32),
+) -> Result<String, PlotError> {
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, size).into_drawing_area();
+        root.fill(&WHITE).map_err(err)?;
+        let areas = root.split_evenly((rows, cols));
+        for (panel, area) in panels.iter().zip(areas.iter()) {
+            draw_panel(panel, area)?;
+        }
+        root.present().map_err(err)?;
+    }
+    Ok(svg)
+}
+
+fn transformed(panel: &Panel, points: &[(f64, f64)]) -> Vec<(f64, f64)> {
+    points
+        .iter()
+        .filter(|(x, y)| x.is_finite() && y.is_finite() && (!panel.log_y || *y > 0.0))
+        .map(|&(x, y)| if panel.log_y { (x, y.log10()) } else { (x, y) })
+        .collect()
+}
+
+fn bounds(values: impl Iterator<Item = f64>) -> (f64, f64) {
+    let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+        (lo.min(v), hi.max(v))
+    });
+    if !lo.is_finite() {
+        return (0.0, 1.0);
+    }
+    if hi - lo < 1e-12 * (1.0 + lo.abs()) {
+        return (lo - 0.5, hi + 0.5);
+    }
+    let pad = 0.05 * (hi - lo);
+    (lo - pad, hi + pad)
+}
+
+fn draw_panel<DB: DrawingBackend>(
+    panel: &Panel,
+    area: &DrawingArea<DB, plotters::coord::Shift>,
+) -> Result<(), PlotError> {
+    let data: Vec<Vec<(f64, f64)>> = panel
+        .series
+        .iter()
+        .map(|s| transformed(panel, &s.points))
+        .collect();
+    let (mut x0, mut x1) = bounds(data.iter().flatten().map(|p| p.0));
+    let (mut y0, mut y1) = bounds(data.iter().flatten().map(|p| p.1));
+    if panel.log_y {
+        (y0, y1) = (y0.floor(), y1.ceil());
+    }
+    let (margin, label_area) = (12u32, 50u32);
+    if panel.equal_aspect {
+        let (w, h) = area.dim_in_pixel();
+        let plot_w = w.saturating_sub(margin * 2 + label_area).max(1) as f64;
+        let plot_h = h.saturating_sub(margin * 2 + label_area + 24).max(1) as f64;
+        let scale = ((x1 - x0) / plot_w).max((y1 - y0) / plot_h);
+        let (cx, cy) = ((x0 + x1) / 2.0, (y0 + y1) / 2.0);
+        (x0, x1) = (cx - scale * plot_w / 2.0, cx + scale * plot_w / 2.0);
+        (y0, y1) = (cy - scale * plot_h / 2.0, cy + scale * plot_h / 2.0);
+    }
+    let mut chart = ChartBuilder::on(area)
+        .caption(&panel.title, ("sans-serif", 16))
+        .margin(margin)
+        .x_label_area_size(label_area - 10)
+        .y_label_area_size(label_area + 10)
+        .build_cartesian_2d(x0..x1, y0..y1)
+        .map_err(err)?;
+    let log_y = panel.log_y;
+    let y_fmt = move |v: &f64| {
+        if log_y {
+            format!("1e{}", v.round() as i64)
+        } else {
+            tick(*v)
+        }
+    };
+    let mut mesh = chart.configure_mesh();
+    mesh.x_desc(panel.x_label.as_str())
+        .y_desc(panel.y_label.as_str())
+        .x_label_formatter(&|v: &f64| tick(*v))
+        .y_label_formatter(&y_fmt)
+        .light_line_style(RGBColor(235, 235, 235));
+    if log_y {
+        mesh.y_labels(((y1 - y0) as usize + 1).min(12));
+    }
+    mesh.draw().map_err(err)?;
+    for (series, points) in panel.series.iter().zip(data) {
+        let color = PALETTE[series.color % PALETTE.len()];
+        let line = color.stroke_width(2);
+        let anno = match series.style {
+            Style::Solid => chart
+                .draw_series(LineSeries::new(points, line))
+                .map_err(err)?,
+            Style::Dashed => chart
+                .draw_series(DashedLineSeries::new(points, 8, 5, line))
+                .map_err(err)?,
+            Style::Dotted => chart
+                .draw_series(DashedLineSeries::new(points, 2, 4, line))
+                .map_err(err)?,
+            Style::Markers => chart
+                .draw_series(
+                    points
+                        .into_iter()
+                        .map(|p| Circle::new(p, 3, color.filled())),
+                )
+                .map_err(err)?,
+            Style::LineMarkers => {
+                chart
+                    .draw_series(LineSeries::new(points.clone(), line))
+                    .map_err(err)?;
+                chart
+                    .draw_series(
+                        points
+                            .into_iter()
+                            .map(|p| Circle::new(p, 3, color.filled())),
+                    )
+                    .map_err(err)?
+            }
+        };
+        if !series.name.is_empty() {
+            anno.label(series.name.as_str()).legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 18, y)], color.stroke_width(2))
+            });
+        }
+    }
+    if panel.series.iter().any(|s| !s.name.is_empty()) {
+        let position = if panel.legend_lower_right {
+            SeriesLabelPosition::LowerRight
+        } else {
+            SeriesLabelPosition::UpperLeft
+        };
+        chart
+            .configure_series_labels()
+            .position(position)
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK)
+            .draw()
+            .map_err(err)?;
+    }
+    Ok(())
+}
+
+/// A short tick label: integers plainly, others with up to 4 significant digits.
+fn tick(v: f64) -> String {
+    if v == 0.0 || (v.abs() >= 1e-3 && v.abs() < 1e5) {
+        let s = format!("{:.4}", v);
+        let s = s.trim_end_matches('0').trim_end_matches('.');
+        if s == "-0" {
+            "0".into()
+        } else {
+            s.into()
+        }
+    } else {
+        format!("{v:.2e}")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn panel(log_y: bool) -> Panel {
+        Panel {
+            title: "t".into(),
+            x_label: "x".into(),
+            y_label: "y".into(),
+            series: vec![Series::new(
+                "a",
+                vec![(0.0, 1.0), (1.0, 100.0), (2.0, 1e6)],
+                Style::LineMarkers,
+                1,
+            )],
+            log_y,
+            ..Panel::default()
+        }
+    }
+
+    #[test]
+    fn renders_identical_bytes_twice() {
+        let a = render(&[panel(true), panel(false)], (1, 2), (800, 300)).unwrap();
+        let b = render(&[panel(true), panel(false)], (1, 2), (800, 300)).unwrap();
+        assert_eq!(a, b);
+        assert!(a.starts_with("<svg"));
+        assert!(a.contains("1e6"));
+    }
+
+    #[test]
+    fn tick_labels() {
+        assert_eq!(tick(2.0), "2");
+        assert_eq!(tick(0.25), "0.25");
+        assert_eq!(tick(-0.0), "0");
+        assert_eq!(tick(123456.0), "1.23e5");
+    }
+}

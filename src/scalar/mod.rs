@@ -1,0 +1,237 @@
+//! Number types: the [`Field`] and [`Real`] traits and their three instances.
+//!
+//! Every algorithm in trajverify is written once over these traits and instantiated with
+//!
+//! | type | context (`Ctx`) | what it delivers |
+//! |---|---|---|
+//! | `f64` | `()` | IEEE double: fast, 53-bit rounding in every operation |
+//! | [`rug::Float`] (MPFR) | precision in bits (`u32`) | correctly rounded operations at any precision |
+//! | [`BigRational`] | `()` | exact field arithmetic; no square roots, so it implements only [`Field`] |
+//!
+//! The context is never a hidden global: a new constant is made with the context of the
+//! operands it will meet (`T::from_i64(3, &x.ctx())`), so MPFR precision flows through the
+//! computation explicitly. Operators take an owned left and a borrowed right operand
+//! (`a * &b`, `a += &b`), the one form all three types provide (rug's `&a + &b` is a lazy
+//! expression, not a `Float`).
+//!
+//! [`parse`] reads decimal and fraction strings exactly; [`certify`] turns two computations at
+//! different precisions into a decimal string carrying only the digits on which they agree.
+
+pub mod certify;
+mod float;
+mod mpfr;
+pub mod parse;
+mod rational;
+
+use std::fmt::Debug;
+use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
+
+pub use num_bigint::BigInt;
+pub use num_rational::BigRational;
+pub use rug::Float;
+
+/// The field operations every algorithm needs, with an explicit context for constants.
+///
+/// Implemented for `f64`, [`rug::Float`] and [`BigRational`]. Algorithms that need only
+/// `+ − × ÷` (Bernstein evaluation, Hermite interpolation, Gaussian elimination) take
+/// `T: Field` and therefore also run exactly in rationals.
+pub trait Field:
+    Clone
+    + PartialOrd
+    + Debug
+    + Send
+    + Sync
+    + 'static
+    + Add<Output = Self>
+    + for<'a> Add<&'a Self, Output = Self>
+    + Sub<Output = Self>
+    + for<'a> Sub<&'a Self, Output = Self>
+    + Mul<Output = Self>
+    + for<'a> Mul<&'a Self, Output = Self>
+    + Div<Output = Self>
+    + for<'a> Div<&'a Self, Output = Self>
+    + Neg<Output = Self>
+    + for<'a> AddAssign<&'a Self>
+    + for<'a> SubAssign<&'a Self>
+    + for<'a> MulAssign<&'a Self>
+    + for<'a> DivAssign<&'a Self>
+{
+    /// What a constant needs to be made compatible with existing values: `()` for f64 and
+    /// rationals, the precision in bits for MPFR.
+    type Ctx: Clone + Debug + PartialEq + Send + Sync;
+
+    /// The context of this value (its precision for MPFR).
+    fn ctx(&self) -> Self::Ctx;
+    /// A name for the number type in this context: `f64`, `rational`, `mpfr:<bits>`.
+    fn scalar_name(ctx: &Self::Ctx) -> String;
+
+    fn zero_in(ctx: &Self::Ctx) -> Self {
+        Self::from_i64(0, ctx)
+    }
+    fn one_in(ctx: &Self::Ctx) -> Self {
+        Self::from_i64(1, ctx)
+    }
+    /// The integer `v`, rounded to the context if it is not representable.
+    fn from_i64(v: i64, ctx: &Self::Ctx) -> Self;
+    /// The fraction `n/d` with one rounding (exact for rationals). `d` must not be zero.
+    fn from_ratio(n: i64, d: i64, ctx: &Self::Ctx) -> Self;
+    /// The rational `q`, correctly rounded to the context (exact for rationals).
+    fn from_rational(q: &BigRational, ctx: &Self::Ctx) -> Self;
+    /// The double `v` (exact for rationals and for MPFR with at least 53 bits). `v` must be finite.
+    fn from_f64(v: f64, ctx: &Self::Ctx) -> Self;
+
+    fn abs(&self) -> Self;
+    fn is_zero(&self) -> bool;
+    /// False for infinities and NaN (always true for rationals).
+    fn is_finite(&self) -> bool;
+    /// The nearest double (may overflow to ±∞ or lose everything below 2⁻¹⁰⁷⁴).
+    fn to_f64(&self) -> f64;
+    /// The exact value of a finite number as a fraction.
+    fn to_rational(&self) -> Option<BigRational>;
+    /// `self += a·b`. MPFR fuses it into one rounding without a temporary; the default (used
+    /// by f64 and rationals) multiplies, then adds.
+    fn mul_add_assign(&mut self, a: &Self, b: &Self) {
+        *self += &(a.clone() * b);
+    }
+    /// `self −= a·b`, fused in MPFR like [`Field::mul_add_assign`].
+    fn mul_sub_assign(&mut self, a: &Self, b: &Self) {
+        *self -= &(a.clone() * b);
+    }
+    /// All the digits this value carries, uncertified: an exact fraction for rationals,
+    /// the shortest round-trip decimal for f64, every significant digit of the precision for
+    /// MPFR. Use [`certify`] for digits that two precisions agree on.
+    fn to_plain_string(&self) -> String;
+}
+
+/// The operations beyond a field that curves, frames and singular values need.
+///
+/// Implemented by `f64` and [`rug::Float`] only, so code that takes a square root cannot be
+/// instantiated with rationals by mistake. MPFR operations are correctly rounded; the f64
+/// transcendental functions come from the platform's libm and may differ in the last bit
+/// between platforms.
+pub trait Real: Field {
+    fn sqrt(&self) -> Self;
+    fn sin_cos(&self) -> (Self, Self);
+    /// `self.atan2(x)` is the angle of the point (x, self), in (−π, π].
+    fn atan2(&self, x: &Self) -> Self;
+    fn exp(&self) -> Self;
+    fn ln(&self) -> Self;
+    fn pi(ctx: &Self::Ctx) -> Self;
+    /// The unit roundoff scale 2^(1−p) of the context (p = 53 for f64).
+    fn epsilon(ctx: &Self::Ctx) -> Self;
+    /// The precision in bits.
+    fn precision_bits(ctx: &Self::Ctx) -> u32;
+}
+
+/// `base^e` by repeated squaring, in the field of `base`.
+pub fn powi<T: Field>(base: &T, mut e: u32) -> T {
+    let mut result = T::one_in(&base.ctx());
+    let mut square = base.clone();
+    while e > 0 {
+        if e & 1 == 1 {
+            result *= &square;
+        }
+        e >>= 1;
+        if e > 0 {
+            square = square.clone() * &square;
+        }
+    }
+    result
+}
+
+/// The larger of two values (the first one when they compare equal or are unordered).
+pub fn max_of<T: Field>(a: T, b: T) -> T {
+    if b > a {
+        b
+    } else {
+        a
+    }
+}
+
+/// Which number type a computation runs in, as chosen on the command line.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ScalarKind {
+    F64,
+    Rational,
+    /// MPFR with this many bits of precision.
+    Mpfr(u32),
+}
+
+/// Smallest and largest MPFR precision accepted from users.
+pub const MPFR_BITS_RANGE: (u32, u32) = (16, 1 << 16);
+
+impl std::str::FromStr for ScalarKind {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        match s {
+            "f64" => Ok(ScalarKind::F64),
+            "rational" => Ok(ScalarKind::Rational),
+            _ => {
+                let bits = s.strip_prefix("mpfr:").ok_or_else(|| {
+                    format!("unknown scalar {s:?}: expected f64, rational or mpfr:<bits>")
+                })?;
+                let bits: u32 = bits.parse().map_err(|_| {
+                    format!("mpfr precision {bits:?} is not a whole number of bits")
+                })?;
+                let (lo, hi) = MPFR_BITS_RANGE;
+                if !(lo..=hi).contains(&bits) {
+                    return Err(format!("mpfr precision {bits} is outside {lo}..={hi} bits"));
+                }
+                Ok(ScalarKind::Mpfr(bits))
+            }
+        }
+    }
+}
+
+impl std::fmt::Display for ScalarKind {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            ScalarKind::F64 => write!(f, "f64"),
+            ScalarKind::Rational => write!(f, "rational"),
+            ScalarKind::Mpfr(bits) => write!(f, "mpfr:{bits}"),
+        }
+    }
+}
+
+/// The shortest decimal that reads back as the same double (see `Field::to_plain_string`).
+pub fn float_text(x: f64) -> String {
+    float::format_f64(x)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn generic_sum_of_thirds<T: Field>(ctx: &T::Ctx) -> T {
+        let third = T::from_ratio(1, 3, ctx);
+        third.clone() + &third + &third
+    }
+
+    #[test]
+    fn one_generic_body_three_number_types() {
+        assert_eq!(
+            generic_sum_of_thirds::<BigRational>(&()),
+            BigRational::from_integer(1.into())
+        );
+        assert_eq!(generic_sum_of_thirds::<f64>(&()), 1.0);
+        let x: Float = generic_sum_of_thirds(&200);
+        assert_eq!(x.prec(), 200);
+        assert!((x - 1u32).abs() < 1e-59);
+    }
+
+    #[test]
+    fn powi_matches_repeated_multiplication() {
+        let b = BigRational::new(3.into(), 2.into());
+        assert_eq!(powi(&b, 5), BigRational::new(243.into(), 32.into()));
+        assert_eq!(powi(&2.0f64, 0), 1.0);
+    }
+
+    #[test]
+    fn scalar_kind_parses_and_rejects() {
+        assert_eq!("mpfr:256".parse::<ScalarKind>(), Ok(ScalarKind::Mpfr(256)));
+        assert_eq!("rational".parse::<ScalarKind>(), Ok(ScalarKind::Rational));
+        assert!("mpfr:3".parse::<ScalarKind>().is_err());
+        assert!("mpfr:x".parse::<ScalarKind>().is_err());
+        assert!("f32".parse::<ScalarKind>().is_err());
+    }
+}

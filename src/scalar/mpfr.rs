@@ -1,0 +1,160 @@
+//! [`rug::Float`] (MPFR) as a [`Field`] and [`Real`]; the context is the precision in bits.
+//!
+//! Every operation is correctly rounded to the precision of its left operand, so all values
+//! of one computation should share one precision: constants are made with `ctx()` of the
+//! values they meet.
+
+use super::{BigInt, BigRational, Field, Real};
+use num_bigint::Sign;
+use rug::float::{Constant, Round};
+use rug::integer::Order;
+use rug::{Float, Integer, Rational};
+
+/// num-bigint → GMP integer, exactly.
+pub fn bigint_to_integer(n: &BigInt) -> Integer {
+    let (sign, bytes) = n.to_bytes_le();
+    let magnitude = Integer::from_digits(&bytes, Order::Lsf);
+    if sign == Sign::Minus {
+        -magnitude
+    } else {
+        magnitude
+    }
+}
+
+/// GMP integer → num-bigint, exactly.
+pub fn integer_to_bigint(n: &Integer) -> BigInt {
+    let bytes: Vec<u8> = n.to_digits(Order::Lsf);
+    let sign = match n.cmp0() {
+        std::cmp::Ordering::Less => Sign::Minus,
+        std::cmp::Ordering::Equal => Sign::NoSign,
+        std::cmp::Ordering::Greater => Sign::Plus,
+    };
+    BigInt::from_bytes_le(sign, &bytes)
+}
+
+/// num-rational → GMP rational, exactly.
+pub fn to_gmp_rational(q: &BigRational) -> Rational {
+    Rational::from((bigint_to_integer(q.numer()), bigint_to_integer(q.denom())))
+}
+
+/// GMP rational → num-rational, exactly.
+pub fn from_gmp_rational(q: &Rational) -> BigRational {
+    BigRational::new(integer_to_bigint(q.numer()), integer_to_bigint(q.denom()))
+}
+
+/// A rational rounded once to the nearest double (through a 53-bit MPFR value, whose
+/// exponent range is wider, so only results in the subnormal range can round twice).
+pub fn rational_to_f64(q: &BigRational) -> f64 {
+    Float::with_val(53, &to_gmp_rational(q)).to_f64()
+}
+
+impl Field for Float {
+    type Ctx = u32;
+
+    fn ctx(&self) -> u32 {
+        self.prec()
+    }
+    fn scalar_name(bits: &u32) -> String {
+        format!("mpfr:{bits}")
+    }
+    fn from_i64(v: i64, bits: &u32) -> Self {
+        Float::with_val(*bits, v)
+    }
+    fn from_ratio(n: i64, d: i64, bits: &u32) -> Self {
+        Float::with_val(*bits, Rational::from((n, d)))
+    }
+    fn from_rational(q: &BigRational, bits: &u32) -> Self {
+        Float::with_val(*bits, &to_gmp_rational(q))
+    }
+    fn from_f64(v: f64, bits: &u32) -> Self {
+        Float::with_val(*bits, v)
+    }
+    fn abs(&self) -> Self {
+        self.clone().abs()
+    }
+    fn is_zero(&self) -> bool {
+        Float::is_zero(self)
+    }
+    fn is_finite(&self) -> bool {
+        Float::is_finite(self)
+    }
+    fn to_f64(&self) -> f64 {
+        Float::to_f64_round(self, Round::Nearest)
+    }
+    fn to_rational(&self) -> Option<BigRational> {
+        Float::to_rational(self).map(|q| from_gmp_rational(&q))
+    }
+    fn mul_add_assign(&mut self, a: &Self, b: &Self) {
+        *self += a * b; // mpfr_fma: one rounding, no temporary
+    }
+    fn mul_sub_assign(&mut self, a: &Self, b: &Self) {
+        *self -= a * b;
+    }
+    fn to_plain_string(&self) -> String {
+        super::certify::format_float_digits(self, super::certify::max_digits(self.prec()))
+    }
+}
+
+impl Real for Float {
+    fn sqrt(&self) -> Self {
+        self.clone().sqrt()
+    }
+    fn sin_cos(&self) -> (Self, Self) {
+        let (s, c) = self.clone().sin_cos(Float::new(self.prec()));
+        (s, c)
+    }
+    fn atan2(&self, x: &Self) -> Self {
+        self.clone().atan2(x)
+    }
+    fn exp(&self) -> Self {
+        self.clone().exp()
+    }
+    fn ln(&self) -> Self {
+        self.clone().ln()
+    }
+    fn pi(bits: &u32) -> Self {
+        Float::with_val(*bits, Constant::Pi)
+    }
+    fn epsilon(bits: &u32) -> Self {
+        // 2^(1−p)
+        Float::with_val(*bits, 1) >> (*bits as i32 - 1)
+    }
+    fn precision_bits(bits: &u32) -> u32 {
+        *bits
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn integer_round_trip() {
+        for s in [
+            "0",
+            "-1",
+            "123456789012345678901234567890",
+            "-987654321098765432109876543210",
+        ] {
+            let b: BigInt = s.parse().unwrap();
+            let i = bigint_to_integer(&b);
+            assert_eq!(i.to_string(), s);
+            assert_eq!(integer_to_bigint(&i), b);
+        }
+    }
+
+    #[test]
+    fn rational_to_double_is_correctly_rounded() {
+        let tenth = BigRational::new(1.into(), 10.into());
+        assert_eq!(rational_to_f64(&tenth), 0.1);
+        let third = BigRational::new(1.into(), 3.into());
+        assert_eq!(rational_to_f64(&third), 1.0 / 3.0);
+    }
+
+    #[test]
+    fn epsilon_is_two_to_one_minus_p() {
+        let e = Float::epsilon(&100);
+        assert_eq!(e, Float::with_val(100, Float::i_exp(1, -99)));
+        assert_eq!(<f64 as Real>::epsilon(&()), f64::EPSILON);
+    }
+}

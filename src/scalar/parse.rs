@@ -1,0 +1,148 @@
+//! Reading numbers exactly: `"3/5"`, `"0.6"`, `"-1.25e-3"`, `"7"`.
+//!
+//! Every accepted string denotes a rational number, which is read exactly into a
+//! [`BigRational`]; converting that to f64 or MPFR rounds once, correctly
+//! ([`Field::from_rational`](super::Field::from_rational)). `NaN`, infinities, hexadecimal and
+//! empty strings are rejected, and so are exponents beyond ±[`MAX_EXPONENT`] (a guard
+//! against inputs like `1e999999999` that would build enormous integers).
+
+use super::{BigInt, BigRational};
+use num_traits::{Pow, Zero};
+
+/// The largest decimal exponent accepted.
+pub const MAX_EXPONENT: i64 = 10_000;
+
+/// Why a string is not a number trajverify accepts.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum ParseNumberError {
+    #[error("{0:?} is not a number (expected a decimal such as \"0.6\" or \"1e-3\", or a fraction such as \"3/5\")")]
+    Malformed(String),
+    #[error("{0:?} has a zero denominator")]
+    ZeroDenominator(String),
+    #[error("{0:?} has an exponent beyond ±{MAX_EXPONENT}")]
+    ExponentTooLarge(String),
+}
+
+/// Parse a decimal or a fraction of two decimals exactly.
+pub fn parse_rational(text: &str) -> Result<BigRational, ParseNumberError> {
+    let s = text.trim();
+    match s.split_once('/') {
+        Some((num, den)) => {
+            let n = parse_decimal(num.trim(), text)?;
+            let d = parse_decimal(den.trim(), text)?;
+            if d.is_zero() {
+                return Err(ParseNumberError::ZeroDenominator(text.into()));
+            }
+            Ok(n / d)
+        }
+        None => parse_decimal(s, text),
+    }
+}
+
+fn parse_decimal(s: &str, whole: &str) -> Result<BigRational, ParseNumberError> {
+    let malformed = || ParseNumberError::Malformed(whole.into());
+    let (negative, unsigned) = match s.as_bytes().first() {
+        Some(b'-') => (true, &s[1..]),
+        Some(b'+') => (false, &s[1..]),
+        _ => (false, s),
+    };
+    let (mantissa, exponent) = match unsigned.find(['e', 'E']) {
+        Some(i) => (&unsigned[..i], Some(&unsigned[i + 1..])),
+        None => (unsigned, None),
+    };
+    let (int_part, frac_part) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+    let all_digits = |t: &str| t.bytes().all(|b| b.is_ascii_digit());
+    if int_part.len() + frac_part.len() == 0 || !all_digits(int_part) || !all_digits(frac_part) {
+        return Err(malformed());
+    }
+    let mut exp10: i64 = -(frac_part.len() as i64);
+    if let Some(e) = exponent {
+        let digits = e.strip_prefix(['+', '-']).unwrap_or(e);
+        if digits.is_empty() || !all_digits(digits) {
+            return Err(malformed());
+        }
+        let value: i64 = if digits.len() > 12 {
+            i64::MAX
+        } else {
+            digits.parse().map_err(|_| malformed())?
+        };
+        if value > MAX_EXPONENT {
+            return Err(ParseNumberError::ExponentTooLarge(whole.into()));
+        }
+        exp10 += if e.starts_with('-') { -value } else { value };
+    }
+    let digits = format!("{int_part}{frac_part}");
+    let mut numer: BigInt = digits.parse().map_err(|_| malformed())?;
+    if negative {
+        numer = -numer;
+    }
+    let scale: BigInt = Pow::pow(BigInt::from(10), exp10.unsigned_abs());
+    Ok(if exp10 >= 0 {
+        BigRational::from_integer(numer * scale)
+    } else {
+        BigRational::new(numer, scale)
+    })
+}
+
+/// `true` when the string denotes exactly the same rational as `q` (used to compare a
+/// printed decimal like "0.6" with an exact result).
+pub fn denotes(text: &str, q: &BigRational) -> bool {
+    parse_rational(text).is_ok_and(|p| &p == q)
+}
+
+/// The value of an integer-valued rational as i64, if it is one and fits.
+pub fn denotes_integer(q: &BigRational) -> Option<i64> {
+    use num_traits::ToPrimitive;
+    if q.is_integer() {
+        q.to_integer().to_i64()
+    } else {
+        None
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn q(n: i64, d: i64) -> BigRational {
+        BigRational::new(n.into(), d.into())
+    }
+
+    #[test]
+    fn accepted_forms_are_exact() {
+        assert_eq!(parse_rational("3/5").unwrap(), q(3, 5));
+        assert_eq!(parse_rational("0.6").unwrap(), q(3, 5));
+        assert_eq!(parse_rational("1e-3").unwrap(), q(1, 1000));
+        assert_eq!(parse_rational("-1.25E+2").unwrap(), q(-125, 1));
+        assert_eq!(parse_rational(" .5 ").unwrap(), q(1, 2));
+        assert_eq!(parse_rational("5.").unwrap(), q(5, 1));
+        assert_eq!(parse_rational("1.5/-3").unwrap(), q(-1, 2));
+        assert_eq!(parse_rational("+7").unwrap(), q(7, 1));
+    }
+
+    #[test]
+    fn rejected_forms_say_why() {
+        for bad in [
+            "", "NaN", "inf", "-", ".", "1e", "0x10", "1..2", "1e+", "3/", "a/b", "1 2",
+        ] {
+            assert!(
+                matches!(parse_rational(bad), Err(ParseNumberError::Malformed(_))),
+                "{bad}"
+            );
+        }
+        assert!(matches!(
+            parse_rational("1/0"),
+            Err(ParseNumberError::ZeroDenominator(_))
+        ));
+        assert!(matches!(
+            parse_rational("1e999999999999999"),
+            Err(ParseNumberError::ExponentTooLarge(_))
+        ));
+    }
+
+    #[test]
+    fn denotes_compares_exactly() {
+        assert!(denotes("0.6", &q(3, 5)));
+        assert!(!denotes("0.6", &q(2, 3)));
+    }
+}

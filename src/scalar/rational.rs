@@ -1,0 +1,44 @@
+//! [`BigRational`] as an exact [`Field`]. It deliberately does not implement `Real`.
+
+use super::{BigRational, Field};
+use num_traits::{Signed, Zero};
+
+impl Field for BigRational {
+    type Ctx = ();
+
+    fn ctx(&self) {}
+    fn scalar_name(_: &()) -> String {
+        "rational".into()
+    }
+    fn from_i64(v: i64, _: &()) -> Self {
+        BigRational::from_integer(v.into())
+    }
+    fn from_ratio(n: i64, d: i64, _: &()) -> Self {
+        BigRational::new(n.into(), d.into())
+    }
+    fn from_rational(q: &BigRational, _: &()) -> Self {
+        q.clone()
+    }
+    fn from_f64(v: f64, _: &()) -> Self {
+        num_traits::FromPrimitive::from_f64(v).unwrap_or_else(BigRational::zero)
+    }
+    fn abs(&self) -> Self {
+        Signed::abs(self)
+    }
+    fn is_zero(&self) -> bool {
+        Zero::is_zero(self)
+    }
+    fn is_finite(&self) -> bool {
+        true
+    }
+    fn to_f64(&self) -> f64 {
+        super::mpfr::rational_to_f64(self)
+    }
+    fn to_rational(&self) -> Option<BigRational> {
+        Some(self.clone())
+    }
+    fn to_plain_string(&self) -> String {
+        // "3/5", "-7", "0": the Display of Ratio prints integers without a denominator.
+        self.to_string()
+    }
+}
