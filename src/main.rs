@@ -1,17 +1,34 @@
 //! The `trajverify` binary: see `trajverify --help` and the README.
 
+use clap::error::ErrorKind;
 use clap::Parser;
 use std::io::Write;
 use std::process::ExitCode;
 use trajverify::cli::{execute, Cli};
 
 fn main() -> ExitCode {
-    let cli = Cli::parse(); // usage errors: clap prints them and exits with status 2
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => match e.kind() {
+            // Help and version requests (and a bare `trajverify`) print as clap formats them.
+            ErrorKind::DisplayHelp
+            | ErrorKind::DisplayVersion
+            | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => e.exit(),
+            // Usage errors: clap's first line only, like every other input error.
+            _ => {
+                let text = e.render().to_string();
+                eprintln!(
+                    "{}",
+                    text.lines().next().unwrap_or("error: invalid arguments")
+                );
+                return ExitCode::from(2);
+            }
+        },
+    };
     match execute(cli) {
         Ok(text) => {
-            let mut stdout = std::io::stdout().lock();
-            // A closed pipe (e.g. `| head`) is not an error worth a panic.
-            let _ = stdout.write_all(text.as_bytes());
+            // A closed pipe (e.g. `| head`) is not worth a panic.
+            let _ = std::io::stdout().lock().write_all(text.as_bytes());
             ExitCode::SUCCESS
         }
         Err(failure) => {

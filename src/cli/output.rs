@@ -32,6 +32,16 @@ impl<T> Out<T> {
                 .collect(),
         )
     }
+    /// This object with one more field at the end (a non-object is returned unchanged).
+    pub fn with_field(self, name: &str, value: Out<T>) -> Self {
+        match self {
+            Out::Object(mut fields) => {
+                fields.push((name.to_string(), value));
+                Out::Object(fields)
+            }
+            other => other,
+        }
+    }
     /// A list of numbers.
     pub fn nums(values: Vec<T>) -> Self {
         Out::List(values.into_iter().map(Out::Num).collect())

@@ -85,19 +85,23 @@ fn hermite_in<T: Field>(data: &HermiteInput, ctx: &T::Ctx) -> Result<Out<T>, Inp
     Ok(Out::object(vec![
         ("degree", Out::Int(count as i64 - 1)),
         ("control_points", Out::List(points)),
-        ("scalar", Out::Text(T::scalar_name(ctx))),
     ]))
 }
 
 /// `run hermite`: two-point Hermite data → Bernstein control points.
 pub fn run_hermite(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, InputError> {
     let data = read_hermite(doc)?;
+    let name = scalar.to_string();
     Ok(match scalar {
-        ScalarKind::F64 => Rendered::plain(hermite_in::<f64>(&data, &())?),
-        ScalarKind::Rational => Rendered::plain(hermite_in::<BigRational>(&data, &())?),
+        ScalarKind::F64 => {
+            Rendered::plain(hermite_in::<f64>(&data, &())?.with_field("scalar", Out::Text(name)))
+        }
+        ScalarKind::Rational => Rendered::plain(
+            hermite_in::<BigRational>(&data, &())?.with_field("scalar", Out::Text(name)),
+        ),
         ScalarKind::Mpfr(bits) => Rendered::certified(
-            hermite_in::<Float>(&data, &bits)?,
-            hermite_in::<Float>(&data, &(2 * bits))?,
+            hermite_in::<Float>(&data, &bits)?.with_field("scalar", Out::Text(name.clone())),
+            hermite_in::<Float>(&data, &(2 * bits))?.with_field("scalar", Out::Text(name)),
         ),
     })
 }
@@ -121,7 +125,13 @@ pub fn run_condition(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Ren
         }
     };
     // JSON has no infinity: null when the f64 matrix overflows or nalgebra's σ_min is 0.
-    let reference = condition::f64_reference(m, &t0, &t1, kind).filter(|k| k.is_finite());
+    let raw_reference = condition::f64_reference(m, &t0, &t1, kind);
+    let reference = raw_reference.filter(|k| k.is_finite());
+    let f64_note = match raw_reference {
+        None => "the f64 matrix overflows",
+        Some(k) if k.is_infinite() => "nalgebra's f64 SVD returns σmin = 0",
+        Some(_) => "nalgebra's f64 SVD of the correctly rounded matrix",
+    };
     let jacobi_failed = |e: crate::linalg::svd::NoConvergence| InputError(format!("input: {e}"));
     let (value, digits, scalar_name): (String, u32, String) = match scalar {
         ScalarKind::Rational => {
@@ -150,6 +160,7 @@ pub fn run_condition(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Ren
         ("condition_number", Out::Text(value)),
         ("certified_digits", Out::Int(digits as i64)),
         ("f64", reference.map_or(Out::Null, Out::F64)),
+        ("f64_note", Out::Text(f64_note.into())),
         ("scalar", Out::Text(scalar_name)),
         ("size", Out::Int(2 * m as i64 + 2)),
     ]);

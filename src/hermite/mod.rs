@@ -22,7 +22,7 @@ pub mod condition;
 
 use crate::linalg::Matrix;
 use crate::poly::differences::{anti_difference, backward_anti_difference};
-use crate::poly::{binomial, falling_factorial, int_in, Bernstein};
+use crate::poly::{binomial, falling_factorial, falling_factorial_in, int_in, Bernstein};
 use crate::scalar::{powi, Field};
 
 /// Why Hermite data cannot be mapped.
@@ -99,7 +99,7 @@ pub fn derivative_scales<T: Field>(m: usize, t0: &T, t1: &T) -> Result<Vec<T>, H
     let width = t1.clone() - t0;
     (0..=m)
         .map(|j| {
-            let ff: T = int_in(&falling_factorial(n, j), &ctx);
+            let ff: T = falling_factorial_in(n, j, &ctx);
             let s = powi(&width, j as u32) / &ff;
             if !s.is_finite() || s.is_zero() || !ff.is_finite() {
                 Err(HermiteError::ScaleNotRepresentable {

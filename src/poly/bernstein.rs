@@ -114,7 +114,7 @@ impl<T: Field> Bernstein<T> {
     /// The factor n!/(n−j)!/(t₁−t₀)ʲ of Eqs. 13–15.
     pub fn derivative_factor(&self, j: usize) -> T {
         let ctx = self.t0.ctx();
-        let ff: T = int_in(&falling_factorial(self.degree(), j), &ctx);
+        let ff: T = super::falling_factorial_in(self.degree(), j, &ctx);
         ff / &powi(&self.duration(), j as u32)
     }
 

@@ -33,6 +33,18 @@ pub fn falling_factorial(n: usize, j: usize) -> BigInt {
     (0..j).fold(BigInt::one(), |acc, i| acc * (n - i))
 }
 
+/// n!/(n−j)! as a value of `T`, correctly rounded (exact in rationals). Products that fit in
+/// 64 bits skip the big-integer detour: `T::from_i64` rounds them once, like `int_in`.
+pub fn falling_factorial_in<T: Field>(n: usize, j: usize, ctx: &T::Ctx) -> T {
+    let small = (0..j)
+        .try_fold(1u64, |acc, i| acc.checked_mul((n - i) as u64))
+        .filter(|&v| v <= i64::MAX as u64);
+    match small {
+        Some(v) => T::from_i64(v as i64, ctx),
+        None => int_in(&falling_factorial(n, j), ctx),
+    }
+}
+
 /// An exact integer as a value of `T` (correctly rounded).
 pub fn int_in<T: Field>(n: &BigInt, ctx: &T::Ctx) -> T {
     T::from_rational(&crate::scalar::BigRational::from_integer(n.clone()), ctx)
@@ -49,5 +61,15 @@ mod tests {
         assert_eq!(binomial(3, 4), BigInt::from(0));
         assert_eq!(falling_factorial(5, 2), BigInt::from(20));
         assert_eq!(falling_factorial(5, 0), BigInt::from(1));
+        // The 64-bit fast path and the big-integer path agree (21·20·…·2 = 21!, beyond 2^63 at 21).
+        for (n, j) in [(5, 2), (20, 20), (21, 21), (61, 31)] {
+            let exact: crate::scalar::BigRational = falling_factorial_in(n, j, &());
+            assert_eq!(
+                exact,
+                crate::scalar::BigRational::from_integer(falling_factorial(n, j))
+            );
+            let rounded: f64 = falling_factorial_in(n, j, &());
+            assert_eq!(rounded, int_in::<f64>(&falling_factorial(n, j), &()));
+        }
     }
 }

@@ -57,8 +57,18 @@ pub struct Panel {
     pub log_y: bool,
     /// Same scale on both axes (for paths in the plane).
     pub equal_aspect: bool,
-    /// Where the legend goes: true for the lower right, false for the upper left.
-    pub legend_lower_right: bool,
+    /// Which corner the legend goes in.
+    pub legend: Corner,
+}
+
+/// A corner of the plotting area.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub enum Corner {
+    #[default]
+    UpperLeft,
+    UpperRight,
+    LowerLeft,
+    LowerRight,
 }
 
 const PALETTE: [RGBColor; 6] = [
@@ -209,10 +219,11 @@ fn draw_panel<DB: DrawingBackend>(
         }
     }
     if panel.series.iter().any(|s| !s.name.is_empty()) {
-        let position = if panel.legend_lower_right {
-            SeriesLabelPosition::LowerRight
-        } else {
-            SeriesLabelPosition::UpperLeft
+        let position = match panel.legend {
+            Corner::UpperLeft => SeriesLabelPosition::UpperLeft,
+            Corner::UpperRight => SeriesLabelPosition::UpperRight,
+            Corner::LowerLeft => SeriesLabelPosition::LowerLeft,
+            Corner::LowerRight => SeriesLabelPosition::LowerRight,
         };
         chart
             .configure_series_labels()

@@ -25,7 +25,7 @@ use super::super::{Outcome, Verdict};
 use crate::hermite::HermiteData;
 use crate::poly::bernstein::power_basis_derivative;
 use crate::poly::Bernstein;
-use crate::report::plot::{Panel, Series, Style};
+use crate::report::plot::{Corner, Panel, Series, Style};
 use crate::scalar::certify::format_float_digits;
 use crate::scalar::{BigRational, Field, Float, Real};
 
@@ -299,7 +299,7 @@ pub fn turn_figure(m: &[TurnMetrics]) -> Vec<Panel> {
         y_label: "y".into(),
         series,
         equal_aspect: true,
-        legend_lower_right: true,
+        legend: Corner::LowerRight,
         ..Panel::default()
     }]
 }
@@ -416,7 +416,7 @@ pub fn landing_figure(l: &LandingMetrics) -> Vec<Panel> {
                 ),
             ],
             equal_aspect: true,
-            legend_lower_right: true,
+            legend: Corner::LowerRight,
             ..Panel::default()
         },
         Panel {
@@ -424,7 +424,7 @@ pub fn landing_figure(l: &LandingMetrics) -> Vec<Panel> {
             x_label: "t (s)".into(),
             y_label: "z (m)".into(),
             series: vec![Series::new("altitude", t_alt, Style::Solid, 1)],
-            legend_lower_right: false,
+            legend: Corner::UpperRight,
             ..Panel::default()
         },
     ]

@@ -13,7 +13,7 @@ pub mod examples;
 
 use super::{Ledger, Paper, PaperOutput};
 use crate::claims::ClaimSpec;
-use crate::report::plot::{self, Panel, Series, Style};
+use crate::report::plot::{self, Corner, Panel, Series, Style};
 use crate::report::{claims_section, table};
 use crate::scalar::certify::format_float_digits;
 use crate::scalar::{Field, Float};
@@ -282,7 +282,7 @@ fn fig2_panels(
                         2,
                     ),
                 ],
-                legend_lower_right: j == 0,
+                legend: [Corner::LowerRight, Corner::LowerRight, Corner::UpperRight][j],
                 ..Panel::default()
             }
         })

@@ -1,0 +1,25 @@
+# trajverify tasks. Install just with `cargo install just`; every recipe is a plain cargo
+# command, so the README's commands work without it.
+
+export GMP_MPFR_SYS_CACHE := env_var_or_default("GMP_MPFR_SYS_CACHE", env_var("HOME") + "/.cache/gmp-mpfr-sys")
+
+# Check every claim; write reports/ (ledger, Markdown, SVG figures).
+verify:
+    cargo run --release -- verify
+
+# The test suite (unit, property, snapshot and command-line tests).
+test:
+    cargo test --release
+
+# Criterion benches (results under target/criterion).
+bench:
+    cargo bench
+
+# Regenerate the reports into a scratch directory and show any difference from reports/.
+report:
+    out=$(mktemp -d) && cargo run --release -- verify --out "$out" && diff -r reports "$out" && echo "reports/ is current"
+
+# Review changed claim snapshots (needs `cargo install cargo-insta`), or accept them all.
+snapshots:
+    INSTA_UPDATE=always cargo test --release --test claims_snapshot
+    git diff --stat snapshots/

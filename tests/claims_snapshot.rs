@@ -1,0 +1,38 @@
+//! Every claim's id, verdict and reproduced value, pinned by an insta snapshot in
+//! `snapshots/`: any drift in any digit shows up in review.
+
+use trajverify::claims::{self, Verdict};
+
+#[test]
+fn hermite_bernstein_claims() {
+    let paper = claims::papers()
+        .into_iter()
+        .find(|p| p.short == "hermite")
+        .expect("paper 000 is registered");
+    let output = (paper.verify)();
+    let failed: Vec<&str> = output
+        .claims
+        .iter()
+        .filter(|c| c.verdict == Verdict::Failed)
+        .map(|c| c.id.as_str())
+        .collect();
+    assert!(failed.is_empty(), "failed claims: {failed:?}");
+    assert_eq!(output.claims.len(), paper.specs.len());
+    let text: String = output
+        .claims
+        .iter()
+        .map(|c| {
+            format!(
+                "{}\n  verdict: {}\n  scalar: {}\n  reproduced: {}\n",
+                c.id,
+                c.verdict.as_str(),
+                c.scalar,
+                c.reproduced
+            )
+        })
+        .collect();
+    let mut settings = insta::Settings::clone_current();
+    settings.set_snapshot_path(concat!(env!("CARGO_MANIFEST_DIR"), "/snapshots"));
+    settings.set_prepend_module_to_snapshot(false);
+    settings.bind(|| insta::assert_snapshot!("claims_000_d51e5cedfa8471cf", text));
+}

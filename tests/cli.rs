@@ -1,0 +1,269 @@
+//! The command line as a user runs it: the real binary, real JSON on stdin, exit statuses.
+
+use serde_json::Value;
+use std::io::Write;
+use std::process::{Command, Stdio};
+
+struct Run {
+    code: i32,
+    stdout: String,
+    stderr: String,
+}
+
+fn trajverify(args: &[&str], stdin: &str) -> Run {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_trajverify"))
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("the binary starts");
+    child
+        .stdin
+        .take()
+        .expect("stdin is piped")
+        .write_all(stdin.as_bytes())
+        .expect("stdin accepts the input");
+    let out = child.wait_with_output().expect("the binary finishes");
+    Run {
+        code: out.status.code().unwrap_or(-1),
+        stdout: String::from_utf8_lossy(&out.stdout).into_owned(),
+        stderr: String::from_utf8_lossy(&out.stderr).into_owned(),
+    }
+}
+
+fn json(run: &Run) -> Value {
+    assert_eq!(run.code, 0, "stderr: {}", run.stderr);
+    serde_json::from_str(&run.stdout).expect("stdout is one JSON object")
+}
+
+const FIG2: &str = r#"{"start": [0, 0, 0], "end": [1, 1, 0], "interval": [0, 1]}"#;
+
+#[test]
+fn hermite_rational_reproduces_figure_two_exactly() {
+    let out = json(&trajverify(
+        &["run", "hermite", "--scalar", "rational"],
+        FIG2,
+    ));
+    assert_eq!(out["degree"], 5);
+    assert_eq!(
+        out["control_points"],
+        serde_json::json!(["0", "0", "0", "3/5", "4/5", "1"])
+    );
+    let slow = json(&trajverify(
+        &["run", "hermite", "--scalar", "rational"],
+        r#"{"start": [0, 0, 0], "end": [1, 1, 0], "interval": ["0", "2"]}"#,
+    ));
+    assert_eq!(
+        slow["control_points"],
+        serde_json::json!(["0", "0", "0", "1/5", "3/5", "1"])
+    );
+}
+
+#[test]
+fn hermite_f64_prints_shortest_round_trip_decimals() {
+    let out = json(&trajverify(&["run", "hermite"], FIG2));
+    assert_eq!(out["scalar"], "f64");
+    let points: Vec<f64> = out["control_points"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_str().unwrap().parse().unwrap())
+        .collect();
+    for (got, want) in points.iter().zip([0.0, 0.0, 0.0, 0.6, 0.8, 1.0]) {
+        assert!((got - want).abs() < 1e-15, "{got} vs {want}");
+    }
+}
+
+#[test]
+fn hermite_mpfr_prints_only_certified_digits() {
+    let out = json(&trajverify(
+        &["run", "hermite", "--scalar", "mpfr:64"],
+        r#"{"start": [0, 0, 0], "end": [1, 1, 0], "interval": [0, "1/3"]}"#,
+    ));
+    assert_eq!(out["scalar"], "mpfr:64");
+    let p3 = out["control_points"][3].as_str().unwrap();
+    // p3 = 1 − 2T/5 with T = 1/3: 13/15 = 0.8666…; 64 bits carry at most 19 digits.
+    assert!(p3.starts_with("0.8666666666666666"), "{p3}");
+    assert!(
+        p3.len() <= 2 + 19,
+        "{p3} has more digits than 64 bits can certify"
+    );
+}
+
+#[test]
+fn hermite_points_in_the_plane() {
+    let out = json(&trajverify(
+        &["run", "hermite", "--scalar", "rational"],
+        r#"{"start": [[0, 0], [1, 0]], "end": [[1, 1], [0, 1]], "interval": [0, "3/2"]}"#,
+    ));
+    assert_eq!(out["degree"], 3);
+    assert_eq!(
+        out["control_points"],
+        serde_json::json!([["0", "0"], ["1/2", "0"], ["1", "1/2"], ["1", "1"]])
+    );
+}
+
+#[test]
+fn condition_number_is_certified_and_compared_with_f64() {
+    let out = json(&trajverify(
+        &["run", "hermite-condition"],
+        r#"{"derivatives": 2, "interval": [0, 1], "matrix": "transform"}"#,
+    ));
+    assert!(out["certified_digits"].as_u64().unwrap() >= 70);
+    let k: f64 = out["condition_number"].as_str().unwrap().parse().unwrap();
+    let f = out["f64"].as_f64().unwrap();
+    assert!(
+        (k - 87.26983291065).abs() < 1e-9 && (f - k).abs() < 1e-12 * k,
+        "{k} {f}"
+    );
+    // From m = 10 nalgebra's SVD returns σmin = 0: no f64 value, and a note saying why.
+    let big = json(&trajverify(
+        &["run", "hermite-condition"],
+        r#"{"derivatives": 10, "interval": [0, 1], "matrix": "transform"}"#,
+    ));
+    assert!(big["f64"].is_null());
+    assert!(big["f64_note"].as_str().unwrap().contains("σmin = 0"));
+    let ours = json(&trajverify(
+        &["run", "hermite-condition", "--scalar", "f64"],
+        r#"{"derivatives": 10, "interval": [0, 1], "matrix": "binomial"}"#,
+    ));
+    assert!(ours["certified_digits"].as_u64().unwrap() >= 10, "{ours}");
+}
+
+#[test]
+fn bad_input_is_one_line_exit_two_and_no_stdout() {
+    let cases: &[(&[&str], &str, &str)] = &[
+        (
+            &["run", "hermite"],
+            r#"{"start": [0], "interval": [0, 1]}"#,
+            "\"end\"",
+        ),
+        (
+            &["run", "hermite"],
+            r#"{"start": [0, 1], "end": [1], "interval": [0, 1]}"#,
+            "\"end\"",
+        ),
+        (
+            &["run", "hermite"],
+            r#"{"start": [0, [1, 2]], "end": [1, 1], "interval": [0, 1]}"#,
+            "mixed dimensions",
+        ),
+        (
+            &["run", "hermite"],
+            r#"{"start": [[0, 0]], "end": [[1, 1, 1]], "interval": [0, 1]}"#,
+            "mixed dimensions",
+        ),
+        (
+            &["run", "hermite"],
+            r#"{"start": ["NaN"], "end": [1], "interval": [0, 1]}"#,
+            "start[0]",
+        ),
+        (
+            &["run", "hermite"],
+            r#"{"start": [0], "end": [1], "interval": [2, 1]}"#,
+            "interval",
+        ),
+        (&["run", "hermite"], r#"{"start": [0"#, "malformed JSON"),
+        (
+            &["run", "hermite"],
+            r#"{"start": [0], "end": [1], "interval": [0, 1], "extra": 1}"#,
+            "extra",
+        ),
+        (
+            &["run", "hermite-condition"],
+            r#"{"derivatives": 2.5, "interval": [0, 1], "matrix": "transform"}"#,
+            "derivatives",
+        ),
+        (
+            &["run", "hermite-condition"],
+            r#"{"derivatives": 2, "interval": [0, 1], "matrix": "other"}"#,
+            "matrix",
+        ),
+        (
+            &["run", "hermite-condition", "--scalar", "rational"],
+            r#"{"derivatives": 2, "interval": [0, 1], "matrix": "transform"}"#,
+            "--scalar",
+        ),
+        (&["run", "hermite", "--scalar", "mpfr:7"], FIG2, "mpfr"),
+        (&["verify", "--paper", "nonexistent"], "", "nonexistent"),
+        (&["run", "no-such-algorithm"], "", "no-such-algorithm"),
+    ];
+    for (args, input, needle) in cases {
+        let run = trajverify(args, input);
+        assert_eq!(run.code, 2, "{args:?} {input}: {}", run.stderr);
+        assert!(run.stdout.is_empty(), "{args:?}: stdout {}", run.stdout);
+        assert!(
+            run.stderr.contains(needle),
+            "{args:?}: {} lacks {needle}",
+            run.stderr
+        );
+        assert_eq!(
+            run.stderr.trim_end().lines().count(),
+            1,
+            "{args:?}: {}",
+            run.stderr
+        );
+    }
+}
+
+#[test]
+fn factorials_that_overflow_f64_are_reported() {
+    let zeros = vec!["0"; 201].join(", ");
+    let input = format!(r#"{{"start": [{zeros}], "end": [{zeros}], "interval": [0, 1]}}"#);
+    let run = trajverify(&["run", "hermite", "--scalar", "f64"], &input);
+    assert_eq!(run.code, 2);
+    assert!(
+        run.stdout.is_empty() && run.stderr.contains("not representable in f64"),
+        "{}",
+        run.stderr
+    );
+    // The same data are fine exactly.
+    assert_eq!(
+        trajverify(&["run", "hermite", "--scalar", "rational"], &input).code,
+        0
+    );
+}
+
+#[test]
+fn list_names_every_claim_with_its_location() {
+    let run = trajverify(&["list"], "");
+    assert_eq!(run.code, 0);
+    assert!(run
+        .stdout
+        .contains("hermite.fig2.control_points.t1\tSec. 4, Fig. 2"));
+    let filtered = trajverify(&["list", "--paper", "000_d51e5cedfa8471cf"], "");
+    assert_eq!(filtered.stdout, run.stdout);
+}
+
+#[test]
+fn verify_writes_the_ledger_and_reports() {
+    let dir = std::env::temp_dir().join(format!("trajverify-cli-{}", std::process::id()));
+    let run = trajverify(
+        &[
+            "verify",
+            "--paper",
+            "hermite",
+            "--out",
+            dir.to_str().unwrap(),
+        ],
+        "",
+    );
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let ledger: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("claims.json")).unwrap()).unwrap();
+    assert_eq!(ledger["summary"]["failed"], 0);
+    assert_eq!(
+        ledger["summary"]["total"],
+        ledger["claims"].as_array().unwrap().len()
+    );
+    let report = std::fs::read_to_string(dir.join("000_d51e5cedfa8471cf.md")).unwrap();
+    for fig in 2..=5 {
+        let name = format!("000_d51e5cedfa8471cf_fig{fig}.svg");
+        assert!(report.contains(&name), "report does not link {name}");
+        assert!(std::fs::read_to_string(dir.join(&name))
+            .unwrap()
+            .starts_with("<svg"));
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}

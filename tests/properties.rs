@@ -1,0 +1,126 @@
+//! Property tests of the mathematics on random data (proptest).
+
+use proptest::prelude::*;
+use trajverify::hermite::HermiteData;
+use trajverify::linalg::{self, reference, Matrix};
+use trajverify::poly::bernstein::{basis, power_basis_derivative};
+use trajverify::poly::Bernstein;
+use trajverify::scalar::parse::parse_rational;
+use trajverify::scalar::{BigRational, Field, Float};
+
+fn q(n: i64, d: i64) -> BigRational {
+    BigRational::new(n.into(), d.into())
+}
+
+fn rational() -> impl Strategy<Value = BigRational> {
+    (-500i64..=500, 1i64..=60).prop_map(|(n, d)| q(n, d))
+}
+
+/// m, start and end data of length m+1, and an interval t0 < t1.
+fn hermite_data() -> impl Strategy<Value = HermiteData<BigRational>> {
+    (0usize..=8).prop_flat_map(|m| {
+        (
+            prop::collection::vec(rational(), m + 1),
+            prop::collection::vec(rational(), m + 1),
+            rational(),
+            (1i64..=400, 1i64..=40),
+        )
+            .prop_map(|(start, end, t0, (w, d))| {
+                let t1 = t0.clone() + q(w, d);
+                HermiteData::new(start, end, t0, t1).expect("valid by construction")
+            })
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// Random Hermite data round-trip exactly through the derivative formulas: the power-basis
+    /// derivatives of the solution at both ends are the data.
+    #[test]
+    fn hermite_meets_every_boundary_condition(data in hermite_data()) {
+        let curve = data.solve().unwrap();
+        prop_assert_eq!(curve.degree(), 2 * data.derivatives() + 1);
+        let a = curve.to_power_basis();
+        for j in 0..=data.derivatives() {
+            prop_assert_eq!(&power_basis_derivative(&a, j, &q(0, 1), &curve.duration()), &data.start[j]);
+            prop_assert_eq!(&power_basis_derivative(&a, j, &q(1, 1), &curve.duration()), &data.end[j]);
+            prop_assert_eq!(&curve.derivative_at_start(j), &data.start[j]);
+            prop_assert_eq!(&curve.derivative_at_end(j), &data.end[j]);
+        }
+    }
+
+    /// Reversing time maps the solution to the reversed control polygon (the problem on
+    /// [t0, t1] with the ends swapped and odd derivatives negated).
+    #[test]
+    fn hermite_reversal(data in hermite_data()) {
+        let flip = |v: &[BigRational]| v.iter().enumerate().map(|(j, x)| if j % 2 == 1 { -x.clone() } else { x.clone() }).collect::<Vec<_>>();
+        let reversed = HermiteData::new(flip(&data.end), flip(&data.start), data.t0.clone(), data.t1.clone()).unwrap();
+        let mut p = data.solve().unwrap().control_points;
+        p.reverse();
+        prop_assert_eq!(reversed.solve().unwrap().control_points, p);
+    }
+
+    /// f64 agrees with MPFR-256 where the transform is well conditioned (m ≤ 3, T ≈ 1).
+    #[test]
+    fn f64_agrees_with_mpfr_when_well_conditioned(
+        start in prop::collection::vec(-10.0f64..10.0, 4),
+        end in prop::collection::vec(-10.0f64..10.0, 4),
+        width in 0.5f64..2.0,
+    ) {
+        let fast = HermiteData::new(start.clone(), end.clone(), 0.0, width).unwrap().solve().unwrap();
+        let to = |v: &[f64]| v.iter().map(|x| Float::with_val(256, *x)).collect::<Vec<_>>();
+        let precise = HermiteData::new(to(&start), to(&end), Float::with_val(256, 0), Float::with_val(256, width)).unwrap().solve().unwrap();
+        let scale = start.iter().chain(&end).fold(1.0f64, |s, x| s.max(x.abs()));
+        for (a, b) in fast.control_points.iter().zip(&precise.control_points) {
+            prop_assert!((a - b.to_f64()).abs() <= 1e-13 * scale, "{} vs {}", a, b.to_f64());
+        }
+    }
+
+    /// The Bernstein basis on any interval is a partition of unity (exactly).
+    #[test]
+    fn partition_of_unity(n in 0usize..=20, t0 in rational(), (w, d) in (1i64..=100, 1i64..=10), zeta in 0i64..=50) {
+        let t1 = t0.clone() + q(w, d);
+        let t = t0.clone() + (t1.clone() - &t0) * q(zeta, 50);
+        let total = (0..=n).fold(q(0, 1), |acc, k| acc + basis(n, k, &t, &t0, &t1));
+        prop_assert_eq!(total, q(1, 1));
+    }
+
+    /// Degree elevation keeps every value of the curve.
+    #[test]
+    fn elevation_keeps_values(points in prop::collection::vec(rational(), 1..10), times in 1usize..4, zeta in 0i64..=20) {
+        let b = Bernstein::new(points, q(-1, 1), q(3, 1));
+        let e = b.elevate_by(times);
+        let t = q(-1, 1) + q(4 * zeta, 20);
+        prop_assert_eq!(b.eval(&t), e.eval(&t));
+    }
+
+    /// Gaussian elimination solves random non-singular rational systems exactly.
+    #[test]
+    fn exact_solve(entries in prop::collection::vec(rational(), 16), x in prop::collection::vec(rational(), 4)) {
+        let a = Matrix::from_fn(4, 4, |i, j| entries[4 * i + j].clone() + if i == j { q(1000, 1) } else { q(0, 1) });
+        let b = a.mul_vec(&x);
+        prop_assert_eq!(linalg::solve(&a, &b).unwrap(), x);
+    }
+
+    /// The generic Jacobi singular values match nalgebra's on random f64 matrices.
+    #[test]
+    fn jacobi_matches_nalgebra(entries in prop::collection::vec(-5.0f64..5.0, 30)) {
+        let a = Matrix::from_fn(6, 5, |i, j| entries[5 * i + j]);
+        let ours = linalg::singular_values(&a).unwrap();
+        let theirs = reference::singular_values(&a);
+        for (x, y) in ours.iter().zip(&theirs) {
+            prop_assert!((x - y).abs() <= 1e-12 * theirs[0], "{} vs {}", x, y);
+        }
+    }
+
+    /// Decimal strings convert to f64 with exactly the rounding Rust's own parser gives.
+    #[test]
+    fn decimal_to_f64_is_correctly_rounded(mantissa in 0u64..u64::MAX, point in 0usize..19, exp in -320i32..300, neg in any::<bool>()) {
+        let digits = mantissa.to_string();
+        let point = point.min(digits.len());
+        let text = format!("{}{}.{}e{}", if neg { "-" } else { "" }, &digits[..point], &digits[point..], exp);
+        let ours = f64::from_rational(&parse_rational(&text).unwrap(), &());
+        prop_assert_eq!(ours, text.parse::<f64>().unwrap(), "{}", text);
+    }
+}
