@@ -8,6 +8,27 @@
 //! - algorithms: [`hermite`] (paper 000).
 //! - building blocks: [`poly`] (Bernstein form, differences), [`linalg`].
 //! - [`scalar`]: the `Field` and `Real` traits over f64, MPFR and rationals.
+//!
+//! One algorithm, three number types: the Hermite data of the paper's Fig. 2 mapped to
+//! Bernstein control points exactly, in MPFR and in f64.
+//!
+//! ```
+//! use trajverify::hermite::HermiteData;
+//! use trajverify::scalar::{BigRational, Field, Float};
+//!
+//! fn control_points<T: Field>(ctx: &T::Ctx) -> Vec<T> {
+//!     let i = |v: i64| T::from_i64(v, ctx);
+//!     let data = HermiteData::new(vec![i(0), i(0), i(0)], vec![i(1), i(1), i(0)], i(0), i(1)).unwrap();
+//!     data.solve().unwrap().control_points
+//! }
+//!
+//! let exact: Vec<BigRational> = control_points(&());
+//! assert_eq!(exact[3], BigRational::new(3.into(), 5.into())); // the paper prints 0.6
+//! let precise: Vec<Float> = control_points(&256);
+//! assert!((precise[3].clone() - 0.6f64).abs() < 1e-16);
+//! let fast: Vec<f64> = control_points(&());
+//! assert!((fast[3] - 0.6).abs() < 1e-15);
+//! ```
 
 pub mod claims;
 pub mod cli;
