@@ -3,7 +3,7 @@
 use super::input::{self, fail, InputError};
 use super::output::Out;
 use super::Rendered;
-use crate::hermite::{condition, HermiteData, TransformKind};
+use crate::hermite::{self, condition, TransformKind};
 use crate::scalar::certify::{correct_digits, Certified};
 use crate::scalar::{BigRational, Field, Float, ScalarKind};
 use serde_json::{Map, Value};
@@ -59,31 +59,30 @@ fn read_hermite(doc: &Map<String, Value>) -> Result<HermiteInput, InputError> {
 
 /// Control points of every coordinate in the number type `T`.
 fn hermite_in<T: Field>(data: &HermiteInput, ctx: &T::Ctx) -> Result<Out<T>, InputError> {
-    let conv = |q: &BigRational| T::from_rational(q, ctx);
-    let dims = data.start[0].len();
-    let mut per_coordinate: Vec<Vec<T>> = Vec::with_capacity(dims);
-    for d in 0..dims {
-        let start = data.start.iter().map(|v| conv(&v[d])).collect();
-        let end = data.end.iter().map(|v| conv(&v[d])).collect();
-        let problem = HermiteData::new(start, end, conv(&data.t0), conv(&data.t1))
-            .map_err(|e| InputError(format!("input: {e}")))?;
-        let curve = problem
-            .solve()
-            .map_err(|e| InputError(format!("field \"start\": {e}")))?;
-        per_coordinate.push(curve.control_points);
-    }
-    let count = per_coordinate[0].len();
-    let points = (0..count)
-        .map(|k| {
+    let conv = |v: &[Vec<BigRational>]| -> Vec<Vec<T>> {
+        v.iter()
+            .map(|p| p.iter().map(|q| T::from_rational(q, ctx)).collect())
+            .collect()
+    };
+    let (t0, t1) = (
+        T::from_rational(&data.t0, ctx),
+        T::from_rational(&data.t1, ctx),
+    );
+    let polygon = hermite::solve_points(&conv(&data.start), &conv(&data.end), &t0, &t1)
+        .map_err(|e| InputError(format!("field \"start\": {e}")))?;
+    let degree = polygon.len() as i64 - 1;
+    let points = polygon
+        .into_iter()
+        .map(|mut p| {
             if data.is_point {
-                Out::nums(per_coordinate.iter().map(|c| c[k].clone()).collect())
+                Out::nums(p)
             } else {
-                Out::Num(per_coordinate[0][k].clone())
+                Out::Num(p.swap_remove(0))
             }
         })
         .collect();
     Ok(Out::object(vec![
-        ("degree", Out::Int(count as i64 - 1)),
+        ("degree", Out::Int(degree)),
         ("control_points", Out::List(points)),
     ]))
 }

@@ -135,12 +135,16 @@ mod tests {
         }
     }
 
-    #[test]
-    fn m0_transform_is_identity() {
-        let (t0, t1) = (
+    fn unit_interval() -> (BigRational, BigRational) {
+        (
             BigRational::from_integer(0.into()),
             BigRational::from_integer(1.into()),
-        );
+        )
+    }
+
+    #[test]
+    fn m0_transform_is_identity() {
+        let (t0, t1) = unit_interval();
         let (c, _) = certified(0, &t0, &t1, TransformKind::Transform, 64).unwrap();
         assert_eq!(c.text, "1.000000000000000000");
         assert_eq!(
@@ -153,10 +157,7 @@ mod tests {
     fn m1_unit_interval_closed_form() {
         // A is two copies of [[1,0],[-3,3]] (up to column order), whose squared singular
         // values are (19 ± √325)/2, so κ = √((19+√325)/(19−√325)).
-        let (t0, t1) = (
-            BigRational::from_integer(0.into()),
-            BigRational::from_integer(1.into()),
-        );
+        let (t0, t1) = unit_interval();
         let (c, _) = certified(1, &t0, &t1, TransformKind::Transform, 128).unwrap();
         let root = (325f64).sqrt();
         let expected = ((19.0 + root) / (19.0 - root)).sqrt();

@@ -34,6 +34,8 @@ pub enum HermiteError {
         "start has {start} values and end has {end}: both ends need the same number of derivatives"
     )]
     LengthMismatch { start: usize, end: usize },
+    #[error("every point must have the same dimension d ≥ 1")]
+    DimensionMismatch,
     #[error("the interval [t0, t1] must have t1 > t0")]
     EmptyInterval,
     #[error("the scale factor (t1−t0)^{j}·({n}−{j})!/{n}! is not representable in {scalar} (overflow or underflow)")]
@@ -90,6 +92,42 @@ impl<T: Field> HermiteData<T> {
         let points = head.into_iter().chain(tail).collect();
         Ok(Bernstein::new(points, self.t0.clone(), self.t1.clone()))
     }
+}
+
+/// The Hermite map for points in Rᵈ: `start[j]` and `end[j]` are the j-th derivative vectors
+/// (all of one dimension d ≥ 1). The map acts on each coordinate separately, so the result is
+/// the control polygon as points: `result[k][c]` is coordinate c of p_k.
+pub fn solve_points<T: Field>(
+    start: &[Vec<T>],
+    end: &[Vec<T>],
+    t0: &T,
+    t1: &T,
+) -> Result<Vec<Vec<T>>, HermiteError> {
+    let dims = start.first().map_or(0, Vec::len);
+    if dims == 0 || start.iter().chain(end).any(|v| v.len() != dims) {
+        return Err(HermiteError::DimensionMismatch);
+    }
+    let coordinate = |v: &[Vec<T>], c: usize| v.iter().map(|p| p[c].clone()).collect();
+    let per_coordinate = (0..dims)
+        .map(|c| {
+            HermiteData::new(
+                coordinate(start, c),
+                coordinate(end, c),
+                t0.clone(),
+                t1.clone(),
+            )?
+            .solve()
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    let count = per_coordinate[0].control_points.len();
+    Ok((0..count)
+        .map(|k| {
+            per_coordinate
+                .iter()
+                .map(|b| b.control_points[k].clone())
+                .collect()
+        })
+        .collect())
 }
 
 /// The scales Tʲ(n−j)!/n!, j = 0…m, n = 2m+1, that turn derivatives into differences.
@@ -216,6 +254,27 @@ mod tests {
             let h = hermite_matrix(m, &t0, &t1).unwrap();
             assert_eq!(a.mul(&h), Matrix::identity(2 * m + 2, &()));
         }
+    }
+
+    #[test]
+    fn points_are_solved_coordinate_by_coordinate() {
+        let start = vec![vec![q(0, 1), q(0, 1)], vec![q(1, 1), q(0, 1)]];
+        let end = vec![vec![q(1, 1), q(1, 1)], vec![q(0, 1), q(1, 1)]];
+        let p = solve_points(&start, &end, &q(0, 1), &q(3, 2)).unwrap();
+        assert_eq!(
+            p,
+            vec![
+                vec![q(0, 1), q(0, 1)],
+                vec![q(1, 2), q(0, 1)],
+                vec![q(1, 1), q(1, 2)],
+                vec![q(1, 1), q(1, 1)]
+            ]
+        );
+        let ragged = vec![vec![q(0, 1)], vec![q(1, 1), q(2, 1)]];
+        assert_eq!(
+            solve_points(&ragged, &ragged, &q(0, 1), &q(1, 1)),
+            Err(HermiteError::DimensionMismatch)
+        );
     }
 
     #[test]

@@ -93,19 +93,20 @@ impl<T: Field> Matrix<T> {
         Self::from_fn(self.cols, self.rows, |i, j| self[(j, i)].clone())
     }
 
-    /// The product `self · other`. Panics if the inner dimensions differ.
+    /// The product `self · other`. Panics if the inner dimensions differ or are zero.
     pub fn mul(&self, other: &Matrix<T>) -> Matrix<T> {
         assert_eq!(self.cols, other.rows, "inner dimensions differ");
+        let ctx = self.data[0].ctx();
         Self::from_fn(self.rows, other.cols, |i, j| {
-            let mut acc = self[(i, 0)].clone() * &other[(0, j)];
-            for k in 1..self.cols {
-                acc += &(self[(i, k)].clone() * &other[(k, j)]);
+            let mut acc = T::zero_in(&ctx);
+            for k in 0..self.cols {
+                acc.mul_add_assign(&self[(i, k)], &other[(k, j)]);
             }
             acc
         })
     }
 
-    /// The product `self · x`. Panics if the lengths differ.
+    /// The product `self · x`. Panics if the lengths differ or are zero.
     pub fn mul_vec(&self, x: &[T]) -> Vec<T> {
         assert_eq!(
             self.cols,
@@ -114,10 +115,9 @@ impl<T: Field> Matrix<T> {
         );
         (0..self.rows)
             .map(|i| {
-                let row = self.row(i);
-                let mut acc = row[0].clone() * &x[0];
-                for k in 1..self.cols {
-                    acc += &(row[k].clone() * &x[k]);
+                let mut acc = T::zero_in(&x[0].ctx());
+                for (a, b) in self.row(i).iter().zip(x) {
+                    acc.mul_add_assign(a, b);
                 }
                 acc
             })

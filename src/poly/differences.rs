@@ -16,39 +16,34 @@ use super::{binomial, int_in};
 use crate::linalg::Matrix;
 use crate::scalar::Field;
 
-/// Δʲx₀ for j = 0…n (Eq. 6), by the recursion on the whole difference table.
-pub fn forward_differences<T: Field>(x: &[T]) -> Vec<T> {
+/// One edge of a difference (or sum) table: row 0 is `x`, row r+1 combines neighbours of row r
+/// pairwise with `combine(left, right)`, and the result holds the first (or last) entry of every
+/// row. All the recursions of Eqs. 6–9 are of this form.
+fn table_edge<T: Field>(x: &[T], last: bool, combine: impl Fn(&T, &T) -> T) -> Vec<T> {
     let mut row = x.to_vec();
     let mut out = Vec::with_capacity(x.len());
-    while let Some(first) = row.first() {
-        out.push(first.clone());
-        row = row.windows(2).map(|w| w[1].clone() - &w[0]).collect();
+    while let Some(edge) = if last { row.last() } else { row.first() } {
+        out.push(edge.clone());
+        row = row.windows(2).map(|w| combine(&w[0], &w[1])).collect();
     }
     out
+}
+
+/// Δʲx₀ for j = 0…n (Eq. 6), by the recursion on the whole difference table.
+pub fn forward_differences<T: Field>(x: &[T]) -> Vec<T> {
+    table_edge(x, false, |a, b| b.clone() - a)
 }
 
 /// ∇ʲxₙ for j = 0…n (Eq. 7).
 pub fn backward_differences<T: Field>(x: &[T]) -> Vec<T> {
-    let mut row = x.to_vec();
-    let mut out = Vec::with_capacity(x.len());
-    while let Some(last) = row.last() {
-        out.push(last.clone());
-        row = row.windows(2).map(|w| w[1].clone() - &w[0]).collect();
-    }
-    out
+    table_edge(x, true, |a, b| b.clone() - a)
 }
 
 /// The inverse of [`forward_differences`]: x with Δʲx₀ = yⱼ (Eq. A2, and Eq. 8 with the
-/// superscript −j+1), by repeated pairwise sums.
+/// superscript −j+1), by repeated pairwise sums: row j of the table holds Sʲ(yᵢ) and
+/// xⱼ = Sʲ(y₀).
 pub fn anti_difference<T: Field>(y: &[T]) -> Vec<T> {
-    // Column j of the table holds Sʲ(yᵢ); the new x_j is its top entry.
-    let mut row = y.to_vec();
-    let mut out = Vec::with_capacity(y.len());
-    while let Some(first) = row.first() {
-        out.push(first.clone());
-        row = row.windows(2).map(|w| w[0].clone() + &w[1]).collect();
-    }
-    out
+    table_edge(y, false, |a, b| a.clone() + b)
 }
 
 /// The inverse of [`backward_differences`]: x with ∇ʲxₙ = yⱼ (Eq. 9; A3 is self-inverse).
