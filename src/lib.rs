@@ -30,6 +30,7 @@
 //! assert!((fast[3] - 0.6).abs() < 1e-15);
 //! ```
 
+pub mod bspline;
 pub mod claims;
 pub mod cli;
 pub mod hermite;

@@ -9,8 +9,10 @@
 
 pub mod bernstein;
 pub mod differences;
+pub mod power;
 
 pub use bernstein::Bernstein;
+pub use power::Poly;
 
 use crate::scalar::{BigInt, Field};
 use num_traits::One;

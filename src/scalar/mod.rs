@@ -21,6 +21,7 @@ pub mod certify;
 mod float;
 mod mpfr;
 pub mod parse;
+pub mod qsqrt2;
 mod rational;
 
 use std::fmt::Debug;
