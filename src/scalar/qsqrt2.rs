@@ -77,7 +77,7 @@ impl Neg for QSqrt2 {
     }
 }
 
-impl<'r> Add<&'r QSqrt2> for QSqrt2 {
+impl Add<&QSqrt2> for QSqrt2 {
     type Output = QSqrt2;
     fn add(self, r: &QSqrt2) -> QSqrt2 {
         QSqrt2 {
@@ -86,7 +86,7 @@ impl<'r> Add<&'r QSqrt2> for QSqrt2 {
         }
     }
 }
-impl<'r> Sub<&'r QSqrt2> for QSqrt2 {
+impl Sub<&QSqrt2> for QSqrt2 {
     type Output = QSqrt2;
     fn sub(self, r: &QSqrt2) -> QSqrt2 {
         QSqrt2 {
@@ -95,7 +95,7 @@ impl<'r> Sub<&'r QSqrt2> for QSqrt2 {
         }
     }
 }
-impl<'r> Mul<&'r QSqrt2> for QSqrt2 {
+impl Mul<&QSqrt2> for QSqrt2 {
     type Output = QSqrt2;
     fn mul(self, r: &QSqrt2) -> QSqrt2 {
         // (a + b√2)(c + d√2) = (ac + 2bd) + (ad + bc)√2
@@ -106,7 +106,7 @@ impl<'r> Mul<&'r QSqrt2> for QSqrt2 {
         }
     }
 }
-impl<'r> Div<&'r QSqrt2> for QSqrt2 {
+impl Div<&QSqrt2> for QSqrt2 {
     type Output = QSqrt2;
     /// Multiply by the conjugate: 1/(c + d√2) = (c − d√2)/(c² − 2d²). Division by zero panics,
     /// as for `BigRational`.
@@ -129,7 +129,7 @@ macro_rules! forward_ops {
                 $op::<&QSqrt2>::$method(self, &r)
             }
         }
-        impl<'r> $assign<&'r QSqrt2> for QSqrt2 {
+        impl $assign<&QSqrt2> for QSqrt2 {
             fn $assign_method(&mut self, r: &QSqrt2) {
                 let lhs = std::mem::replace(self, QSqrt2 { a: BigRational::zero(), b: BigRational::zero() });
                 *self = $op::<&QSqrt2>::$method(lhs, r);
