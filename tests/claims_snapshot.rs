@@ -1,14 +1,13 @@
-//! Every claim's id, verdict and reproduced value, pinned by an insta snapshot in
+//! Every claim's id, verdict and reproduced value, pinned by an insta snapshot per paper in
 //! `snapshots/`: any drift in any digit shows up in review.
 
 use trajverify::claims::{self, Verdict};
 
-#[test]
-fn hermite_bernstein_claims() {
+fn snapshot_paper(short: &str) {
     let paper = claims::papers()
         .into_iter()
-        .find(|p| p.short == "hermite")
-        .expect("paper 000 is registered");
+        .find(|p| p.short == short)
+        .expect("the paper is registered");
     let output = (paper.verify)();
     let failed: Vec<&str> = output
         .claims
@@ -34,5 +33,15 @@ fn hermite_bernstein_claims() {
     let mut settings = insta::Settings::clone_current();
     settings.set_snapshot_path(concat!(env!("CARGO_MANIFEST_DIR"), "/snapshots"));
     settings.set_prepend_module_to_snapshot(false);
-    settings.bind(|| insta::assert_snapshot!("claims_000_d51e5cedfa8471cf", text));
+    settings.bind(|| insta::assert_snapshot!(format!("claims_{}", paper.id), text));
+}
+
+#[test]
+fn hermite_bernstein_claims() {
+    snapshot_paper("hermite");
+}
+
+#[test]
+fn bspline_control_claims() {
+    snapshot_paper("bspline");
 }

@@ -11,7 +11,8 @@
 //! t = (2−√2, 2, 2+√2), U = (2+√2)/2 for ξ = 2/3 is checked exactly in Q(√2) by the claims.
 
 use crate::linalg::{solve, Matrix};
-use crate::scalar::{Field, Real};
+use crate::scalar::qsqrt2::QSqrt2;
+use crate::scalar::{BigRational, Field, Real};
 
 /// The final time of the problem.
 pub const FINAL_TIME: i64 = 4;
@@ -85,6 +86,43 @@ pub fn switching_times<T: Real>(ctx: &T::Ctx) -> Result<[T; 3], NoSolution> {
     Err(NoSolution)
 }
 
+/// The switching times exactly, by elimination. With r = 4 − t, the terminal conditions read
+/// r1 − r2 + r3 = 2, r1² − r2² + r3² = 8, r1³ − r2³ + r3³ = 32 (Sec. 4.1). Put p = r1 + r3,
+/// q = r1·r3: the first gives r2 = p − 2, the second q = 2p − 6, and the third then reduces to
+/// 6p + 8 = 32. So p = 4, q = 2, and r1, r3 = (p ± √(p² − 4q))/2; the discriminant p² − 4q = 8
+/// is 2·2², so its root 2√2 lies in Q(√2). Returns `None` if the discriminant were not of the
+/// form 2·(rational square), or if the result failed the exact check of the terminal state.
+pub fn exact_switching_times() -> Option<[QSqrt2; 3]> {
+    let q = |n: i64| BigRational::from_integer(n.into());
+    let p = (q(32) - q(8)) / q(6);
+    let prod = q(2) * &p - q(6);
+    let disc = p.clone() * &p - q(4) * &prod;
+    // √disc = s·√2 with s² = disc/2, s a rational square root.
+    let half = disc / q(2);
+    let s = rational_sqrt(&half)?;
+    let root = QSqrt2::new(q(0), s);
+    let two = QSqrt2::from_i64(2, &());
+    let pp = QSqrt2::from_rational(&p, &());
+    let (r1, r3) = ((pp.clone() + &root) / &two, (pp.clone() - &root) / &two);
+    let r2 = pp - &two;
+    let four = QSqrt2::from_i64(FINAL_TIME, &());
+    let t = [four.clone() - &r1, four.clone() - &r2, four - &r3];
+    terminal_residuals(&t)
+        .iter()
+        .all(Field::is_zero)
+        .then_some(t)
+}
+
+/// The exact square root of a non-negative rational that is a square of a rational.
+fn rational_sqrt(x: &BigRational) -> Option<BigRational> {
+    if *x < BigRational::from_integer(0.into()) {
+        return None;
+    }
+    let (n, d) = (x.numer().sqrt(), x.denom().sqrt());
+    let r = BigRational::new(n, d);
+    (r.clone() * &r == *x).then_some(r)
+}
+
 /// The amplitude U with x(2) = ξ for these switching times.
 pub fn amplitude<T: Field>(switches: &[T; 3], xi: &T) -> T {
     let ctx = xi.ctx();
@@ -106,6 +144,16 @@ mod tests {
         assert!(terminal_residuals(&t).iter().all(Field::is_zero));
         let u = amplitude(&t, &QSqrt2::from_ratio(2, 3, &()));
         assert_eq!(u, (i(2) + &r2) / &i(2));
+    }
+
+    #[test]
+    fn elimination_gives_the_exact_times() {
+        let r2 = QSqrt2::sqrt2();
+        let i = |v: i64| QSqrt2::from_i64(v, &());
+        assert_eq!(
+            exact_switching_times(),
+            Some([i(2) - &r2, i(2), i(2) + &r2])
+        );
     }
 
     #[test]

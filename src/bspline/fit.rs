@@ -146,8 +146,9 @@ impl<T: Field> SplineSpace<T> {
         }
         let wb = Matrix::from_fn(b.rows(), b.cols(), |j, i| weights[j].clone() * &b[(j, i)]);
         let bt = b.transpose();
+        let gram = self.gram(&ctx);
         let lhs = Matrix::from_fn(self.controls, self.controls, |r, c| {
-            let mut acc = self.gram(&ctx)[(r, c)].clone();
+            let mut acc = gram[(r, c)].clone();
             for j in 0..b.rows() {
                 acc.mul_add_assign(&bt[(r, j)], &wb[(j, c)]);
             }

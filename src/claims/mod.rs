@@ -10,6 +10,7 @@
 //! paper's own method, computed to certified precision, does not give what is printed (a
 //! finding, with evidence); `failed` — something that must hold does not.
 
+pub mod bspline_control;
 pub mod hermite_bernstein;
 pub mod sample;
 
@@ -193,7 +194,7 @@ pub struct Paper {
 
 /// The papers verified so far, in id order.
 pub fn papers() -> Vec<Paper> {
-    vec![hermite_bernstein::paper()]
+    vec![hermite_bernstein::paper(), bspline_control::paper()]
 }
 
 #[cfg(test)]
