@@ -188,6 +188,39 @@ fn bad_input_is_one_line_exit_two_and_no_stdout() {
         (&["run", "hermite", "--scalar", "mpfr:7"], FIG2, "mpfr"),
         (&["verify", "--paper", "nonexistent"], "", "nonexistent"),
         (&["run", "no-such-algorithm"], "", "no-such-algorithm"),
+        (&["run", "bspline-basis"], r#"{"degree": -1}"#, "degree"),
+        (&["run", "bspline-gram"], r#"{"degree": 0}"#, "degree"),
+        (
+            &["run", "spline-fit"],
+            r#"{"degree": 3, "controls": 3, "times": [1, 2, 3, 4], "values": [1, 2, 3, 4], "weights": null}"#,
+            "controls",
+        ),
+        (
+            &["run", "spline-fit"],
+            r#"{"degree": 3, "controls": 6, "times": [0, 2], "values": [1, 2], "weights": null}"#,
+            "times[0]",
+        ),
+        (
+            &["run", "spline-fit", "--scalar", "rational"],
+            r#"{"degree": 3, "controls": 6, "times": [2, 2], "values": [1, 2], "weights": null}"#,
+            "full row rank",
+        ),
+        (
+            &["run", "spline-fit"],
+            r#"{"degree": 3, "controls": 6, "times": [1, 2], "values": [1, 2], "weights": [1, -1]}"#,
+            "weights[1]",
+        ),
+        (
+            &["run", "spline-fit"],
+            r#"{"degree": 3, "controls": 6, "times": [1, 2], "values": [1], "weights": null}"#,
+            "values",
+        ),
+        (&["run", "bang-bang"], r#"{"xi": "x"}"#, "xi"),
+        (
+            &["run", "bang-bang", "--scalar", "rational"],
+            r#"{"xi": 1}"#,
+            "--scalar",
+        ),
     ];
     for (args, input, needle) in cases {
         let run = trajverify(args, input);
@@ -232,8 +265,15 @@ fn list_names_every_claim_with_its_location() {
     assert!(run
         .stdout
         .contains("hermite.fig2.control_points.t1\tSec. 4, Fig. 2"));
-    let filtered = trajverify(&["list", "--paper", "000_d51e5cedfa8471cf"], "");
-    assert_eq!(filtered.stdout, run.stdout);
+    assert!(run.stdout.contains("bspline.sec5.gram_k3\tSec. 5"));
+    // Filtering by id or short name keeps exactly that paper's section of the full list.
+    let hermite = trajverify(&["list", "--paper", "000_d51e5cedfa8471cf"], "");
+    let bspline = trajverify(&["list", "--paper", "bspline"], "");
+    assert!(
+        hermite.stdout.starts_with("# 000_d51e5cedfa8471cf")
+            && !hermite.stdout.contains("bspline.")
+    );
+    assert_eq!(format!("{}{}", hermite.stdout, bspline.stdout), run.stdout);
 }
 
 #[test]
@@ -266,4 +306,67 @@ fn verify_writes_the_ledger_and_reports() {
             .starts_with("<svg"));
     }
     std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn bspline_basis_and_gram_are_exact() {
+    let basis = json(&trajverify(&["run", "bspline-basis"], r#"{"degree": 3}"#));
+    assert_eq!(
+        basis["pieces"][0],
+        serde_json::json!(["0", "0", "0", "1/6"])
+    );
+    assert_eq!(
+        basis["pieces"][2],
+        serde_json::json!(["2/3", "0", "-1", "1/2"])
+    );
+    let gram = json(&trajverify(&["run", "bspline-gram"], r#"{"degree": 3}"#));
+    assert_eq!(gram["entries"], serde_json::json!(["20", "-15", "6", "-1"]));
+}
+
+#[test]
+fn spline_fit_interpolates_exactly_in_rationals() {
+    let input = r#"{"degree": 3, "controls": 6, "times": [1.5, 3, 4.5, 6], "values": [1, -2, 0, "5/3"], "weights": null}"#;
+    let exact = json(&trajverify(
+        &["run", "spline-fit", "--scalar", "rational"],
+        input,
+    ));
+    assert_eq!(exact["tau"].as_array().unwrap().len(), 6);
+    assert_eq!(exact["problem"], "interpolation (Eq. 14)");
+    // The f64 answer agrees with the exact one.
+    let fast = json(&trajverify(&["run", "spline-fit"], input));
+    for (a, b) in exact["tau"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .zip(fast["tau"].as_array().unwrap())
+    {
+        let q = trajverify::scalar::parse::parse_rational(a.as_str().unwrap()).unwrap();
+        let x: f64 = b.as_str().unwrap().parse().unwrap();
+        assert!(
+            (trajverify::scalar::Field::to_f64(&q) - x).abs() < 1e-12,
+            "{a} vs {b}"
+        );
+    }
+    let points = json(&trajverify(
+        &["run", "spline-fit"],
+        r#"{"degree": 3, "controls": 6, "times": [1.5, 3], "values": [[1, 0], [0, 1]], "weights": [1, 1]}"#,
+    ));
+    assert_eq!(points["tau"][0].as_array().unwrap().len(), 2);
+}
+
+#[test]
+fn bang_bang_is_certified_and_exact() {
+    let out = json(&trajverify(&["run", "bang-bang"], r#"{"xi": "2/3"}"#));
+    assert_eq!(
+        out["exact"]["switching_times"],
+        serde_json::json!(["2 - sqrt(2)", "2", "2 + sqrt(2)"])
+    );
+    assert_eq!(out["exact"]["amplitude"], "1 + 1/2*sqrt(2)");
+    let t1 = out["switching_times"][0].as_str().unwrap();
+    assert!(
+        t1.starts_with("0.58578643762690495119831127579030192143"),
+        "{t1}"
+    );
+    let half = json(&trajverify(&["run", "bang-bang"], r#"{"xi": "1/3"}"#));
+    assert_eq!(half["exact"]["amplitude"], "1/2 + 1/4*sqrt(2)");
 }

@@ -124,3 +124,39 @@ proptest! {
         prop_assert_eq!(ours, text.parse::<f64>().unwrap(), "{}", text);
     }
 }
+
+mod bspline {
+    use super::*;
+    use trajverify::bspline::fit::SplineSpace;
+    use trajverify::bspline::CardinalBSpline;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(32))]
+
+        /// The shifted B-splines sum to one at any point inside the fully covered range.
+        #[test]
+        fn partition_of_unity(k in 0usize..=7, n in 0i64..=1000) {
+            let b = CardinalBSpline::<BigRational>::from_algorithm1(k, &());
+            let t = q(k as i64, 1) + q(n, 1000); // inside [k, k+1]
+            let total = (0..=k as i64 + 1).fold(q(0, 1), |acc, i| acc + b.eval(&(t.clone() - q(i, 1))));
+            prop_assert_eq!(total, q(1, 1));
+        }
+
+        /// Smoothing with a huge weight is close to interpolation, and both meet the problem's shape.
+        #[test]
+        fn smoothing_approaches_interpolation(values in prop::collection::vec(-50i64..50, 4), fracs in prop::collection::vec(1i64..10, 4)) {
+            let space = SplineSpace::<BigRational>::new(3, 8, &()).unwrap();
+            // One time inside each of the unit intervals 1, 3, 5, 7 (Schoenberg–Whitney holds).
+            let times: Vec<BigRational> = fracs.iter().enumerate().map(|(i, f)| q(10 * (2 * i as i64 + 1) + f, 10)).collect();
+            let alpha: Vec<BigRational> = values.iter().map(|&v| q(v, 1)).collect();
+            let tau = space.interpolate(&times, &alpha).unwrap();
+            for (t, a) in times.iter().zip(&alpha) {
+                prop_assert_eq!(&space.eval(&tau, t), a);
+            }
+            let near = space.smooth(&times, &alpha, &vec![q(1_000_000_000, 1); 4]).unwrap();
+            let far = space.smooth(&times, &alpha, &vec![q(1, 1); 4]).unwrap();
+            let dist = |x: &[BigRational]| x.iter().zip(&tau).fold(q(0, 1), |s, (a, b)| s + (a.clone() - b) * (a.clone() - b));
+            prop_assert!(dist(&near) <= dist(&far));
+        }
+    }
+}

@@ -6,6 +6,7 @@
 
 pub mod input;
 pub mod output;
+mod run_bspline;
 mod run_hermite;
 
 use crate::claims::{self, Paper, Verdict};
@@ -47,8 +48,8 @@ pub enum Command {
     Run {
         algorithm: Algorithm,
         /// Number type: f64, rational (exact), or mpfr:<bits> (printed with the digits that
-        /// agree between <bits> and 2·<bits>). Default: f64 for hermite, mpfr:256 for
-        /// hermite-condition.
+        /// agree between <bits> and 2·<bits>). Default: f64 for hermite and spline-fit, mpfr:256
+        /// for hermite-condition and bang-bang; bspline-basis and bspline-gram are always exact.
         #[arg(long, value_name = "SCALAR", value_parser = parse_scalar)]
         scalar: Option<ScalarKind>,
         /// Read the input from this file instead of stdin.
@@ -62,6 +63,11 @@ const RUN_HELP: &str = r#"Algorithms and their input:
                      each value a number or a point [x, y, ...]; output {"degree", "control_points"}
   hermite-condition  {"derivatives": m, "interval": [t0, t1], "matrix": "transform" | "binomial"}
                      output {"condition_number", "certified_digits", "f64"}
+  bspline-basis      {"degree": k} -> {"pieces": [[c0, ..., ck] x (k+1)]}, piece j on [j, j+1] in s = t - j, exact
+  bspline-gram       {"degree": k} (k >= 1) -> {"entries": [g0, ..., gk]}, exact
+  spline-fit         {"degree": k, "controls": M, "times": [...], "values": [...], "weights": null | [...]}
+                     -> {"tau": [tau_1, ..., tau_M]}; values numbers or points; null weights = interpolation
+  bang-bang          {"xi": "2/3"} -> {"switching_times", "amplitude", "exact"}
 Numbers may be JSON numbers or strings ("3/5", "0.6", "1e-3"); both are read exactly."#;
 
 /// The algorithms `run` knows.
@@ -71,6 +77,14 @@ pub enum Algorithm {
     Hermite,
     /// Condition number κ₂ of the Hermite transform (paper 000, Eq. 10, Fig. 5).
     HermiteCondition,
+    /// Pieces of the cardinal B-spline B_k, exact (paper 002, Algorithm 1).
+    BsplineBasis,
+    /// Gram entries ĝ_0…ĝ_k of the k-th derivatives, exact (paper 002, Sec. 5).
+    BsplineGram,
+    /// Optimal interpolating or smoothing B-spline control points (paper 002, Eqs. 14–15).
+    SplineFit,
+    /// Minimum-L∞ bang-bang control through x(2) = ξ (paper 002, Sec. 4).
+    BangBang,
 }
 
 fn parse_scalar(s: &str) -> Result<ScalarKind, String> {
@@ -78,7 +92,13 @@ fn parse_scalar(s: &str) -> Result<ScalarKind, String> {
 }
 
 /// What `run` prints, before it is turned into JSON text.
-pub enum Rendered {
+pub struct Rendered {
+    body: Body,
+    /// Fields appended to the output object after rendering (e.g. exact values).
+    extra: Vec<(String, Value)>,
+}
+
+enum Body {
     Json(Value),
     /// Two MPFR results, at p and 2p bits, to be printed with their agreeing digits.
     Certified(Box<(Out<rug::Float>, Out<rug::Float>)>),
@@ -86,10 +106,32 @@ pub enum Rendered {
 
 impl Rendered {
     pub fn plain<T: crate::scalar::Field>(out: Out<T>) -> Self {
-        Rendered::Json(render_plain(&out))
+        Rendered {
+            body: Body::Json(render_plain(&out)),
+            extra: Vec::new(),
+        }
     }
     pub fn certified(lo: Out<rug::Float>, hi: Out<rug::Float>) -> Self {
-        Rendered::Certified(Box::new((lo, hi)))
+        Rendered {
+            body: Body::Certified(Box::new((lo, hi))),
+            extra: Vec::new(),
+        }
+    }
+    /// The same output with one more field at the end.
+    pub fn with_extra(mut self, key: &str, value: Value) -> Self {
+        self.extra.push((key.to_string(), value));
+        self
+    }
+    /// The final JSON value (certified digits resolved, extra fields appended).
+    fn into_value(self) -> Result<Value, String> {
+        let mut value = match self.body {
+            Body::Json(v) => v,
+            Body::Certified(pair) => render_certified(&pair.0, &pair.1, "")?,
+        };
+        if let Value::Object(map) = &mut value {
+            map.extend(self.extra);
+        }
+        Ok(value)
     }
 }
 
@@ -232,14 +274,15 @@ fn run(
         Algorithm::HermiteCondition => {
             run_hermite::run_condition(&doc, scalar.unwrap_or(ScalarKind::Mpfr(256)))
         }
+        Algorithm::BsplineBasis => run_bspline::run_basis(&doc),
+        Algorithm::BsplineGram => run_bspline::run_gram(&doc),
+        Algorithm::SplineFit => run_bspline::run_fit(&doc, scalar.unwrap_or(ScalarKind::F64)),
+        Algorithm::BangBang => {
+            run_bspline::run_bang_bang(&doc, scalar.unwrap_or(ScalarKind::Mpfr(256)))
+        }
     }
     .map_err(|e| Failure::Usage(e.0))?;
-    let value = match rendered {
-        Rendered::Json(v) => v,
-        Rendered::Certified(pair) => {
-            render_certified(&pair.0, &pair.1, "").map_err(Failure::Usage)?
-        }
-    };
+    let value = rendered.into_value().map_err(Failure::Usage)?;
     let mut s =
         serde_json::to_string(&value).map_err(|e| Failure::Run(format!("internal: {e}")))?;
     s.push('\n');

@@ -1,0 +1,222 @@
+//! `run bspline-basis`, `bspline-gram`, `spline-fit` and `bang-bang`: the JSON shapes of issue 4.
+
+use super::input::{self, fail, InputError};
+use super::output::Out;
+use super::Rendered;
+use crate::bspline::bang_bang;
+use crate::bspline::fit::SplineSpace;
+use crate::bspline::gram::gram_entries;
+use crate::bspline::CardinalBSpline;
+use crate::scalar::qsqrt2::QSqrt2;
+use crate::scalar::{BigRational, Field, Float, ScalarKind};
+use serde_json::{Map, Value};
+
+/// The highest degree accepted by the basis and Gram commands (exact polynomials of degree k).
+pub const MAX_DEGREE: usize = 60;
+/// The most control points accepted by `spline-fit`.
+pub const MAX_CONTROLS: usize = 2000;
+
+fn degree(doc: &Map<String, Value>, minimum: usize) -> Result<usize, InputError> {
+    let value = input::field(doc, "degree")?;
+    let k = input::count(value, "degree", MAX_DEGREE)?;
+    if k < minimum {
+        return fail(format!("field \"degree\": {k} is below {minimum} (the Gram matrix of k-th derivatives needs k ≥ 1)"));
+    }
+    Ok(k)
+}
+
+/// `run bspline-basis`: the pieces of B_k in s = t − j, exact.
+pub fn run_basis(doc: &Map<String, Value>) -> Result<Rendered, InputError> {
+    input::only_fields(doc, &["degree"])?;
+    let k = degree(doc, 0)?;
+    let b = CardinalBSpline::<BigRational>::from_algorithm1(k, &());
+    let pieces = b
+        .pieces()
+        .iter()
+        .map(|p| Out::nums(p.coeffs_padded(k + 1, &())))
+        .collect();
+    Ok(Rendered::plain(Out::object(vec![
+        ("degree", Out::Int(k as i64)),
+        ("pieces", Out::List(pieces)),
+    ])))
+}
+
+/// `run bspline-gram`: ĝ₀…ĝ_k, exact.
+pub fn run_gram(doc: &Map<String, Value>) -> Result<Rendered, InputError> {
+    input::only_fields(doc, &["degree"])?;
+    let k = degree(doc, 1)?;
+    Ok(Rendered::plain(Out::object(vec![
+        ("degree", Out::Int(k as i64)),
+        ("entries", Out::nums(gram_entries::<BigRational>(k, &()))),
+    ])))
+}
+
+struct FitInput {
+    degree: usize,
+    controls: usize,
+    times: Vec<BigRational>,
+    values: Vec<Vec<BigRational>>,
+    is_point: bool,
+    weights: Option<Vec<BigRational>>,
+}
+
+fn read_fit(doc: &Map<String, Value>) -> Result<FitInput, InputError> {
+    input::only_fields(doc, &["degree", "controls", "times", "values", "weights"])?;
+    let degree = degree(doc, 1)?;
+    let controls = input::count(input::field(doc, "controls")?, "controls", MAX_CONTROLS)?;
+    let times_value = input::array(input::field(doc, "times")?, "times")?;
+    let times = times_value
+        .iter()
+        .enumerate()
+        .map(|(i, t)| input::number(t, &format!("times[{i}]")))
+        .collect::<Result<Vec<_>, _>>()?;
+    let (values, is_point) = input::uniform_values(input::field(doc, "values")?, "values")?;
+    if times.is_empty() {
+        return fail("field \"times\": needs at least one data time");
+    }
+    if values.len() != times.len() {
+        return fail(format!(
+            "field \"values\": {} values for {} times",
+            values.len(),
+            times.len()
+        ));
+    }
+    let weights = match doc.get("weights") {
+        None | Some(Value::Null) => None,
+        Some(w) => {
+            let list = input::array(w, "weights")?;
+            let parsed = list
+                .iter()
+                .enumerate()
+                .map(|(i, x)| input::number(x, &format!("weights[{i}]")))
+                .collect::<Result<Vec<_>, _>>()?;
+            if parsed.len() != times.len() {
+                return fail(format!(
+                    "field \"weights\": {} weights for {} times",
+                    parsed.len(),
+                    times.len()
+                ));
+            }
+            if let Some(i) = parsed
+                .iter()
+                .position(|w| *w < BigRational::from_integer(0.into()))
+            {
+                return fail(format!(
+                    "field \"weights[{i}]\": a weight must not be negative"
+                ));
+            }
+            Some(parsed)
+        }
+    };
+    if weights.is_none() && times.len() > controls {
+        return fail(format!("field \"controls\": {controls} control points cannot interpolate {} data (M must be at least N)", times.len()));
+    }
+    let end = BigRational::from_integer(((controls + degree) as i64).into());
+    if let Some(i) = times
+        .iter()
+        .position(|t| *t <= BigRational::from_integer(0.into()) || *t >= end)
+    {
+        return fail(format!("field \"times[{i}]\": {} lies outside the support (0, {end}) of the spline, where every basis function vanishes", times[i]));
+    }
+    Ok(FitInput {
+        degree,
+        controls,
+        times,
+        values,
+        is_point,
+        weights,
+    })
+}
+
+fn fit_in<T: Field>(data: &FitInput, ctx: &T::Ctx) -> Result<Out<T>, InputError> {
+    let conv = |q: &BigRational| T::from_rational(q, ctx);
+    let space = SplineSpace::<T>::new(data.degree, data.controls, ctx)
+        .map_err(|e| InputError(format!("field \"degree\": {e}")))?;
+    let times: Vec<T> = data.times.iter().map(conv).collect();
+    let weights: Option<Vec<T>> = data.weights.as_ref().map(|w| w.iter().map(conv).collect());
+    let dims = data.values[0].len();
+    let mut per_coordinate = Vec::with_capacity(dims);
+    for c in 0..dims {
+        let values: Vec<T> = data.values.iter().map(|v| conv(&v[c])).collect();
+        let tau = match &weights {
+            None => space.interpolate(&times, &values),
+            Some(w) => space.smooth(&times, &values, w),
+        }
+        .map_err(|e| InputError(format!("field \"times\": {e}")))?;
+        per_coordinate.push(tau);
+    }
+    let tau = (0..data.controls)
+        .map(|i| {
+            if data.is_point {
+                Out::nums(per_coordinate.iter().map(|c| c[i].clone()).collect())
+            } else {
+                Out::Num(per_coordinate[0][i].clone())
+            }
+        })
+        .collect();
+    let kind = if data.weights.is_some() {
+        "smoothing (Eq. 15)"
+    } else {
+        "interpolation (Eq. 14)"
+    };
+    Ok(Out::object(vec![
+        ("tau", Out::List(tau)),
+        ("problem", Out::Text(kind.into())),
+    ]))
+}
+
+/// `run spline-fit`: optimal interpolating (weights null) or smoothing control points.
+pub fn run_fit(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, InputError> {
+    let data = read_fit(doc)?;
+    let name = scalar.to_string();
+    Ok(match scalar {
+        ScalarKind::F64 => {
+            Rendered::plain(fit_in::<f64>(&data, &())?.with_field("scalar", Out::Text(name)))
+        }
+        ScalarKind::Rational => Rendered::plain(
+            fit_in::<BigRational>(&data, &())?.with_field("scalar", Out::Text(name)),
+        ),
+        ScalarKind::Mpfr(bits) => Rendered::certified(
+            fit_in::<Float>(&data, &bits)?.with_field("scalar", Out::Text(name.clone())),
+            fit_in::<Float>(&data, &(2 * bits))?.with_field("scalar", Out::Text(name)),
+        ),
+    })
+}
+
+/// `run bang-bang`: switching times and amplitude of the minimum-L∞ control through x(2) = ξ.
+pub fn run_bang_bang(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, InputError> {
+    input::only_fields(doc, &["xi"])?;
+    let xi = input::number(input::field(doc, "xi")?, "xi")?;
+    let no_solution = |e: bang_bang::NoSolution| InputError(format!("input: {e}"));
+    let Some(exact_times) = bang_bang::exact_switching_times() else {
+        return fail("internal: the exact switching times failed their check");
+    };
+    let exact_u = bang_bang::amplitude(&exact_times, &QSqrt2::from_rational(&xi, &()));
+    let exact = |out: Out<QSqrt2>| super::output::render_plain(&out);
+    let exact_json = exact(Out::object(vec![
+        ("switching_times", Out::nums(exact_times.to_vec())),
+        ("amplitude", Out::Num(exact_u)),
+    ]));
+    let numeric = |bits: u32| -> Result<Out<Float>, InputError> {
+        let t = bang_bang::switching_times::<Float>(&bits).map_err(no_solution)?;
+        let u = bang_bang::amplitude(&t, &Float::from_rational(&xi, &bits));
+        Ok(Out::object(vec![
+            ("switching_times", Out::nums(t.to_vec())),
+            ("amplitude", Out::Num(u)),
+        ]))
+    };
+    Ok(match scalar {
+        ScalarKind::Rational => return fail("option --scalar: the switching times are irrational (2 ± √2); use f64 or mpfr:<bits>, and see \"exact\""),
+        ScalarKind::F64 => {
+            let t = bang_bang::switching_times::<f64>(&()).map_err(no_solution)?;
+            let u = bang_bang::amplitude(&t, &f64::from_rational(&xi, &()));
+            let out = Out::object(vec![("switching_times", Out::nums(t.to_vec())), ("amplitude", Out::Num(u)), ("scalar", Out::Text("f64".into()))]);
+            Rendered::with_extra(Rendered::plain(out), "exact", exact_json)
+        }
+        ScalarKind::Mpfr(bits) => {
+            let name = Out::Text(format!("mpfr:{bits}"));
+            let pair = Rendered::certified(numeric(bits)?.with_field("scalar", name.clone()), numeric(2 * bits)?.with_field("scalar", name));
+            Rendered::with_extra(pair, "exact", exact_json)
+        }
+    })
+}
