@@ -35,6 +35,7 @@ pub mod claims;
 pub mod cli;
 pub mod hermite;
 pub mod linalg;
+pub mod param;
 pub mod poly;
 pub mod report;
 pub mod scalar;

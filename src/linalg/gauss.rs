@@ -121,6 +121,30 @@ pub fn determinant<T: Field>(a: &Matrix<T>) -> T {
     }
 }
 
+/// The pivots d₁…d_M of the LDLᵀ factorisation of a symmetric matrix (without pivoting).
+/// The matrix is positive definite exactly when every pivot is positive; `None` if a zero
+/// pivot stops the factorisation.
+pub fn ldl_pivots<T: Field>(a: &Matrix<T>) -> Option<Vec<T>> {
+    let n = a.rows();
+    let mut work = a.clone();
+    let mut pivots = Vec::with_capacity(n);
+    for c in 0..n {
+        let d = work[(c, c)].clone();
+        if d.is_zero() {
+            return None;
+        }
+        for r in c + 1..n {
+            let l = work[(r, c)].clone() / &d;
+            for j in c + 1..n {
+                let delta = l.clone() * &work[(c, j)];
+                work[(r, j)] -= &delta;
+            }
+        }
+        pivots.push(d);
+    }
+    Some(pivots)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -18,7 +18,7 @@ pub mod svd;
 use crate::scalar::Field;
 use std::ops::{Index, IndexMut};
 
-pub use gauss::{determinant, inverse, solve, SingularMatrix};
+pub use gauss::{determinant, inverse, ldl_pivots, solve, SingularMatrix};
 pub use svd::{condition_number, singular_values};
 
 /// A dense `rows × cols` matrix stored row by row.

@@ -18,6 +18,7 @@
 //! different precisions into a decimal string carrying only the digits on which they agree.
 
 pub mod certify;
+pub mod dual;
 mod float;
 mod mpfr;
 pub mod parse;

@@ -1,0 +1,67 @@
+//! The smoothness objective G(h) of paper 004 (Eqs. 1, 31, 34).
+//!
+//! G(h) = Σₗ α_l⁻² ∫₀¹ (θˡ″)² dt, θˡ the natural cubic spline through (tᵢ, zᵢˡ) with
+//! tᵢ = h₁ + … + hᵢ. In algebraic form (Eq. 31) each term is zᵀQᵀM⁻¹Qz = (Qz)·m with m the
+//! interior second derivatives ([`super::natural`]); Eq. 34 replaces M by its diagonal M̂,
+//! which needs no tridiagonal solve: Σᵢ (Qz)ᵢ²/Mᵢᵢ.
+
+use super::natural::{NaturalCubicSpline, SplineError};
+use crate::scalar::Field;
+
+/// Which form of G to evaluate.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Objective {
+    /// Eq. 31 (exact: the true integral of θ″²).
+    Exact,
+    /// Eq. 34 (M replaced by its diagonal).
+    Approximate,
+}
+
+/// The knots tᵢ = h₁ + … + hᵢ, t₀ = 0.
+pub fn knots_from_spacing<T: Field>(h: &[T], ctx: &T::Ctx) -> Vec<T> {
+    let mut t = vec![T::zero_in(ctx)];
+    for hi in h {
+        let next = t[t.len() - 1].clone() + hi;
+        t.push(next);
+    }
+    t
+}
+
+/// (Qz)ᵢ, i = 1…N−1: the second divided differences times their spacing structure.
+fn q_times<T: Field>(h: &[T], z: &[T]) -> Vec<T> {
+    (1..h.len())
+        .map(|i| (z[i + 1].clone() - &z[i]) / &h[i] - &((z[i].clone() - &z[i - 1]) / &h[i - 1]))
+        .collect()
+}
+
+/// G(h) for K components `z[l]` (each of length N+1) with weights α_l.
+pub fn objective<T: Field>(
+    h: &[T],
+    z: &[Vec<T>],
+    alpha: &[T],
+    form: Objective,
+) -> Result<T, SplineError> {
+    let ctx = h[0].ctx();
+    let t = knots_from_spacing(h, &ctx);
+    let mut total = T::zero_in(&ctx);
+    for (zl, al) in z.iter().zip(alpha) {
+        let qz = q_times(h, zl);
+        let term = match form {
+            Objective::Exact => {
+                let spline = NaturalCubicSpline::new(t.clone(), zl.clone())?;
+                let m = spline.second_derivatives_at_knots();
+                qz.iter()
+                    .zip(&m[1..])
+                    .fold(T::zero_in(&ctx), |acc, (a, b)| acc + &(a.clone() * b))
+            }
+            Objective::Approximate => {
+                let three = T::from_i64(3, &ctx);
+                qz.iter().enumerate().fold(T::zero_in(&ctx), |acc, (i, a)| {
+                    acc + &(a.clone() * a * &three / &(h[i].clone() + &h[i + 1]))
+                })
+            }
+        };
+        total += &(term / &(al.clone() * al));
+    }
+    Ok(total)
+}
