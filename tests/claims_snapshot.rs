@@ -45,3 +45,8 @@ fn hermite_bernstein_claims() {
 fn bspline_control_claims() {
     snapshot_paper("bspline");
 }
+
+#[test]
+fn marin_param_claims() {
+    snapshot_paper("marin");
+}

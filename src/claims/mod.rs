@@ -12,6 +12,7 @@
 
 pub mod bspline_control;
 pub mod hermite_bernstein;
+pub mod marin_param;
 pub mod sample;
 
 use serde::Serialize;
@@ -194,7 +195,11 @@ pub struct Paper {
 
 /// The papers verified so far, in id order.
 pub fn papers() -> Vec<Paper> {
-    vec![hermite_bernstein::paper(), bspline_control::paper()]
+    vec![
+        hermite_bernstein::paper(),
+        bspline_control::paper(),
+        marin_param::paper(),
+    ]
 }
 
 #[cfg(test)]

@@ -52,6 +52,27 @@ pub fn gradient_projection<T: Real>(
     tolerance: &T,
     max_iterations: usize,
 ) -> Result<Descent<T>, SplineError> {
+    gradient_projection_observed(
+        h0,
+        z,
+        alpha,
+        form,
+        tolerance,
+        max_iterations,
+        &mut |_, _| {},
+    )
+}
+
+/// [`gradient_projection`], calling `observe(i, h⁽ⁱ⁾)` after every iteration.
+pub fn gradient_projection_observed<T: Real>(
+    h0: Vec<T>,
+    z: &[Vec<T>],
+    alpha: &[T],
+    form: Objective,
+    tolerance: &T,
+    max_iterations: usize,
+    observe: &mut dyn FnMut(usize, &[T]),
+) -> Result<Descent<T>, SplineError> {
     let ctx = h0[0].ctx();
     let zero = T::zero_in(&ctx);
     let mut h = h0;
@@ -99,6 +120,7 @@ pub fn gradient_projection<T: Real>(
         p = project(&gradient(&h, z, alpha, form)?);
         norm = dot(&p, &p).sqrt();
         iterations += 1;
+        observe(iterations, &h);
     }
     let value = objective(&h, z, alpha, form)?;
     Ok(Descent {
@@ -162,7 +184,7 @@ fn illinois<T: Real>(
 
 /// Newton's method on the optimality system ∇G(h) − μ·1 = 0, Σhᵢ = 1, from a nearby `h`
 /// (e.g. a gradient projection iterate): each step solves
-/// [[∇²G, 1], [1ᵀ, 0]]·[δh; δμ] = [μ1 − ∇G; 0], with the Hessian's columns obtained exactly
+/// [[∇²G, 1], [1ᵀ, 0]]·[δh; δμ] = [μ1 − ∇G; 1 − Σhᵢ], with the Hessian's columns obtained exactly
 /// (to the working precision) by evaluating the gradient in dual numbers. Stops after
 /// `steps` steps or when a step no longer changes h at the working precision.
 pub fn newton_polish<T: Real>(
@@ -206,7 +228,9 @@ pub fn newton_polish<T: Real>(
         // μ estimate: the mean gradient (the multiplier for which μ1 − ∇G is ⟂ 1).
         let mean = g.iter().fold(T::zero_in(&ctx), |a, x| a + x) / &T::from_i64(n as i64, &ctx);
         let mut rhs: Vec<T> = g.iter().map(|x| mean.clone() - x).collect();
-        rhs.push(T::zero_in(&ctx));
+        // The constraint row restores Σhᵢ = 1 (a start rounded from another precision misses it).
+        let total = h.iter().fold(T::zero_in(&ctx), |a, x| a + x);
+        rhs.push(T::one_in(&ctx) - &total);
         let Ok(delta) = solve(&hessian, &rhs) else {
             break;
         };

@@ -1,0 +1,85 @@
+//! Paper 004: Marin, *An Approach to Data Parametrization in Parametric Cubic Spline
+//! Interpolation Problems*, J. Approx. Theory (1984).
+//!
+//! Claims checked so far: the exact 1-D minimizers (case I, Table I, Eqs. 8 and 11,
+//! Corollaries 2 and 3) and the plane-curve example (Table III, the second-derivative
+//! comparison of Figs. 3–5). The robot example (Tables IV–VII), the corner example (Fig. 6) and
+//! the H¹ inequality of Sec. 1 are not yet in the ledger (issue 5 continues).
+
+pub mod data;
+mod one_d;
+mod plane;
+
+use super::{ClaimSpec, Ledger, Paper, PaperOutput};
+use crate::report::claims_section;
+use crate::scalar::parse::parse_rational;
+use crate::scalar::BigRational;
+
+pub const ID: &str = "004_2a9dc6e62cca15f1";
+pub const SHORT: &str = "marin";
+pub const TITLE: &str = "Marin, An Approach to Data Parametrization in Parametric Cubic Spline Interpolation Problems, J. Approx. Theory (1984)";
+
+pub const SPECS: &[ClaimSpec] = &[
+    ClaimSpec { id: "marin.case1.chord_length", location: "Sec. 2, case I, Eq. 7", statement: "for strictly monotone data the minimizing parametrization is normalized accumulated chord length, θ is linear and G = 0", published: None },
+    ClaimSpec { id: "marin.table1.t_star", location: "Table I, Eq. 9, Corollary 1", statement: "the minimizing parametrization of the Table I ordinates", published: Some("Table I, column t_i*") },
+    ClaimSpec { id: "marin.eq8.interior_slope", location: "Sec. 2, Lemma, Eq. 8", statement: "at the minimizing parametrization of alternating data, dθ/dt(t_i*) = 0 at every interior knot", published: None },
+    ClaimSpec { id: "marin.eq11.jump", location: "Eqs. 11–12", statement: "the jump in the second derivative given by Eq. 11 vanishes at the minimizing parametrization", published: None },
+    ClaimSpec { id: "marin.cor2.unique_minimizer", location: "Sec. 2, case III, Corollary 2", statement: "the parametrization of Eqs. 16–17 is the unique minimizer of G for general scalar data", published: None },
+    ClaimSpec { id: "marin.cor3.properties", location: "Corollary 3 (i)–(iii)", statement: "no overshoots; breakpoints only at the extremes; |θ''| = 3(Σ ε_j √|D_j|)² at the interior extremes, alternating in sign", published: None },
+    ClaimSpec { id: "marin.table3.chord", location: "Table III, column t^C1; Eq. 5", statement: "normalized accumulated chord length of the Table II data", published: Some("Table III, column t_i^C1") },
+    ClaimSpec { id: "marin.table3.exact", location: "Table III, column t^EX; Eqs. 30–31", statement: "the minimizing parametrization of the Table II data with the exact objective (31)", published: Some("Table III, column t_i^EX") },
+    ClaimSpec { id: "marin.table3.approx", location: "Table III, column t^AP; Eqs. 30, 34", statement: "the minimizing parametrization of the Table II data with the approximate objective (34)", published: Some("Table III, column t_i^AP") },
+    ClaimSpec { id: "marin.fig3_5.second_derivatives", location: "Sec. 3, Figs. 3–5", statement: "the minimizing parametrizations substantially reduce the second derivatives of both components compared with chord length", published: None },
+];
+
+pub fn paper() -> Paper {
+    Paper {
+        id: ID,
+        short: SHORT,
+        title: TITLE,
+        specs: SPECS,
+        verify,
+    }
+}
+
+/// A printed decimal as an exact rational (the transcribed tables parse by construction; a
+/// test checks every entry).
+pub(crate) fn num(s: &str) -> BigRational {
+    parse_rational(s).unwrap_or_else(|_| BigRational::from_integer(0.into()))
+}
+
+/// Run every check implemented so far for paper 004 and build its report.
+pub fn verify() -> PaperOutput {
+    let mut ledger = Ledger::new(ID, SPECS);
+    let mut figures = Vec::new();
+    let mut md = format!(
+        "# {TITLE}\n\nPaper id `{ID}`; claim ids start with `{SHORT}.`. Regenerate with `trajverify verify --paper {SHORT}`.\n\n\
+         Not yet checked (issue 5 continues): Tables IV–VII (robot example), Fig. 6 (corner example), the H¹ inequality of Sec. 1.\n\n"
+    );
+    one_d::section(&mut ledger, &mut md, &mut figures);
+    plane::section(&mut ledger, &mut md, &mut figures);
+    let claims = ledger.finish();
+    md.push_str(&claims_section(&claims));
+    PaperOutput {
+        claims,
+        markdown: md,
+        figures,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::data::*;
+
+    #[test]
+    fn every_transcribed_number_parses() {
+        let all = TABLE1
+            .iter()
+            .flat_map(|(a, b)| [*a, *b])
+            .chain(TABLE2.iter().flat_map(|(a, b)| [*a, *b]))
+            .chain(TABLE3.iter().flat_map(|(a, b, c)| [*a, *b, *c]));
+        for s in all {
+            assert!(crate::scalar::parse::parse_rational(s).is_ok(), "{s}");
+        }
+    }
+}
