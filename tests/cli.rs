@@ -18,12 +18,20 @@ fn trajverify(args: &[&str], stdin: &str) -> Run {
         .stderr(Stdio::piped())
         .spawn()
         .expect("the binary starts");
-    child
+    // A child that exits on a usage error before reading stdin closes the pipe: that is not a
+    // failure of the test, whose assertions are on the exit status and the output.
+    if let Err(e) = child
         .stdin
         .take()
         .expect("stdin is piped")
         .write_all(stdin.as_bytes())
-        .expect("stdin accepts the input");
+    {
+        assert_eq!(
+            e.kind(),
+            std::io::ErrorKind::BrokenPipe,
+            "writing stdin: {e}"
+        );
+    }
     let out = child.wait_with_output().expect("the binary finishes");
     Run {
         code: out.status.code().unwrap_or(-1),
@@ -221,6 +229,38 @@ fn bad_input_is_one_line_exit_two_and_no_stdout() {
             r#"{"xi": 1}"#,
             "--scalar",
         ),
+        (&["run", "marin-1d"], r#"{"z": [0, 1, 1, 2]}"#, "equal"),
+        (&["run", "marin-1d"], r#"{"z": [0]}"#, "two points"),
+        (
+            &["run", "marin-1d", "--scalar", "rational"],
+            r#"{"z": [0, 2, 1]}"#,
+            "case II",
+        ),
+        (
+            &["run", "marin"],
+            r#"{"points": [[0, 0], [0, 0], [1, 1]]}"#,
+            "points[1]",
+        ),
+        (
+            &["run", "marin"],
+            r#"{"points": [[0, 0], [1, 1]], "weights": [1, 0]}"#,
+            "weights[1]",
+        ),
+        (
+            &["run", "marin"],
+            r#"{"points": [[0, 0], [1, 1]], "objective": "best"}"#,
+            "objective",
+        ),
+        (
+            &["run", "natural-spline"],
+            r#"{"t": [0, 1, 1], "z": [0, 1, 2], "at": [0.5]}"#,
+            "t[2]",
+        ),
+        (
+            &["run", "natural-spline"],
+            r#"{"t": [0], "z": [0], "at": [0]}"#,
+            "two knots",
+        ),
     ];
     for (args, input, needle) in cases {
         let run = trajverify(args, input);
@@ -268,12 +308,15 @@ fn list_names_every_claim_with_its_location() {
     assert!(run.stdout.contains("bspline.sec5.gram_k3\tSec. 5"));
     // Filtering by id or short name keeps exactly that paper's section of the full list.
     let hermite = trajverify(&["list", "--paper", "000_d51e5cedfa8471cf"], "");
-    let bspline = trajverify(&["list", "--paper", "bspline"], "");
     assert!(
         hermite.stdout.starts_with("# 000_d51e5cedfa8471cf")
             && !hermite.stdout.contains("bspline.")
     );
-    assert_eq!(format!("{}{}", hermite.stdout, bspline.stdout), run.stdout);
+    let sections: String = ["hermite", "bspline", "marin"]
+        .iter()
+        .map(|p| trajverify(&["list", "--paper", p], "").stdout)
+        .collect();
+    assert_eq!(sections, run.stdout);
 }
 
 #[test]
@@ -369,4 +412,34 @@ fn bang_bang_is_certified_and_exact() {
     );
     let half = json(&trajverify(&["run", "bang-bang"], r#"{"xi": "1/3"}"#));
     assert_eq!(half["exact"]["amplitude"], "1/2 + 1/4*sqrt(2)");
+}
+
+#[test]
+fn marin_commands() {
+    // Table I of paper 004, case II, to the printed four decimals.
+    let out = json(&trajverify(
+        &["run", "marin-1d"],
+        r#"{"z": [0.0, 0.2, 0.1, 0.4, -0.1, 0.0, -0.3, 0.2, 0.0, 0.5, 0.4]}"#,
+    ));
+    assert_eq!(out["case"], "II");
+    let t3: f64 = out["t"][3].as_str().unwrap().parse().unwrap();
+    assert!((t3 - 0.2440).abs() < 5e-5, "{t3}");
+    let exact = json(&trajverify(
+        &["run", "marin-1d", "--scalar", "rational"],
+        r#"{"z": [0, 1, 3, 4]}"#,
+    ));
+    assert_eq!(exact["t"], serde_json::json!(["0", "1/4", "3/4", "1"]));
+    let spline = json(&trajverify(
+        &["run", "natural-spline", "--scalar", "rational"],
+        r#"{"t": [0, 0.5, 1], "z": [0, 1, 0], "at": [0.25, 0.5]}"#,
+    ));
+    assert_eq!(spline["values"], serde_json::json!(["11/16", "1"]));
+    assert_eq!(spline["second"][1], "-12");
+    let plane = json(&trajverify(
+        &["run", "marin", "--scalar", "f64"],
+        r#"{"points": [[0, 0], [1, 0.2], [1.5, 1], [0.5, 1.5]], "objective": "exact"}"#,
+    ));
+    let g: f64 = plane["G"].as_str().unwrap().parse().unwrap();
+    let g_chord: f64 = plane["G_chord"].as_str().unwrap().parse().unwrap();
+    assert!(g <= g_chord, "{g} > {g_chord}");
 }

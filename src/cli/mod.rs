@@ -8,6 +8,7 @@ pub mod input;
 pub mod output;
 mod run_bspline;
 mod run_hermite;
+mod run_param;
 
 use crate::claims::{self, Paper, Verdict};
 use crate::report;
@@ -48,8 +49,9 @@ pub enum Command {
     Run {
         algorithm: Algorithm,
         /// Number type: f64, rational (exact), or mpfr:<bits> (printed with the digits that
-        /// agree between <bits> and 2·<bits>). Default: f64 for hermite and spline-fit, mpfr:256
-        /// for hermite-condition and bang-bang; bspline-basis and bspline-gram are always exact.
+        /// agree between <bits> and 2·<bits>). Default: f64 for hermite, spline-fit and
+        /// natural-spline; mpfr:256 for hermite-condition, bang-bang, marin-1d and marin;
+        /// bspline-basis and bspline-gram are always exact.
         #[arg(long, value_name = "SCALAR", value_parser = parse_scalar)]
         scalar: Option<ScalarKind>,
         /// Read the input from this file instead of stdin.
@@ -68,6 +70,10 @@ const RUN_HELP: &str = r#"Algorithms and their input:
   spline-fit         {"degree": k, "controls": M, "times": [...], "values": [...], "weights": null | [...]}
                      -> {"tau": [tau_1, ..., tau_M]}; values numbers or points; null weights = interpolation
   bang-bang          {"xi": "2/3"} -> {"switching_times", "amplitude", "exact"}
+  marin-1d           {"z": [z0, ..., zN]} -> {"t": [...], "case": "I" | "II" | "III"}
+  marin              {"points": [[...], ...], "weights": [a1, ...] (optional), "objective": "exact" | "approx"}
+                     -> {"t": [...], "G", "G_chord", "iterations"}
+  natural-spline     {"t": [...], "z": [...] or [[...], ...], "at": [...]} -> {"values", "first", "second"}
 Numbers may be JSON numbers or strings ("3/5", "0.6", "1e-3"); both are read exactly."#;
 
 /// The algorithms `run` knows.
@@ -85,6 +91,13 @@ pub enum Algorithm {
     SplineFit,
     /// Minimum-L∞ bang-bang control through x(2) = ξ (paper 002, Sec. 4).
     BangBang,
+    /// Exact minimizing parametrization of scalar data (paper 004, Sec. 2).
+    #[value(name = "marin-1d")]
+    Marin1d,
+    /// Minimizing parametrization of K-dimensional points (paper 004, Eq. 30).
+    Marin,
+    /// Natural cubic spline values and derivatives (paper 004).
+    NaturalSpline,
 }
 
 fn parse_scalar(s: &str) -> Result<ScalarKind, String> {
@@ -279,6 +292,13 @@ fn run(
         Algorithm::SplineFit => run_bspline::run_fit(&doc, scalar.unwrap_or(ScalarKind::F64)),
         Algorithm::BangBang => {
             run_bspline::run_bang_bang(&doc, scalar.unwrap_or(ScalarKind::Mpfr(256)))
+        }
+        Algorithm::Marin1d => {
+            run_param::run_marin_1d(&doc, scalar.unwrap_or(ScalarKind::Mpfr(256)))
+        }
+        Algorithm::Marin => run_param::run_marin(&doc, scalar.unwrap_or(ScalarKind::Mpfr(256))),
+        Algorithm::NaturalSpline => {
+            run_param::run_natural_spline(&doc, scalar.unwrap_or(ScalarKind::F64))
         }
     }
     .map_err(|e| Failure::Usage(e.0))?;

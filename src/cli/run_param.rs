@@ -1,0 +1,312 @@
+//! `run marin-1d`, `run natural-spline` and `run marin`: the JSON shapes of issue 5.
+
+use super::input::{self, fail, InputError};
+use super::output::Out;
+use super::Rendered;
+use crate::param::descent::{gradient_projection, newton_polish};
+use crate::param::natural::NaturalCubicSpline;
+use crate::param::objective::{knots_from_spacing, objective, Objective};
+use crate::param::one_d::{
+    chord_length_1d, classify, minimizing_parametrization, Case, ParamError,
+};
+use crate::scalar::{BigRational, Field, Float, Real, ScalarKind};
+use serde_json::{Map, Value};
+
+/// The most points accepted by `marin` (a dense Newton step on N unknowns).
+pub const MAX_POINTS: usize = 500;
+
+fn numbers(v: &Value, path: &str) -> Result<Vec<BigRational>, InputError> {
+    input::array(v, path)?
+        .iter()
+        .enumerate()
+        .map(|(i, x)| input::number(x, &format!("{path}[{i}]")))
+        .collect()
+}
+
+fn param_error(e: ParamError, field: &str) -> InputError {
+    InputError(format!("field \"{field}\": {e}"))
+}
+
+/// `run marin-1d`: the exact minimizing parametrization of scalar ordinates.
+pub fn run_marin_1d(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, InputError> {
+    input::only_fields(doc, &["z"])?;
+    let z = numbers(input::field(doc, "z")?, "z")?;
+    let case = classify(&z).map_err(|e| param_error(e, "z"))?;
+    fn real<T: Real>(z: &[BigRational], ctx: &T::Ctx) -> Result<Out<T>, InputError> {
+        let zt: Vec<T> = z.iter().map(|q| T::from_rational(q, ctx)).collect();
+        let (t, case) = minimizing_parametrization(&zt).map_err(|e| param_error(e, "z"))?;
+        Ok(Out::object(vec![
+            ("t", Out::nums(t)),
+            ("case", Out::Text(case.name().into())),
+        ]))
+    }
+    Ok(match scalar {
+        ScalarKind::Rational if case == Case::I => {
+            let t = chord_length_1d(&z).map_err(|e| param_error(e, "z"))?;
+            Rendered::plain(Out::object(vec![("t", Out::nums(t)), ("case", Out::Text("I".into())), ("scalar", Out::Text("rational".into()))]))
+        }
+        ScalarKind::Rational => {
+            return fail(format!("option --scalar: rational covers only case I; these data are case {} and need square roots (use f64 or mpfr:<bits>)", case.name()))
+        }
+        ScalarKind::F64 => Rendered::plain(real::<f64>(&z, &())?.with_field("scalar", Out::Text("f64".into()))),
+        ScalarKind::Mpfr(bits) => Rendered::certified(
+            real::<Float>(&z, &bits)?.with_field("scalar", Out::Text(scalar.to_string())),
+            real::<Float>(&z, &(2 * bits))?.with_field("scalar", Out::Text(scalar.to_string())),
+        ),
+    })
+}
+
+/// `run natural-spline`: values and first and second derivatives at requested parameters.
+pub fn run_natural_spline(
+    doc: &Map<String, Value>,
+    scalar: ScalarKind,
+) -> Result<Rendered, InputError> {
+    input::only_fields(doc, &["t", "z", "at"])?;
+    let t = numbers(input::field(doc, "t")?, "t")?;
+    let (z, is_point) = input::uniform_values(input::field(doc, "z")?, "z")?;
+    let at = numbers(input::field(doc, "at")?, "at")?;
+    if t.len() < 2 {
+        return fail("field \"t\": a spline needs at least two knots");
+    }
+    if z.len() != t.len() {
+        return fail(format!(
+            "field \"z\": {} values for {} knots",
+            z.len(),
+            t.len()
+        ));
+    }
+    if let Some(i) = (1..t.len()).find(|&i| t[i] <= t[i - 1]) {
+        return fail(format!(
+            "field \"t[{i}]\": knots must increase ({} after {})",
+            t[i],
+            t[i - 1]
+        ));
+    }
+    fn eval<T: Field>(
+        t: &[BigRational],
+        z: &[Vec<BigRational>],
+        at: &[BigRational],
+        is_point: bool,
+        ctx: &T::Ctx,
+    ) -> Result<Out<T>, InputError> {
+        let conv = |q: &BigRational| T::from_rational(q, ctx);
+        let knots: Vec<T> = t.iter().map(conv).collect();
+        let splines = (0..z[0].len())
+            .map(|c| {
+                NaturalCubicSpline::new(knots.clone(), z.iter().map(|v| conv(&v[c])).collect())
+            })
+            .collect::<Result<Vec<_>, _>>()
+            .map_err(|e| InputError(format!("field \"t\": {e}")))?;
+        let column = |j: usize| -> Out<T> {
+            Out::List(
+                at.iter()
+                    .map(|x| {
+                        let x = conv(x);
+                        let vals: Vec<T> =
+                            splines.iter().map(|s| s.eval_all(&x)[j].clone()).collect();
+                        if is_point {
+                            Out::nums(vals)
+                        } else {
+                            Out::Num(vals.into_iter().next().unwrap_or_else(|| T::zero_in(ctx)))
+                        }
+                    })
+                    .collect(),
+            )
+        };
+        Ok(Out::object(vec![
+            ("values", column(0)),
+            ("first", column(1)),
+            ("second", column(2)),
+        ]))
+    }
+    let name = scalar.to_string();
+    Ok(match scalar {
+        ScalarKind::F64 => Rendered::plain(
+            eval::<f64>(&t, &z, &at, is_point, &())?.with_field("scalar", Out::Text(name)),
+        ),
+        ScalarKind::Rational => Rendered::plain(
+            eval::<BigRational>(&t, &z, &at, is_point, &())?.with_field("scalar", Out::Text(name)),
+        ),
+        ScalarKind::Mpfr(bits) => Rendered::certified(
+            eval::<Float>(&t, &z, &at, is_point, &bits)?
+                .with_field("scalar", Out::Text(name.clone())),
+            eval::<Float>(&t, &z, &at, is_point, &(2 * bits))?
+                .with_field("scalar", Out::Text(name)),
+        ),
+    })
+}
+
+struct MarinInput {
+    /// Components: z[l][i].
+    z: Vec<Vec<BigRational>>,
+    alpha: Vec<BigRational>,
+    form: Objective,
+}
+
+fn read_marin(doc: &Map<String, Value>) -> Result<MarinInput, InputError> {
+    input::only_fields(doc, &["points", "weights", "objective"])?;
+    let (points, _) = input::uniform_values(input::field(doc, "points")?, "points")?;
+    if points.len() < 2 {
+        return fail("field \"points\": needs at least two points");
+    }
+    if points.len() > MAX_POINTS {
+        return fail(format!(
+            "field \"points\": {} points is more than the supported {MAX_POINTS}",
+            points.len()
+        ));
+    }
+    if let Some(i) = (1..points.len()).find(|&i| points[i] == points[i - 1]) {
+        return fail(format!("field \"points[{i}]\": equal to the point before it (the paper's existence assumption needs z_i ≠ z_(i+1))"));
+    }
+    let k = points[0].len();
+    let alpha = match doc.get("weights") {
+        None | Some(Value::Null) => vec![BigRational::from_integer(1.into()); k],
+        Some(w) => numbers(w, "weights")?,
+    };
+    if alpha.len() != k {
+        return fail(format!(
+            "field \"weights\": {} weights for points of dimension {k}",
+            alpha.len()
+        ));
+    }
+    if let Some(i) = alpha
+        .iter()
+        .position(|a| *a <= BigRational::from_integer(0.into()))
+    {
+        return fail(format!("field \"weights[{i}]\": weights must be positive"));
+    }
+    let form = match doc.get("objective") {
+        None => Objective::Exact,
+        Some(Value::String(s)) if s == "exact" => Objective::Exact,
+        Some(Value::String(s)) if s == "approx" => Objective::Approximate,
+        Some(other) => {
+            return fail(format!(
+                "field \"objective\": expected \"exact\" or \"approx\", found {other}"
+            ))
+        }
+    };
+    let z = (0..k)
+        .map(|c| points.iter().map(|p| p[c].clone()).collect())
+        .collect();
+    Ok(MarinInput { z, alpha, form })
+}
+
+/// Chord-length spacing (Eq. 5) in `T`.
+fn chord<T: Real>(z: &[Vec<T>]) -> Vec<T> {
+    let ctx = z[0][0].ctx();
+    let d: Vec<T> = (1..z[0].len())
+        .map(|i| {
+            z.iter()
+                .fold(T::zero_in(&ctx), |acc, c| {
+                    acc + &((c[i].clone() - &c[i - 1]) * &(c[i].clone() - &c[i - 1]))
+                })
+                .sqrt()
+        })
+        .collect();
+    let total = d.iter().fold(T::zero_in(&ctx), |a, x| a + x);
+    d.iter().map(|x| x.clone() / &total).collect()
+}
+
+/// `run marin`: the minimizing parametrization of K-dimensional points (gradient projection
+/// from chord length, then Newton's method in the chosen number type).
+pub fn run_marin(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, InputError> {
+    let data = read_marin(doc)?;
+    let spline_error =
+        |e: crate::param::natural::SplineError| InputError(format!("field \"points\": {e}"));
+    // The descent runs in f64: it only has to land in Newton's basin.
+    let z64: Vec<Vec<f64>> = data
+        .z
+        .iter()
+        .map(|c| c.iter().map(Field::to_f64).collect())
+        .collect();
+    let a64: Vec<f64> = data.alpha.iter().map(Field::to_f64).collect();
+    let rough = gradient_projection(chord(&z64), &z64, &a64, data.form, &1e-6, 5000)
+        .map_err(spline_error)?;
+    let finish = |ctx_bits: Option<u32>| -> Result<Out<Float>, InputError> {
+        let bits = ctx_bits.unwrap_or(53);
+        let z: Vec<Vec<Float>> = data
+            .z
+            .iter()
+            .map(|c| c.iter().map(|q| Float::from_rational(q, &bits)).collect())
+            .collect();
+        let a: Vec<Float> = data
+            .alpha
+            .iter()
+            .map(|q| Float::from_rational(q, &bits))
+            .collect();
+        let start: Vec<Float> = rough.h.iter().map(|x| Float::with_val(bits, *x)).collect();
+        let h = newton_polish(start, &z, &a, data.form, 60).map_err(spline_error)?;
+        let g = objective(&h, &z, &a, data.form).map_err(spline_error)?;
+        let g_chord = objective(&chord(&z), &z, &a, data.form).map_err(spline_error)?;
+        Ok(Out::object(vec![
+            ("t", Out::nums(knots_from_spacing(&h, &bits))),
+            ("G", Out::Num(g)),
+            ("G_chord", Out::Num(g_chord)),
+        ]))
+    };
+    let extra = |out: Out<Float>| {
+        out.with_field("iterations", Out::Int(rough.iterations as i64))
+            .with_field("descent_converged", Out::Text(rough.converged.to_string()))
+            .with_field(
+                "objective",
+                Out::Text(
+                    if data.form == Objective::Exact {
+                        "exact (Eq. 31)"
+                    } else {
+                        "approx (Eq. 34)"
+                    }
+                    .into(),
+                ),
+            )
+            .with_field("scalar", Out::Text(scalar.to_string()))
+    };
+    Ok(match scalar {
+        ScalarKind::Rational => {
+            return fail(
+                "option --scalar: the minimizer is irrational in general; use f64 or mpfr:<bits>",
+            )
+        }
+        // f64: the same Newton refinement at 53 bits, printed as doubles.
+        ScalarKind::F64 => {
+            let out = finish(None)?;
+            let as_f64 = |o: &Out<Float>| -> Out<f64> { to_f64_tree(o) };
+            Rendered::plain(extra_f64(as_f64(&out), &rough, data.form))
+        }
+        ScalarKind::Mpfr(bits) => {
+            Rendered::certified(extra(finish(Some(bits))?), extra(finish(Some(2 * bits))?))
+        }
+    })
+}
+
+fn to_f64_tree(o: &Out<Float>) -> Out<f64> {
+    match o {
+        Out::Num(x) => Out::Num(x.to_f64()),
+        Out::List(v) => Out::List(v.iter().map(to_f64_tree).collect()),
+        Out::Object(f) => Out::Object(f.iter().map(|(k, v)| (k.clone(), to_f64_tree(v))).collect()),
+        Out::Int(i) => Out::Int(*i),
+        Out::Text(s) => Out::Text(s.clone()),
+        Out::F64(x) => Out::F64(*x),
+        Out::Null => Out::Null,
+    }
+}
+
+fn extra_f64(
+    out: Out<f64>,
+    rough: &crate::param::descent::Descent<f64>,
+    form: Objective,
+) -> Out<f64> {
+    out.with_field("iterations", Out::Int(rough.iterations as i64))
+        .with_field("descent_converged", Out::Text(rough.converged.to_string()))
+        .with_field(
+            "objective",
+            Out::Text(
+                if form == Objective::Exact {
+                    "exact (Eq. 31)"
+                } else {
+                    "approx (Eq. 34)"
+                }
+                .into(),
+            ),
+        )
+        .with_field("scalar", Out::Text("f64".into()))
+}
