@@ -2,13 +2,14 @@
 //! Interpolation Problems*, J. Approx. Theory (1984).
 //!
 //! Claims checked so far: the exact 1-D minimizers (case I, Table I, Eqs. 8 and 11,
-//! Corollaries 2 and 3) and the plane-curve example (Table III, the second-derivative
-//! comparison of Figs. 3–5). The robot example (Tables IV–VII), the corner example (Fig. 6) and
-//! the H¹ inequality of Sec. 1 are not yet in the ledger (issue 5 continues).
+//! Corollaries 2 and 3), the plane-curve example (Table III, the second-derivative comparison
+//! of Figs. 3–5) and the robot example (Tables VI–VII). The corner example (Fig. 6) and the H¹
+//! inequality of Sec. 1 are not yet in the ledger (issue 5 continues).
 
 pub mod data;
 mod one_d;
 mod plane;
+mod robot;
 
 use super::{ClaimSpec, Ledger, Paper, PaperOutput};
 use crate::report::claims_section;
@@ -30,6 +31,11 @@ pub const SPECS: &[ClaimSpec] = &[
     ClaimSpec { id: "marin.table3.exact", location: "Table III, column t^EX; Eqs. 30–31", statement: "the minimizing parametrization of the Table II data with the exact objective (31)", published: Some("Table III, column t_i^EX") },
     ClaimSpec { id: "marin.table3.approx", location: "Table III, column t^AP; Eqs. 30, 34", statement: "the minimizing parametrization of the Table II data with the approximate objective (34)", published: Some("Table III, column t_i^AP") },
     ClaimSpec { id: "marin.fig3_5.second_derivatives", location: "Sec. 3, Figs. 3–5", statement: "the minimizing parametrizations substantially reduce the second derivatives of both components compared with chord length", published: None },
+    ClaimSpec { id: "marin.table6.chord_6d", location: "Table VI, column t^CL; Eq. 5", statement: "normalized accumulated chord length of the six-dimensional axis data of Table IV", published: Some("Table VI, column t_i^CL") },
+    ClaimSpec { id: "marin.table6.chord_wc", location: "Table VI, column t^WC; Eq. 5", statement: "normalized accumulated chord length of the work-centre positions of Table V", published: Some("Table VI, column t_i^WC") },
+    ClaimSpec { id: "marin.table6.approx", location: "Table VI, column t^AP; Eqs. 30, 34", statement: "the minimizing parametrization of the axis data with objective (34) and α = 1, 1, 2, 6, 6, 6", published: Some("Table VI, column t_i^AP") },
+    ClaimSpec { id: "marin.table7.max_acceleration", location: "Table VII", statement: "the maximum second derivative of each axis' natural cubic spline for each parametrization", published: Some("Table VII (18 values)") },
+    ClaimSpec { id: "marin.table7.reduction", location: "Sec. 3, after Table VII", statement: "reduction by a factor of two or more was obtained on five of the six axes", published: Some("five of the six axes") },
 ];
 
 pub fn paper() -> Paper {
@@ -54,10 +60,12 @@ pub fn verify() -> PaperOutput {
     let mut figures = Vec::new();
     let mut md = format!(
         "# {TITLE}\n\nPaper id `{ID}`; claim ids start with `{SHORT}.`. Regenerate with `trajverify verify --paper {SHORT}`.\n\n\
-         Not yet checked (issue 5 continues): Tables IV–VII (robot example), Fig. 6 (corner example), the H¹ inequality of Sec. 1.\n\n"
+         Not yet checked (issue 5 continues): Fig. 6 (corner example), the H¹ inequality of Sec. 1, Figs. 8–9 (Fig. 8 needs the \
+         manipulator's kinematics, which the paper does not give).\n\n"
     );
     one_d::section(&mut ledger, &mut md, &mut figures);
     plane::section(&mut ledger, &mut md, &mut figures);
+    robot::section(&mut ledger, &mut md);
     let claims = ledger.finish();
     md.push_str(&claims_section(&claims));
     PaperOutput {
