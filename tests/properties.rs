@@ -160,3 +160,35 @@ mod bspline {
         }
     }
 }
+
+mod parametrization {
+    use super::*;
+    use trajverify::param::objective::{objective, Objective};
+    use trajverify::param::one_d::minimizing_parametrization;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(32))]
+
+        /// The exact 1-D minimizer (any case) is not beaten by random perturbations of its spacing.
+        #[test]
+        fn exact_minimizer_beats_perturbations(steps in prop::collection::vec((1i64..20, any::<bool>()), 3..9), kicks in prop::collection::vec(-100i64..100, 9)) {
+            let mut z = vec![q(0, 1)];
+            for (s, up) in &steps {
+                let next = z[z.len() - 1].clone() + if *up { q(*s, 10) } else { q(-*s, 10) };
+                z.push(next);
+            }
+            let zf: Vec<Float> = z.iter().map(|x| Float::from_rational(x, &128)).collect();
+            let (t, _) = minimizing_parametrization(&zf).unwrap();
+            let h: Vec<Float> = t.windows(2).map(|w| w[1].clone() - &w[0]).collect();
+            let one = [Float::with_val(128, 1)];
+            let best = objective(&h, std::slice::from_ref(&zf), &one, Objective::Exact).unwrap();
+            // Perturb along a direction with zero sum, small enough to keep every spacing positive.
+            let n = h.len();
+            let mean = kicks[..n].iter().sum::<i64>() as f64 / n as f64;
+            let min_h = h.iter().map(|x| x.to_f64()).fold(f64::INFINITY, f64::min);
+            let moved: Vec<Float> = h.iter().enumerate().map(|(i, x)| x.clone() + (kicks[i] as f64 - mean) * min_h * 1e-3).collect();
+            let other = objective(&moved, std::slice::from_ref(&zf), &one, Objective::Exact).unwrap();
+            prop_assert!(best <= other, "{} > {}", best.to_f64(), other.to_f64());
+        }
+    }
+}

@@ -238,10 +238,19 @@ pub fn run_marin(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendere
         let h = newton_polish(start, &z, &a, data.form, 60).map_err(spline_error)?;
         let g = objective(&h, &z, &a, data.form).map_err(spline_error)?;
         let g_chord = objective(&chord(&z), &z, &a, data.form).map_err(spline_error)?;
+        let p = crate::param::gradient::project(
+            &crate::param::gradient::gradient(&h, &z, &a, data.form).map_err(spline_error)?,
+        );
+        let norm = p
+            .iter()
+            .fold(Float::with_val(bits, 0), |acc, x| acc + x.clone() * x)
+            .sqrt();
         Ok(Out::object(vec![
             ("t", Out::nums(knots_from_spacing(&h, &bits))),
             ("G", Out::Num(g)),
             ("G_chord", Out::Num(g_chord)),
+            // ‖π_B(∇G)‖ at the result: the stopping rule's quantity, at the working precision after Newton.
+            ("projected_gradient_norm", Out::F64(norm.to_f64())),
         ]))
     };
     let extra = |out: Out<Float>| {

@@ -83,6 +83,39 @@ mod tests {
     }
 
     #[test]
+    fn matches_central_differences_in_mpfr() {
+        use crate::scalar::Float;
+        let f = |v: f64| Float::with_val(256, v);
+        let h: Vec<Float> = [0.2, 0.3, 0.1, 0.4].iter().map(|&v| f(v)).collect();
+        let z = vec![[0.0, 1.0, -0.5, 2.0, 1.0]
+            .iter()
+            .map(|&v| f(v))
+            .collect::<Vec<_>>()];
+        let alpha = [f(1.0)];
+        // Error budget of a central difference at 256 bits (ε ≈ 1.7e-77): rounding ε·|G|/(s·|G′|)
+        // plus truncation s²·|G‴|/(6|G′|), smallest near s ≈ ε^(1/3) ≈ 1e-26, where both are far
+        // below 1e-40. A wrong formula would differ at order one.
+        let step = Float::with_val(256, 1e-26);
+        for form in [Objective::Exact, Objective::Approximate] {
+            let g = gradient(&h, &z, &alpha, form).unwrap();
+            for (k, gk) in g.iter().enumerate() {
+                let shifted = |s: &Float| -> Float {
+                    let mut hk = h.clone();
+                    hk[k] += s;
+                    objective(&hk, &z, &alpha, form).unwrap()
+                };
+                let central = (shifted(&step) - shifted(&-step.clone())) / (step.clone() * 2u32);
+                let rel = ((central - gk) / gk).abs();
+                assert!(
+                    rel < 1e-40,
+                    "{form:?} k = {k}: relative difference {}",
+                    rel.to_f64()
+                );
+            }
+        }
+    }
+
+    #[test]
     fn matches_dual_number_derivative_exactly() {
         let h = vec![q(1, 5), q(3, 10), q(1, 10), q(2, 5)];
         let z = vec![

@@ -3,10 +3,11 @@
 //!
 //! Claims checked so far: the exact 1-D minimizers (case I, Table I, Eqs. 8 and 11,
 //! Corollaries 2 and 3), the plane-curve example (Table III, the second-derivative comparison
-//! of Figs. 3–5) and the robot example (Tables VI–VII). The corner example (Fig. 6) and the H¹
-//! inequality of Sec. 1 are not yet in the ledger (issue 5 continues).
+//! of Figs. 3–5), the robot example (Tables VI–VII), the corner example (Fig. 6) and the H¹
+//! inequality of Sec. 1.
 
 pub mod data;
+mod geometry;
 mod one_d;
 mod plane;
 mod robot;
@@ -21,6 +22,7 @@ pub const SHORT: &str = "marin";
 pub const TITLE: &str = "Marin, An Approach to Data Parametrization in Parametric Cubic Spline Interpolation Problems, J. Approx. Theory (1984)";
 
 pub const SPECS: &[ClaimSpec] = &[
+    ClaimSpec { id: "marin.sec1.h1_inequality", location: "Sec. 1 (i)", statement: "‖θ − φ‖²_H¹ = ∫(e² + e'²) ≤ ∫θ''² for each component, φ the piecewise linear interpolant", published: None },
     ClaimSpec { id: "marin.case1.chord_length", location: "Sec. 2, case I, Eq. 7", statement: "for strictly monotone data the minimizing parametrization is normalized accumulated chord length, θ is linear and G = 0", published: None },
     ClaimSpec { id: "marin.table1.t_star", location: "Table I, Eq. 9, Corollary 1", statement: "the minimizing parametrization of the Table I ordinates", published: Some("Table I, column t_i*") },
     ClaimSpec { id: "marin.eq8.interior_slope", location: "Sec. 2, Lemma, Eq. 8", statement: "at the minimizing parametrization of alternating data, dθ/dt(t_i*) = 0 at every interior knot", published: None },
@@ -31,6 +33,7 @@ pub const SPECS: &[ClaimSpec] = &[
     ClaimSpec { id: "marin.table3.exact", location: "Table III, column t^EX; Eqs. 30–31", statement: "the minimizing parametrization of the Table II data with the exact objective (31)", published: Some("Table III, column t_i^EX") },
     ClaimSpec { id: "marin.table3.approx", location: "Table III, column t^AP; Eqs. 30, 34", statement: "the minimizing parametrization of the Table II data with the approximate objective (34)", published: Some("Table III, column t_i^AP") },
     ClaimSpec { id: "marin.fig3_5.second_derivatives", location: "Sec. 3, Figs. 3–5", statement: "the minimizing parametrizations substantially reduce the second derivatives of both components compared with chord length", published: None },
+    ClaimSpec { id: "marin.fig6.corner", location: "Sec. 3, Fig. 6", statement: "with widely spaced data near a corner, chord length gives oscillations whose amplitude the minimizing parametrization reduces", published: None },
     ClaimSpec { id: "marin.table6.chord_6d", location: "Table VI, column t^CL; Eq. 5", statement: "normalized accumulated chord length of the six-dimensional axis data of Table IV", published: Some("Table VI, column t_i^CL") },
     ClaimSpec { id: "marin.table6.chord_wc", location: "Table VI, column t^WC; Eq. 5", statement: "normalized accumulated chord length of the work-centre positions of Table V", published: Some("Table VI, column t_i^WC") },
     ClaimSpec { id: "marin.table6.approx", location: "Table VI, column t^AP; Eqs. 30, 34", statement: "the minimizing parametrization of the axis data with objective (34) and α = 1, 1, 2, 6, 6, 6", published: Some("Table VI, column t_i^AP") },
@@ -60,11 +63,12 @@ pub fn verify() -> PaperOutput {
     let mut figures = Vec::new();
     let mut md = format!(
         "# {TITLE}\n\nPaper id `{ID}`; claim ids start with `{SHORT}.`. Regenerate with `trajverify verify --paper {SHORT}`.\n\n\
-         Not yet checked (issue 5 continues): Fig. 6 (corner example), the H¹ inequality of Sec. 1, Figs. 8–9 (Fig. 8 needs the \
-         manipulator's kinematics, which the paper does not give).\n\n"
+         Not drawn: Fig. 8, which needs the manipulator's kinematics (the paper does not give them).\n\n"
     );
+    geometry::h1_inequality(&mut ledger, &mut md);
     one_d::section(&mut ledger, &mut md, &mut figures);
     plane::section(&mut ledger, &mut md, &mut figures);
+    geometry::corner(&mut ledger, &mut md, &mut figures);
     robot::section(&mut ledger, &mut md);
     let claims = ledger.finish();
     md.push_str(&claims_section(&claims));

@@ -292,6 +292,14 @@ pub fn section(ledger: &mut Ledger, md: &mut String, figures: &mut Vec<(String, 
         ),
     );
     md.push_str(&format!("\n![Fig. 2](./{ID}_fig2.svg)\n\n"));
+    for (n, (name, t)) in param.iter().enumerate() {
+        let file = format!("{ID}_fig{}.svg", n + 3);
+        md.push_str(&format!(
+            "![Fig. {}: components with {name}](./{file})\n\n",
+            n + 3
+        ));
+        figures.push((file, component_figure(name, t, &z64)));
+    }
     if let Some(ex) = &columns[0] {
         figures.push((
             format!("{ID}_fig2.svg"),
@@ -301,6 +309,47 @@ pub fn section(ledger: &mut Ledger, md: &mut String, figures: &mut Vec<(String, 
             ),
         ));
     }
+}
+
+/// Figs. 3–5: x, x', x'' and y, y', y'' against t for one parametrization.
+fn component_figure(name: &str, t: &[f64], z: &[Vec<f64>]) -> String {
+    let mut panels = Vec::new();
+    for (c, comp) in ["x", "y"].iter().enumerate() {
+        let Ok(s) = NaturalCubicSpline::new(t.to_vec(), z[c].clone()) else {
+            return String::new();
+        };
+        let grid: Vec<[f64; 3]> = (0..=600).map(|k| s.eval_all(&(k as f64 / 600.0))).collect();
+        for (j, label) in ["", "'", "''"].iter().enumerate() {
+            let mut series = vec![Series::new(
+                "",
+                (0..=600).map(|k| (k as f64 / 600.0, grid[k][j])).collect(),
+                Style::Solid,
+                c + 1,
+            )];
+            if j == 0 {
+                series.push(Series::new(
+                    "data",
+                    t.iter().copied().zip(z[c].iter().copied()).collect(),
+                    Style::Markers,
+                    2,
+                ));
+            }
+            let legend = if c == 0 {
+                Corner::LowerLeft
+            } else {
+                Corner::UpperRight
+            };
+            panels.push(Panel {
+                title: format!("{comp}{label}(t), {name}"),
+                x_label: "t".into(),
+                y_label: format!("{comp}{label}"),
+                series,
+                legend,
+                ..Panel::default()
+            });
+        }
+    }
+    plot::render(&panels, (2, 3), (1200, 640)).unwrap_or_default()
 }
 
 fn figure2(t: &[f64], z: &[Vec<f64>]) -> String {
