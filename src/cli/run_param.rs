@@ -5,7 +5,7 @@ use super::output::Out;
 use super::Rendered;
 use crate::param::descent::{gradient_projection, newton_polish};
 use crate::param::natural::NaturalCubicSpline;
-use crate::param::objective::{knots_from_spacing, objective, Objective};
+use crate::param::objective::{chord_length_spacing, knots_from_spacing, objective, Objective};
 use crate::param::one_d::{
     chord_length_1d, classify, minimizing_parametrization, Case, ParamError,
 };
@@ -191,22 +191,6 @@ fn read_marin(doc: &Map<String, Value>) -> Result<MarinInput, InputError> {
     Ok(MarinInput { z, alpha, form })
 }
 
-/// Chord-length spacing (Eq. 5) in `T`.
-fn chord<T: Real>(z: &[Vec<T>]) -> Vec<T> {
-    let ctx = z[0][0].ctx();
-    let d: Vec<T> = (1..z[0].len())
-        .map(|i| {
-            z.iter()
-                .fold(T::zero_in(&ctx), |acc, c| {
-                    acc + &((c[i].clone() - &c[i - 1]) * &(c[i].clone() - &c[i - 1]))
-                })
-                .sqrt()
-        })
-        .collect();
-    let total = d.iter().fold(T::zero_in(&ctx), |a, x| a + x);
-    d.iter().map(|x| x.clone() / &total).collect()
-}
-
 /// `run marin`: the minimizing parametrization of K-dimensional points (gradient projection
 /// from chord length, then Newton's method in the chosen number type).
 pub fn run_marin(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, InputError> {
@@ -220,8 +204,15 @@ pub fn run_marin(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendere
         .map(|c| c.iter().map(Field::to_f64).collect())
         .collect();
     let a64: Vec<f64> = data.alpha.iter().map(Field::to_f64).collect();
-    let rough = gradient_projection(chord(&z64), &z64, &a64, data.form, &1e-6, 5000)
-        .map_err(spline_error)?;
+    let rough = gradient_projection(
+        chord_length_spacing(&z64),
+        &z64,
+        &a64,
+        data.form,
+        &1e-6,
+        5000,
+    )
+    .map_err(spline_error)?;
     let finish = |ctx_bits: Option<u32>| -> Result<Out<Float>, InputError> {
         let bits = ctx_bits.unwrap_or(53);
         let z: Vec<Vec<Float>> = data
@@ -237,7 +228,8 @@ pub fn run_marin(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendere
         let start: Vec<Float> = rough.h.iter().map(|x| Float::with_val(bits, *x)).collect();
         let h = newton_polish(start, &z, &a, data.form, 60).map_err(spline_error)?;
         let g = objective(&h, &z, &a, data.form).map_err(spline_error)?;
-        let g_chord = objective(&chord(&z), &z, &a, data.form).map_err(spline_error)?;
+        let g_chord =
+            objective(&chord_length_spacing(&z), &z, &a, data.form).map_err(spline_error)?;
         let p = crate::param::gradient::project(
             &crate::param::gradient::gradient(&h, &z, &a, data.form).map_err(spline_error)?,
         );

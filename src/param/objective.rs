@@ -65,3 +65,23 @@ pub fn objective<T: Field>(
     }
     Ok(total)
 }
+
+/// Normalized accumulated chord length (Eq. 5) as a spacing h: hᵢ = dᵢ / Σⱼ dⱼ with dᵢ the
+/// Euclidean distance between points i−1 and i, the points given by their `components`
+/// (z[l][i] is coordinate l of point i).
+pub fn chord_length_spacing<T: crate::scalar::Real>(components: &[Vec<T>]) -> Vec<T> {
+    let ctx = components[0][0].ctx();
+    let n = components[0].len();
+    let d: Vec<T> = (1..n)
+        .map(|i| {
+            let mut sq = T::zero_in(&ctx);
+            for c in components {
+                let delta = c[i].clone() - &c[i - 1];
+                sq.mul_add_assign(&delta, &delta);
+            }
+            sq.sqrt()
+        })
+        .collect();
+    let total = d.iter().fold(T::zero_in(&ctx), |a, x| a + x);
+    d.iter().map(|x| x.clone() / &total).collect()
+}

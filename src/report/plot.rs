@@ -108,6 +108,15 @@ pub fn render(
     Ok(svg)
 }
 
+/// [`render`], or on failure a one-line SVG that says why (so a report never lacks its file).
+pub fn render_or_note(panels: &[Panel], layout: (usize, usize), size: (u32, u32)) -> String {
+    render(panels, layout, size).unwrap_or_else(|e| {
+        format!(
+            "<svg xmlns=\"http://www.w3.org/2000/svg\"><text x=\"10\" y=\"20\">{e}</text></svg>\n"
+        )
+    })
+}
+
 fn transformed(panel: &Panel, points: &[(f64, f64)]) -> Vec<(f64, f64)> {
     points
         .iter()

@@ -58,14 +58,6 @@ fn figure_name(n: u32) -> String {
     format!("{ID}_fig{n}.svg")
 }
 
-fn render(panels: &[Panel], layout: (usize, usize), size: (u32, u32)) -> String {
-    plot::render(panels, layout, size).unwrap_or_else(|e| {
-        format!(
-            "<svg xmlns=\"http://www.w3.org/2000/svg\"><text x=\"10\" y=\"20\">{e}</text></svg>\n"
-        )
-    })
-}
-
 /// Run every check of paper 002 and build its report.
 pub fn verify() -> PaperOutput {
     let mut ledger = Ledger::new(ID, SPECS);
@@ -152,7 +144,7 @@ pub fn verify() -> PaperOutput {
     ));
     figures.push((
         figure_name(1),
-        render(&fig1_panels(&printed, &exact_u), (1, 2), (1100, 420)),
+        plot::render_or_note(&fig1_panels(&printed, &exact_u), (1, 2), (1100, 420)),
     ));
     ledger.record("bspline.sec41.switching_times", times);
     ledger.record("bspline.sec41.uniqueness", unique);
@@ -232,7 +224,7 @@ pub fn verify() -> PaperOutput {
             md.push_str(&format!("\n![Fig. 3](./{})\n\n", figure_name(3)));
             figures.push((
                 figure_name(3),
-                render(&fig3_panels(&planar), (1, 1), (760, 620)),
+                plot::render_or_note(&fig3_panels(&planar), (1, 1), (760, 620)),
             ));
             ledger.record(
                 "bspline.sec6.reconstruction",

@@ -91,7 +91,7 @@ pub fn verify() -> PaperOutput {
     md.push_str(&format!("\n![Fig. 2](./{})\n\n", figure_name(2)));
     figures.push((
         figure_name(2),
-        render(&fig2_panels(&fast_curve, &slow_curve), (1, 3), (1200, 380)),
+        plot::render_or_note(&fig2_panels(&fast_curve, &slow_curve), (1, 3), (1200, 380)),
     ));
     ledger.record("hermite.fig2.control_points.t1", fast);
     ledger.record("hermite.fig2.control_points.t2", slow);
@@ -163,7 +163,7 @@ pub fn verify() -> PaperOutput {
             md.push_str(&format!("\n![Fig. 3](./{})\n\n", figure_name(3)));
             figures.push((
                 figure_name(3),
-                render(&examples::turn_figure(&metrics), (1, 1), (640, 640)),
+                plot::render_or_note(&examples::turn_figure(&metrics), (1, 1), (640, 640)),
             ));
             let [short, nominal, long] = examples::turn_claims(&metrics);
             ledger.record("hermite.fig3.short_is_straight", short);
@@ -201,7 +201,7 @@ pub fn verify() -> PaperOutput {
             ));
             figures.push((
                 figure_name(4),
-                render(&examples::landing_figure(&l), (1, 2), (1100, 420)),
+                plot::render_or_note(&examples::landing_figure(&l), (1, 2), (1100, 420)),
             ));
             ledger.record("hermite.fig4.landing_constraints", claim);
         }
@@ -213,7 +213,7 @@ pub fn verify() -> PaperOutput {
     md.push_str(&fig5_section(&rows));
     figures.push((
         figure_name(5),
-        render(&fig5_panels(&rows), (1, 1), (900, 560)),
+        plot::render_or_note(&fig5_panels(&rows), (1, 1), (900, 560)),
     ));
     let [kappa_table, grows, interval] = conditioning::claims(&rows);
     ledger.record("hermite.fig5.kappa_table", kappa_table);
@@ -229,14 +229,6 @@ pub fn verify() -> PaperOutput {
         markdown: md,
         figures,
     }
-}
-
-fn render(panels: &[Panel], layout: (usize, usize), size: (u32, u32)) -> String {
-    plot::render(panels, layout, size).unwrap_or_else(|e| {
-        format!(
-            "<svg xmlns=\"http://www.w3.org/2000/svg\"><text x=\"10\" y=\"20\">{e}</text></svg>\n"
-        )
-    })
 }
 
 fn fig2_panels(

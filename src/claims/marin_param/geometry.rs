@@ -6,7 +6,7 @@ use super::data::{TABLE1, TABLE2, TABLE4};
 use super::{num, ID};
 use crate::param::descent::{gradient_projection, newton_polish};
 use crate::param::natural::NaturalCubicSpline;
-use crate::param::objective::{knots_from_spacing, Objective};
+use crate::param::objective::{chord_length_spacing, knots_from_spacing, Objective};
 use crate::param::one_d::minimizing_parametrization;
 use crate::report::plot::{self, Corner, Panel, Series, Style};
 use crate::report::table;
@@ -65,23 +65,9 @@ fn rationals(v: &[&str]) -> Vec<Float> {
         .collect()
 }
 
-/// Chord-length knots of points (components given separately).
+/// Chord-length knots (Eq. 5) of points given by their components.
 fn chord(z: &[Vec<Float>]) -> Vec<Float> {
-    let n = z[0].len();
-    let d: Vec<Float> = (1..n)
-        .map(|i| {
-            z.iter()
-                .fold(Float::with_val(BITS, 0), |acc, c| {
-                    acc + (c[i].clone() - &c[i - 1]).square()
-                })
-                .sqrt()
-        })
-        .collect();
-    let total = d.iter().fold(Float::with_val(BITS, 0), |a, x| a + x);
-    knots_from_spacing(
-        &d.iter().map(|x| x.clone() / &total).collect::<Vec<_>>(),
-        &BITS,
-    )
+    knots_from_spacing(&chord_length_spacing(z), &BITS)
 }
 
 /// The exact-objective minimizer (gradient projection in f64 from chord length, Newton at BITS).

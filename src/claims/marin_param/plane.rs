@@ -6,11 +6,11 @@ use super::one_d::rounds_to;
 use super::{num, ID};
 use crate::param::descent::{gradient_projection_observed, newton_polish};
 use crate::param::natural::NaturalCubicSpline;
-use crate::param::objective::{knots_from_spacing, Objective};
+use crate::param::objective::{chord_length_spacing, knots_from_spacing, Objective};
 use crate::report::plot::{self, Corner, Panel, Series, Style};
 use crate::report::table;
 use crate::scalar::certify::{certify, format_float_digits, Certified};
-use crate::scalar::{Field, Float, Real};
+use crate::scalar::{Field, Float};
 
 /// The two components (x, y) in a number type.
 fn components<T: Field>(ctx: &T::Ctx) -> Vec<Vec<T>> {
@@ -24,22 +24,6 @@ fn components<T: Field>(ctx: &T::Ctx) -> Vec<Vec<T>> {
             .map(|(_, y)| T::from_rational(&num(y), ctx))
             .collect(),
     ]
-}
-
-/// Normalized accumulated chord length spacing (Eq. 5).
-fn chord_spacing<T: Real>(z: &[Vec<T>]) -> Vec<T> {
-    let ctx = z[0][0].ctx();
-    let d: Vec<T> = (1..z[0].len())
-        .map(|i| {
-            z.iter()
-                .fold(T::zero_in(&ctx), |acc, c| {
-                    acc + &((c[i].clone() - &c[i - 1]) * &(c[i].clone() - &c[i - 1]))
-                })
-                .sqrt()
-        })
-        .collect();
-    let total = d.iter().fold(T::zero_in(&ctx), |a, x| a + x);
-    d.iter().map(|x| x.clone() / &total).collect()
 }
 
 /// A parametrization certified at two precisions, with the closest gradient-projection iterate.
@@ -68,7 +52,7 @@ fn max_dev(t: &[f64], printed: &[&str]) -> f64 {
 fn minimize(form: Objective, col: usize, name: &'static str) -> Option<Column> {
     let z64 = components::<f64>(&());
     let alpha = [1.0, 1.0];
-    let h0 = chord_spacing(&z64);
+    let h0 = chord_length_spacing(&z64);
     let target = printed(col);
     let mut closest: Option<(usize, f64)> = None;
     let mut observe = |i: usize, h: &[f64]| {
@@ -122,7 +106,8 @@ fn fmt(x: f64, d: u32) -> String {
 pub fn section(ledger: &mut Ledger, md: &mut String, figures: &mut Vec<(String, String)>) {
     md.push_str("## Table III: parametrizations of the Table II plane data\n\n");
     // Chord length, certified.
-    let cl = |bits: u32| knots_from_spacing(&chord_spacing(&components::<Float>(&bits)), &bits);
+    let cl =
+        |bits: u32| knots_from_spacing(&chord_length_spacing(&components::<Float>(&bits)), &bits);
     let (cl_lo, cl_hi) = (cl(128), cl(256));
     let chord_digits = cl_lo
         .iter()

@@ -6,7 +6,7 @@ use super::num;
 use super::one_d::rounds_to;
 use crate::param::descent::{gradient_projection, newton_polish};
 use crate::param::natural::NaturalCubicSpline;
-use crate::param::objective::{knots_from_spacing, Objective};
+use crate::param::objective::{chord_length_spacing, knots_from_spacing, Objective};
 use crate::report::table;
 use crate::scalar::certify::format_float_digits;
 use crate::scalar::{Field, Float, Real};
@@ -18,24 +18,12 @@ fn points<T: Field, const K: usize>(rows: &[[&str; K]], ctx: &T::Ctx) -> Vec<Vec
         .collect()
 }
 
-/// Normalized accumulated chord length (Eq. 5) of points.
+/// Normalized accumulated chord length knots (Eq. 5) of points given row by row.
 fn chord<T: Real>(p: &[Vec<T>]) -> Vec<T> {
-    let ctx = p[0][0].ctx();
-    let d: Vec<T> = (1..p.len())
-        .map(|i| {
-            p[i].iter()
-                .zip(&p[i - 1])
-                .fold(T::zero_in(&ctx), |acc, (a, b)| {
-                    acc + &((a.clone() - b) * &(a.clone() - b))
-                })
-                .sqrt()
-        })
+    let components: Vec<Vec<T>> = (0..p[0].len())
+        .map(|c| p.iter().map(|row| row[c].clone()).collect())
         .collect();
-    let total = d.iter().fold(T::zero_in(&ctx), |a, x| a + x);
-    knots_from_spacing(
-        &d.iter().map(|x| x.clone() / &total).collect::<Vec<_>>(),
-        &ctx,
-    )
+    knots_from_spacing(&chord_length_spacing(&components), &p[0][0].ctx())
 }
 
 fn printed(col: usize) -> Vec<&'static str> {
