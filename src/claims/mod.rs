@@ -173,6 +173,16 @@ impl Ledger {
     }
 }
 
+/// The opening of a paper's Markdown report: title, id, claim prefix, how to regenerate it.
+pub fn report_heading(id: &str, short: &str, title: &str) -> String {
+    format!("# {title}\n\nPaper id `{id}`; claim ids start with `{short}.`. Regenerate with `trajverify verify --paper {short}`.\n\n")
+}
+
+/// The file name of figure `n` of paper `id`, written next to its report.
+pub fn figure_file(id: &str, n: u32) -> String {
+    format!("{id}_fig{n}.svg")
+}
+
 /// Everything one paper's verification produces.
 pub struct PaperOutput {
     pub claims: Vec<Claim>,

@@ -207,17 +207,7 @@ pub fn newton_polish<T: Real>(
         let g = gradient(&h, z, alpha, form)?;
         let mut hessian = Matrix::zeros(n + 1, n + 1, &ctx);
         for k in 0..n {
-            let hd: Vec<Dual<T>> = h
-                .iter()
-                .enumerate()
-                .map(|(i, x)| {
-                    if i == k {
-                        Dual::variable(x.clone())
-                    } else {
-                        Dual::constant(x.clone())
-                    }
-                })
-                .collect();
+            let hd = Dual::seeded(&h, k);
             let column = gradient(&hd, &zd, &ad, form)?;
             for (i, c) in column.iter().enumerate() {
                 hessian[(i, k)] = c.du.clone();

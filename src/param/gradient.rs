@@ -126,17 +126,7 @@ mod tests {
         for form in [Objective::Exact, Objective::Approximate] {
             let g = gradient(&h, &z, &alpha, form).unwrap();
             for (k, gk) in g.iter().enumerate() {
-                let hd: Vec<Dual<BigRational>> = h
-                    .iter()
-                    .enumerate()
-                    .map(|(i, x)| {
-                        if i == k {
-                            Dual::variable(x.clone())
-                        } else {
-                            Dual::constant(x.clone())
-                        }
-                    })
-                    .collect();
+                let hd = Dual::seeded(&h, k);
                 let zd: Vec<Vec<Dual<BigRational>>> = z
                     .iter()
                     .map(|c| c.iter().cloned().map(Dual::constant).collect())

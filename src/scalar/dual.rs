@@ -27,6 +27,25 @@ impl<T: Field> Dual<T> {
         let du = T::one_in(&re.ctx());
         Dual { re, du }
     }
+    /// The point `values` seeded for the partial derivative with respect to entry `k`: entry
+    /// k is a variable, every other entry a constant.
+    pub fn seeded(values: &[T], k: usize) -> Vec<Self> {
+        values
+            .iter()
+            .enumerate()
+            .map(|(i, x)| {
+                if i == k {
+                    Dual::variable(x.clone())
+                } else {
+                    Dual::constant(x.clone())
+                }
+            })
+            .collect()
+    }
+    /// Every entry as a constant.
+    pub fn constants(values: &[T]) -> Vec<Self> {
+        values.iter().cloned().map(Dual::constant).collect()
+    }
 }
 
 impl<T: Field> PartialOrd for Dual<T> {

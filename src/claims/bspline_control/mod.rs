@@ -55,14 +55,14 @@ pub fn paper() -> Paper {
 }
 
 fn figure_name(n: u32) -> String {
-    format!("{ID}_fig{n}.svg")
+    super::figure_file(ID, n)
 }
 
 /// Run every check of paper 002 and build its report.
 pub fn verify() -> PaperOutput {
     let mut ledger = Ledger::new(ID, SPECS);
     let mut figures = Vec::new();
-    let mut md = format!("# {TITLE}\n\nPaper id `{ID}`; claim ids start with `{SHORT}.`. Regenerate with `trajverify verify --paper {SHORT}`.\n\n");
+    let mut md = super::report_heading(ID, SHORT, TITLE);
 
     // Sec. 2: Table 1 and the basis.
     let (rows, t1) = basis::table1();

@@ -58,14 +58,14 @@ pub fn paper() -> Paper {
 }
 
 fn figure_name(n: u32) -> String {
-    format!("{ID}_fig{n}.svg")
+    super::figure_file(ID, n)
 }
 
 /// Run every check of paper 000 and build its report.
 pub fn verify() -> PaperOutput {
     let mut ledger = Ledger::new(ID, SPECS);
     let mut figures = Vec::new();
-    let mut md = format!("# {TITLE}\n\nPaper id `{ID}`; claim ids start with `{SHORT}.`. Regenerate with `trajverify verify --paper {SHORT}`.\n\n");
+    let mut md = super::report_heading(ID, SHORT, TITLE);
 
     // Fig. 2
     let (fast, fast_curve) = exact::fig2(1, FIG2_FAST);

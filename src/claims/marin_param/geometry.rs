@@ -260,7 +260,7 @@ pub fn corner(ledger: &mut Ledger, md: &mut String, figures: &mut Vec<(String, S
         ..Panel::default()
     };
     figures.push((
-        format!("{ID}_fig6.svg"),
+        super::super::figure_file(ID, 6),
         plot::render(&[panel], (1, 1), (640, 640)).unwrap_or_default(),
     ));
 }

@@ -61,10 +61,10 @@ pub(crate) fn num(s: &str) -> BigRational {
 pub fn verify() -> PaperOutput {
     let mut ledger = Ledger::new(ID, SPECS);
     let mut figures = Vec::new();
-    let mut md = format!(
-        "# {TITLE}\n\nPaper id `{ID}`; claim ids start with `{SHORT}.`. Regenerate with `trajverify verify --paper {SHORT}`.\n\n\
-         Not drawn: Fig. 8, which needs the manipulator's kinematics (the paper does not give them).\n\n"
-    );
+    let mut md = super::report_heading(ID, SHORT, TITLE);
+    md.push_str("Not drawn: Fig. 8, which needs the manipulator's kinematics (the paper does not give them).
+
+");
     geometry::h1_inequality(&mut ledger, &mut md);
     one_d::section(&mut ledger, &mut md, &mut figures);
     plane::section(&mut ledger, &mut md, &mut figures);

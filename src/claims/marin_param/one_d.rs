@@ -119,7 +119,7 @@ pub fn section(ledger: &mut Ledger, md: &mut String, figures: &mut Vec<(String, 
     ledger.record("marin.cor2.unique_minimizer", corollary_two());
     ledger.record("marin.cor3.properties", corollary_three());
     if let Ok(s) = spline {
-        figures.push((format!("{ID}_fig1.svg"), figure1(&s)));
+        figures.push((super::super::figure_file(ID, 1), figure1(&s)));
     }
 }
 

@@ -278,7 +278,7 @@ pub fn section(ledger: &mut Ledger, md: &mut String, figures: &mut Vec<(String, 
     );
     md.push_str(&format!("\n![Fig. 2](./{ID}_fig2.svg)\n\n"));
     for (n, (name, t)) in param.iter().enumerate() {
-        let file = format!("{ID}_fig{}.svg", n + 3);
+        let file = super::super::figure_file(ID, n as u32 + 3);
         md.push_str(&format!(
             "![Fig. {}: components with {name}](./{file})\n\n",
             n + 3
@@ -287,7 +287,7 @@ pub fn section(ledger: &mut Ledger, md: &mut String, figures: &mut Vec<(String, 
     }
     if let Some(ex) = &columns[0] {
         figures.push((
-            format!("{ID}_fig2.svg"),
+            super::super::figure_file(ID, 2),
             figure2(
                 &ex.exact.iter().map(Field::to_f64).collect::<Vec<_>>(),
                 &z64,
