@@ -26,6 +26,22 @@ pub(crate) fn rounds_to(x: &Float, printed: &str) -> bool {
     (x.clone() - &p).abs() <= half_unit
 }
 
+/// A computed column against a printed one: how many entries agree within half a unit of their
+/// last printed decimal, and the largest absolute difference.
+pub(crate) fn compare_with_printed(column: &[Float], printed: &[&str]) -> (usize, f64) {
+    let agree = column
+        .iter()
+        .zip(printed)
+        .filter(|(x, s)| rounds_to(x, s))
+        .count();
+    let dev = column
+        .iter()
+        .zip(printed)
+        .map(|(x, s)| (x.to_f64() - num(s).to_f64()).abs())
+        .fold(0.0, f64::max);
+    (agree, dev)
+}
+
 fn table1_z<T: Field>(ctx: &T::Ctx) -> Vec<T> {
     TABLE1
         .iter()

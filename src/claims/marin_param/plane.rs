@@ -2,7 +2,7 @@
 
 use super::super::{Ledger, Outcome, Verdict};
 use super::data::{TABLE2, TABLE3};
-use super::one_d::rounds_to;
+use super::one_d::compare_with_printed;
 use super::{num, ID};
 use crate::param::descent::{gradient_projection_observed, newton_polish};
 use crate::param::natural::NaturalCubicSpline;
@@ -88,14 +88,7 @@ fn minimize(form: Objective, col: usize, name: &'static str) -> Option<Column> {
 }
 
 fn compare(column: &[Float], col: usize) -> (usize, f64) {
-    let p = printed(col);
-    let agree = column
-        .iter()
-        .zip(&p)
-        .filter(|(x, s)| rounds_to(x, s))
-        .count();
-    let dev = max_dev(&column.iter().map(Field::to_f64).collect::<Vec<_>>(), &p);
-    (agree, dev)
+    compare_with_printed(column, &printed(col))
 }
 
 fn fmt(x: f64, d: u32) -> String {

@@ -3,7 +3,7 @@
 use super::super::{Ledger, Outcome, Verdict};
 use super::data::{ROBOT_ALPHA, TABLE4, TABLE5, TABLE6, TABLE7};
 use super::num;
-use super::one_d::rounds_to;
+use super::one_d::compare_with_printed;
 use crate::param::descent::{gradient_projection, newton_polish};
 use crate::param::natural::NaturalCubicSpline;
 use crate::param::objective::{chord_length_spacing, knots_from_spacing, Objective};
@@ -35,15 +35,8 @@ fn fmt(x: f64, d: u32) -> String {
 }
 
 /// Compare a certified column with a printed one: (agreeing entries, largest difference).
-fn compare(t: &[Float], col: usize) -> (usize, f64) {
-    let p = printed(col);
-    let agree = t.iter().zip(&p).filter(|(x, s)| rounds_to(x, s)).count();
-    let dev = t
-        .iter()
-        .zip(&p)
-        .map(|(x, s)| (x.to_f64() - num(s).to_f64()).abs())
-        .fold(0.0, f64::max);
-    (agree, dev)
+fn compare(column: &[Float], col: usize) -> (usize, f64) {
+    compare_with_printed(column, &printed(col))
 }
 
 /// max |θ_j''| on [0, 1] for each axis (θ'' is piecewise linear: the maximum is at a knot).
