@@ -5,8 +5,10 @@
 //! - [`cli`]: arguments and JSON in, JSON out; no mathematics.
 //! - [`claims`]: the published claims of each paper, each a check that calls the library.
 //! - [`report`]: the ledger (`claims.json`), Markdown reports, SVG figures.
-//! - algorithms: [`hermite`] (paper 000).
-//! - building blocks: [`poly`] (Bernstein form, differences), [`linalg`].
+//! - algorithms: [`hermite`] (paper 000), [`ph`] (paper 001), [`bspline`] (paper 002),
+//!   [`param`] (paper 004).
+//! - building blocks: [`poly`] (Bernstein form, differences), [`quat`] (quaternions),
+//!   [`curve`] (expressions, Taylor AD, fitted data), [`linalg`].
 //! - [`scalar`]: the `Field` and `Real` traits over f64, MPFR and rationals.
 //!
 //! One algorithm, three number types: the Hermite data of the paper's Fig. 2 mapped to
@@ -33,9 +35,12 @@
 pub mod bspline;
 pub mod claims;
 pub mod cli;
+pub mod curve;
 pub mod hermite;
 pub mod linalg;
 pub mod param;
+pub mod ph;
 pub mod poly;
+pub mod quat;
 pub mod report;
 pub mod scalar;

@@ -50,3 +50,8 @@ fn bspline_control_claims() {
 fn marin_param_claims() {
     snapshot_paper("marin");
 }
+
+#[test]
+fn phodcos_claims() {
+    snapshot_paper("phodcos");
+}

@@ -312,7 +312,7 @@ fn list_names_every_claim_with_its_location() {
         hermite.stdout.starts_with("# 000_d51e5cedfa8471cf")
             && !hermite.stdout.contains("bspline.")
     );
-    let sections: String = ["hermite", "bspline", "marin"]
+    let sections: String = ["hermite", "phodcos", "bspline", "marin"]
         .iter()
         .map(|p| trajverify(&["list", "--paper", p], "").stdout)
         .collect();
@@ -442,4 +442,142 @@ fn marin_commands() {
     let g: f64 = plane["G"].as_str().unwrap().parse().unwrap();
     let g_chord: f64 = plane["G_chord"].as_str().unwrap().parse().unwrap();
     assert!(g <= g_chord, "{g} > {g_chord}");
+}
+
+const PH_DATA: &str = r#"{"p_b":[0,0,0],"p_e":[1,0.2,0.1],"v_b":[1,0,0],"v_e":[1,0.3,0],"a_b":[0,1,0],"a_e":[0,-1,0.2],"j_b":[0,0,1],"j_e":[0.1,0,0],"s_b":[0,0,0],"s_e":[0,0,0]}"#;
+
+#[test]
+fn ph_hermite_gives_nine_quaternions_and_eighteen_points() {
+    for scalar in ["f64", "mpfr:128"] {
+        let v = json(&trajverify(
+            &["run", "ph-hermite", "--scalar", scalar],
+            PH_DATA,
+        ));
+        assert_eq!(v["preimage"].as_array().unwrap().len(), 9);
+        let cp = v["control_points"].as_array().unwrap();
+        assert_eq!(cp.len(), 18);
+        // p_17 = p_e.
+        let last: Vec<f64> = cp[17]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|x| x.as_str().unwrap().parse().unwrap())
+            .collect();
+        assert!(
+            (last[0] - 1.0).abs() < 1e-12
+                && (last[1] - 0.2).abs() < 1e-12
+                && (last[2] - 0.1).abs() < 1e-12,
+            "{last:?}"
+        );
+    }
+    let r = trajverify(&["run", "ph-hermite", "--scalar", "rational"], PH_DATA);
+    assert_eq!(r.code, 2);
+    assert!(r.stderr.contains("square roots"), "{}", r.stderr);
+}
+
+#[test]
+fn phodcos_and_convergence_reproduce_table_1_rows() {
+    let v = json(&trajverify(
+        &["run", "phodcos"],
+        r#"{"curve": "[1.5*sin(7.2*t), cos(9*t), exp(cos(1.8*t))]", "interval": [0, 1], "segments": 64}"#,
+    ));
+    assert_eq!(v["segments"], 64);
+    assert_eq!(v["preimages"].as_array().unwrap().len(), 64);
+    let e: f64 = v["max_error"].as_str().unwrap().parse().unwrap();
+    assert!((e / 5.0096343e-9 - 1.0).abs() < 1e-6, "{e}");
+    let v = json(&trajverify(
+        &["run", "phodcos"],
+        r#"{"curve": "[cos(t), sin(t), t/2]", "interval": [0, 6], "tolerance": "1e-8"}"#,
+    ));
+    let e: f64 = v["max_error"].as_str().unwrap().parse().unwrap();
+    assert!(e < 1e-8);
+    let v = json(&trajverify(
+        &["run", "convergence"],
+        r#"{"curve": "[1.5*sin(7.2*t), cos(9*t), exp(cos(1.8*t))]", "interval": [0, 1], "levels": [8, 9]}"#,
+    ));
+    let rows = v["rows"].as_array().unwrap();
+    assert_eq!(rows[0]["ratio"], Value::Null);
+    assert!(rows[1]["error"]
+        .as_str()
+        .unwrap()
+        .starts_with("1.98195792667625"));
+    assert!(rows[1]["order"].as_str().unwrap().starts_with("6.0036"));
+}
+
+#[test]
+fn ph_bad_input_is_one_line_exit_two() {
+    let cases: &[(&str, &str, &str)] = &[
+        (
+            "phodcos",
+            r#"{"curve": "[sin(t), sinh(t), 1]", "interval": [0, 1], "segments": 2}"#,
+            "character 10: unknown name \"sinh\"",
+        ),
+        (
+            "phodcos",
+            r#"{"curve": "[sin(t), cos(t)+, 1]", "interval": [0, 1], "segments": 2}"#,
+            "character 17",
+        ),
+        (
+            "phodcos",
+            r#"{"curve": "[sin(t), cos(t)]", "interval": [0, 1], "segments": 2}"#,
+            "3 components",
+        ),
+        (
+            "phodcos",
+            r#"{"curve": "[sin(t), cos(t), t]", "interval": [1, 0], "segments": 2}"#,
+            "\"interval\"",
+        ),
+        (
+            "phodcos",
+            r#"{"curve": "[ln(t), t, 1]", "interval": [0, 1], "segments": 2}"#,
+            "not finite",
+        ),
+        (
+            "phodcos",
+            r#"{"curve": "[t, t, 1]", "interval": [0, 1], "segments": 2, "tolerance": 1}"#,
+            "exactly one",
+        ),
+        (
+            "phodcos",
+            r#"{"curve": "[t, t, 1]", "interval": [0, 1], "tolerance": -1}"#,
+            "\"tolerance\"",
+        ),
+        (
+            "phodcos",
+            r#"{"curve": "[t, 0, 0]", "interval": [0, 1], "tolerance": "1e-300", "max_segments": 4}"#,
+            "not reached",
+        ),
+        (
+            "convergence",
+            r#"{"curve": "[t, t, 1]", "interval": [0, 1], "levels": [40]}"#,
+            "levels[0]",
+        ),
+        (
+            "ph-hermite",
+            &PH_DATA.replace(r#""v_e":[1,0.3,0]"#, r#""v_e":[-1,0,0]"#),
+            "v_b + v_e = 0",
+        ),
+        (
+            "ph-hermite",
+            &PH_DATA.replace(r#""v_b":[1,0,0]"#, r#""v_b":[0,0,0]"#),
+            "\"v_b\"",
+        ),
+        (
+            "ph-hermite",
+            &PH_DATA.replace(r#""s_e":[0,0,0]"#, r#""s_e":[0,0]"#),
+            "\"s_e\"",
+        ),
+        (
+            "ph-hermite",
+            &PH_DATA.replace("}", r#","free":{"tau4":1}}"#),
+            "tau4",
+        ),
+    ];
+    for (alg, input, expected) in cases {
+        let r = trajverify(&["run", alg], input);
+        assert_eq!(r.code, 2, "{alg} {input}: {}", r.stderr);
+        assert!(r.stdout.is_empty());
+        assert_eq!(r.stderr.trim().lines().count(), 1, "{}", r.stderr);
+        assert!(r.stderr.contains(expected), "{input}: {}", r.stderr);
+    }
 }

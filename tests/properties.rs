@@ -192,3 +192,118 @@ mod parametrization {
         }
     }
 }
+
+/// Paper 001: Algorithm 1 on random C⁴ data, in f64 and MPFR, and Theorems 3–4.
+mod ph_interpolation {
+    use proptest::prelude::*;
+    use trajverify::ph::bernstein_jet;
+    use trajverify::ph::hermite::{interpolate, FreeParameters, HermiteData};
+    use trajverify::quat::vec3;
+    use trajverify::scalar::{Field, Float};
+
+    fn vector() -> impl Strategy<Value = [i64; 3]> {
+        [-20i64..=20, -20i64..=20, -20i64..=20]
+    }
+
+    /// Ten random vectors (entries k/10) with v_b, v_e and v_b + v_e non-zero, and φ.
+    fn data() -> impl Strategy<Value = (Vec<[i64; 3]>, Vec<i64>)> {
+        (
+            prop::collection::vec(vector(), 10),
+            prop::collection::vec(-10i64..=10, 8),
+        )
+            .prop_filter("non-degenerate tangents", |(v, _)| {
+                let nz = |a: [i64; 3]| a != [0, 0, 0];
+                nz(v[2])
+                    && nz(v[3])
+                    && nz([v[2][0] + v[3][0], v[2][1] + v[3][1], v[2][2] + v[3][2]])
+            })
+    }
+
+    fn build<T: Field>(
+        v: &[[i64; 3]],
+        phi: &[i64],
+        ctx: &T::Ctx,
+    ) -> (HermiteData<T>, FreeParameters<T>) {
+        let p = |a: [i64; 3]| a.map(|x| T::from_ratio(x, 10, ctx));
+        let data = HermiteData {
+            p_b: p(v[0]),
+            p_e: p(v[1]),
+            start: vec![p(v[2]), p(v[4]), p(v[6]), p(v[8])],
+            end: vec![p(v[3]), p(v[5]), p(v[7]), p(v[9])],
+        };
+        let f = |x: i64| T::from_ratio(x, 10, ctx);
+        let free = FreeParameters {
+            theta_start: f(phi[0]),
+            theta_mid: T::zero_in(ctx),
+            theta_end: f(phi[7]),
+            tau_start: vec![f(phi[1]), f(phi[2]), f(phi[3])],
+            tau_end: vec![f(phi[6]), f(phi[5]), f(phi[4])],
+        };
+        (data, free)
+    }
+
+    fn worst_residual<T: trajverify::scalar::Real>(
+        data: &HermiteData<T>,
+        free: &FreeParameters<T>,
+    ) -> f64 {
+        let c = interpolate(data, free).expect("non-degenerate data");
+        let pts = c.control_points();
+        let ctx = data.p_b[0].ctx();
+        let s = bernstein_jet(&pts, &T::zero_in(&ctx), 4);
+        let e = bernstein_jet(&pts, &T::one_in(&ctx), 4);
+        let mut worst = vec3::norm(&vec3::sub(&s[0], &data.p_b)).to_f64();
+        worst = worst.max(vec3::norm(&vec3::sub(&e[0], &data.p_e)).to_f64());
+        for k in 0..4 {
+            worst = worst.max(vec3::norm(&vec3::sub(&s[k + 1], &data.start[k])).to_f64());
+            worst = worst.max(vec3::norm(&vec3::sub(&e[k + 1], &data.end[k])).to_f64());
+        }
+        worst
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(48))]
+
+        /// The interpolant meets all ten boundary vectors for any free parameters.
+        #[test]
+        fn algorithm_1_interpolates(( v, phi) in data()) {
+            let (d, f) = build::<f64>(&v, &phi, &());
+            prop_assert!(worst_residual(&d, &f) < 1e-8);
+            let (d, f) = build::<Float>(&v, &phi, &200);
+            prop_assert!(worst_residual(&d, &f) < 1e-50);
+        }
+
+        /// f64 and MPFR give the same curve where the data are well conditioned.
+        #[test]
+        fn f64_agrees_with_mpfr((v, phi) in data()) {
+            let (d, f) = build::<f64>(&v, &phi, &());
+            let a = interpolate(&d, &f).unwrap().control_points();
+            let (d, f) = build::<Float>(&v, &phi, &200);
+            let b = interpolate(&d, &f).unwrap().control_points();
+            let scale = b.iter().map(|p| vec3::norm(p).to_f64()).fold(1.0, f64::max);
+            for (x, y) in a.iter().zip(&b) {
+                for k in 0..3 {
+                    prop_assert!((x[k] - y[k].to_f64()).abs() < 1e-7 * scale);
+                }
+            }
+        }
+
+        /// Theorem 4: reversed data with −φ (ends exchanged) trace the same curve backwards.
+        #[test]
+        fn reversion((v, phi) in data()) {
+            let (d, f) = build::<Float>(&v, &phi, &200);
+            let a = interpolate(&d, &f).unwrap().control_points();
+            let swapped = FreeParameters {
+                theta_start: -f.theta_end.clone(),
+                theta_mid: -f.theta_mid.clone(),
+                theta_end: -f.theta_start.clone(),
+                tau_start: f.tau_end.iter().map(|x| -x.clone()).collect(),
+                tau_end: f.tau_start.iter().map(|x| -x.clone()).collect(),
+            };
+            let mut b = interpolate(&d.reversed(), &swapped).unwrap().control_points();
+            b.reverse();
+            for (x, y) in a.iter().zip(&b) {
+                prop_assert!(vec3::norm(&vec3::sub(x, y)).to_f64() < 1e-50);
+            }
+        }
+    }
+}

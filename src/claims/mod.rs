@@ -13,6 +13,7 @@
 pub mod bspline_control;
 pub mod hermite_bernstein;
 pub mod marin_param;
+pub mod phodcos;
 pub mod sample;
 
 use serde::Serialize;
@@ -207,6 +208,7 @@ pub struct Paper {
 pub fn papers() -> Vec<Paper> {
     vec![
         hermite_bernstein::paper(),
+        phodcos::paper(),
         bspline_control::paper(),
         marin_param::paper(),
     ]

@@ -9,6 +9,7 @@ pub mod output;
 mod run_bspline;
 mod run_hermite;
 mod run_param;
+mod run_ph;
 
 use crate::claims::{self, Paper, Verdict};
 use crate::report;
@@ -74,6 +75,15 @@ const RUN_HELP: &str = r#"Algorithms and their input:
   marin              {"points": [[...], ...], "weights": [a1, ...] (optional), "objective": "exact" | "approx"}
                      -> {"t": [...], "G", "G_chord", "iterations"}
   natural-spline     {"t": [...], "z": [...] or [[...], ...], "at": [...]} -> {"values", "first", "second"}
+  ph-hermite         {"p_b": [x,y,z], "p_e", "v_b", "v_e", "a_b", "a_e", "j_b", "j_e", "s_b", "s_e",
+                      "free": {"theta0", "tau1", "tau2", "tau3", "theta4", "tau5", "tau6", "tau7", "theta8"} (optional)}
+                     derivatives in xi on [0, 1]; -> {"preimage": [[u,v,p,q] x 9], "control_points": [[x,y,z] x 18], "arc_length"}
+  phodcos            {"curve": "[1.5*sin(7.2*t), cos(9*t), exp(cos(1.8*t))]", "interval": [a, b],
+                      "segments": N | "tolerance": eps, "max_segments": M (optional, default 4096)}
+                     -> {"segments", "max_error", "sampled_error", "preimages": [[[u,v,p,q] x 9] x N]}
+  convergence        {"curve", "interval", "levels": [0, ..., 13], "free": {...} (optional)}
+                     -> {"rows": [{"segments", "error", "ratio", "order"}]} (default scalar mpfr:128)
+  curves: numbers, t, pi, + - * / ^, sin cos tan exp ln sqrt atan, parentheses
 Numbers may be JSON numbers or strings ("3/5", "0.6", "1e-3"); both are read exactly."#;
 
 /// The algorithms `run` knows.
@@ -98,6 +108,12 @@ pub enum Algorithm {
     Marin,
     /// Natural cubic spline values and derivatives (paper 004).
     NaturalSpline,
+    /// C⁴ Hermite data → degree-17 PH curve, preimage and control points (paper 001, Alg. 1).
+    PhHermite,
+    /// A parametric curve converted to a piecewise PH curve (paper 001, Alg. 2).
+    Phodcos,
+    /// Conversion error on 2ⁿ segments, ratios and orders (paper 001, Table 1).
+    Convergence,
 }
 
 fn parse_scalar(s: &str) -> Result<ScalarKind, String> {
@@ -121,6 +137,13 @@ impl Rendered {
     pub fn plain<T: crate::scalar::Field>(out: Out<T>) -> Self {
         Rendered {
             body: Body::Json(render_plain(&out)),
+            extra: Vec::new(),
+        }
+    }
+    /// Output already rendered as JSON (strings carry their certified digits).
+    pub fn json(value: Value) -> Self {
+        Rendered {
+            body: Body::Json(value),
             extra: Vec::new(),
         }
     }
@@ -299,6 +322,11 @@ fn run(
         Algorithm::Marin => run_param::run_marin(&doc, scalar.unwrap_or(ScalarKind::Mpfr(256))),
         Algorithm::NaturalSpline => {
             run_param::run_natural_spline(&doc, scalar.unwrap_or(ScalarKind::F64))
+        }
+        Algorithm::PhHermite => run_ph::run_ph_hermite(&doc, scalar.unwrap_or(ScalarKind::F64)),
+        Algorithm::Phodcos => run_ph::run_phodcos(&doc, scalar.unwrap_or(ScalarKind::F64)),
+        Algorithm::Convergence => {
+            run_ph::run_convergence(&doc, scalar.unwrap_or(ScalarKind::Mpfr(128)))
         }
     }
     .map_err(|e| Failure::Usage(e.0))?;

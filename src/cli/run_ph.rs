@@ -1,0 +1,435 @@
+//! `run ph-hermite`, `run phodcos` and `run convergence`: the JSON shapes of issue 3.
+
+use super::input::{self, fail, InputError};
+use super::output::Out;
+use super::Rendered;
+use crate::curve::{Curve, ExprCurve};
+use crate::ph::hermite::{interpolate, FreeParameters, HermiteData, PhHermiteError};
+use crate::ph::piecewise::{certified_error, conversion_error, convert, phodcos, DEFAULT_SAMPLES};
+use crate::ph::PhCurve;
+use crate::scalar::certify::format_float_digits;
+use crate::scalar::{BigRational, Field, Float, Real, ScalarKind};
+use serde_json::{json, Map, Value};
+
+/// The most segments `run phodcos` accepts (directly or as the tolerance search's limit).
+pub const MAX_SEGMENTS: usize = 1 << 16;
+/// The largest level of `run convergence` (2ⁿ segments).
+pub const MAX_LEVEL: usize = 16;
+
+const DATA_FIELDS: [&str; 10] = [
+    "p_b", "p_e", "v_b", "v_e", "a_b", "a_e", "j_b", "j_e", "s_b", "s_e",
+];
+const FREE_FIELDS: [&str; 9] = [
+    "theta0", "tau1", "tau2", "tau3", "theta4", "tau5", "tau6", "tau7", "theta8",
+];
+
+fn point(doc: &Map<String, Value>, name: &str) -> Result<[BigRational; 3], InputError> {
+    let items = input::array(input::field(doc, name)?, name)?;
+    if items.len() != 3 {
+        return fail(format!(
+            "field \"{name}\": expected [x, y, z], found {} values",
+            items.len()
+        ));
+    }
+    Ok([
+        input::number(&items[0], &format!("{name}[0]"))?,
+        input::number(&items[1], &format!("{name}[1]"))?,
+        input::number(&items[2], &format!("{name}[2]"))?,
+    ])
+}
+
+/// The optional `free` object: θ0, τ1, τ2, τ3, θ4, τ5, τ6, τ7, θ8 (missing ones are 0).
+fn free_parameters(doc: &Map<String, Value>) -> Result<FreeParameters<BigRational>, InputError> {
+    let mut f = FreeParameters::zero(4, &());
+    let Some(v) = doc.get("free") else {
+        return Ok(f);
+    };
+    let obj = v.as_object().ok_or_else(|| {
+        InputError(format!(
+            "field \"free\": expected an object, found {}",
+            input::kind(v)
+        ))
+    })?;
+    input::only_fields(obj, &FREE_FIELDS)
+        .map_err(|e| InputError(e.0.replacen("input:", "field \"free\":", 1)))?;
+    let get = |name: &str| -> Result<BigRational, InputError> {
+        obj.get(name)
+            .map_or(Ok(BigRational::from_integer(0.into())), |v| {
+                input::number(v, &format!("free.{name}"))
+            })
+    };
+    f.theta_start = get("theta0")?;
+    f.theta_mid = get("theta4")?;
+    f.theta_end = get("theta8")?;
+    f.tau_start = vec![get("tau1")?, get("tau2")?, get("tau3")?];
+    f.tau_end = vec![get("tau7")?, get("tau6")?, get("tau5")?];
+    Ok(f)
+}
+
+fn ph_error(e: PhHermiteError) -> InputError {
+    let field = match e {
+        PhHermiteError::NoStandardForm => "v_e",
+        PhHermiteError::ZeroTangent(name) => name,
+        _ => "free",
+    };
+    InputError(format!("field \"{field}\": {e}"))
+}
+
+fn needs_real(scalar: ScalarKind) -> Result<(), InputError> {
+    if scalar == ScalarKind::Rational {
+        return fail("option --scalar: PH interpolation takes square roots (Lemma 2); use f64 or mpfr:<bits>");
+    }
+    Ok(())
+}
+
+/// A list of vectors with every entry below the rounding level of the largest one set to 0.
+///
+/// Components that vanish mathematically (the real part of A_0 in standard form, say) come
+/// out as rounding noise of either sign, on which no two precisions agree; below
+/// 2^(16−p)·max|x| a value cannot be told from 0 at p bits, so it is printed as 0.
+fn vectors<T: Real>(rows: Vec<Vec<T>>) -> Out<T> {
+    let mut largest: Option<T> = None;
+    for x in rows.iter().flatten() {
+        let a = x.abs();
+        if largest.as_ref().is_none_or(|m| a > *m) {
+            largest = Some(a);
+        }
+    }
+    let threshold = largest.map(|m| {
+        let ctx = m.ctx();
+        let bits = T::precision_bits(&ctx).saturating_sub(16);
+        m * &crate::scalar::powi(&T::from_ratio(1, 2, &ctx), bits)
+    });
+    let flush = |x: T| match &threshold {
+        Some(t) if x.abs() < *t => T::zero_in(&x.ctx()),
+        _ => x,
+    };
+    Out::List(
+        rows.into_iter()
+            .map(|r| Out::nums(r.into_iter().map(flush).collect()))
+            .collect(),
+    )
+}
+
+fn preimage_out<T: Real>(c: &PhCurve<T>) -> Out<T> {
+    vectors(c.preimage.iter().map(|q| q.components().to_vec()).collect())
+}
+
+fn curve_out<T: Real>(c: &PhCurve<T>) -> Vec<(&'static str, Out<T>)> {
+    vec![
+        ("preimage", preimage_out(c)),
+        (
+            "control_points",
+            vectors(c.control_points().into_iter().map(|p| p.to_vec()).collect()),
+        ),
+        ("arc_length", Out::Num(c.arc_length())),
+    ]
+}
+
+/// `run ph-hermite`: C⁴ Hermite data → the degree-17 PH interpolant (Algorithm 1).
+pub fn run_ph_hermite(
+    doc: &Map<String, Value>,
+    scalar: ScalarKind,
+) -> Result<Rendered, InputError> {
+    let mut known = DATA_FIELDS.to_vec();
+    known.push("free");
+    input::only_fields(doc, &known)?;
+    let mut vectors = Vec::new();
+    for name in DATA_FIELDS {
+        vectors.push(point(doc, name)?);
+    }
+    let free = free_parameters(doc)?;
+    needs_real(scalar)?;
+    let build = |ctx_bits: Option<u32>| -> Result<Out<Float>, InputError> {
+        let bits = ctx_bits.unwrap_or(53);
+        let conv = |v: &[BigRational; 3]| v.clone().map(|q| Float::from_rational(&q, &bits));
+        let data = HermiteData {
+            p_b: conv(&vectors[0]),
+            p_e: conv(&vectors[1]),
+            start: vec![
+                conv(&vectors[2]),
+                conv(&vectors[4]),
+                conv(&vectors[6]),
+                conv(&vectors[8]),
+            ],
+            end: vec![
+                conv(&vectors[3]),
+                conv(&vectors[5]),
+                conv(&vectors[7]),
+                conv(&vectors[9]),
+            ],
+        };
+        let c =
+            interpolate(&data, &free.map(|q| Float::from_rational(q, &bits))).map_err(ph_error)?;
+        Ok(Out::object(curve_out(&c)))
+    };
+    match scalar {
+        ScalarKind::Mpfr(bits) => Ok(Rendered::certified(
+            build(Some(bits))?.with_field("scalar", Out::Text(scalar.to_string())),
+            build(Some(2 * bits))?.with_field("scalar", Out::Text(scalar.to_string())),
+        )),
+        _ => {
+            let conv = |v: &[BigRational; 3]| v.clone().map(|q| f64::from_rational(&q, &()));
+            let data = HermiteData {
+                p_b: conv(&vectors[0]),
+                p_e: conv(&vectors[1]),
+                start: vec![
+                    conv(&vectors[2]),
+                    conv(&vectors[4]),
+                    conv(&vectors[6]),
+                    conv(&vectors[8]),
+                ],
+                end: vec![
+                    conv(&vectors[3]),
+                    conv(&vectors[5]),
+                    conv(&vectors[7]),
+                    conv(&vectors[9]),
+                ],
+            };
+            let c =
+                interpolate(&data, &free.map(|q| f64::from_rational(q, &()))).map_err(ph_error)?;
+            Ok(Rendered::plain(
+                Out::object(curve_out(&c)).with_field("scalar", Out::Text("f64".into())),
+            ))
+        }
+    }
+}
+
+fn read_curve(
+    doc: &Map<String, Value>,
+) -> Result<(ExprCurve, BigRational, BigRational), InputError> {
+    let text = match input::field(doc, "curve")? {
+        Value::String(s) => s,
+        other => {
+            return fail(format!(
+                "field \"curve\": expected a string like \"[sin(t), cos(t), t]\", found {}",
+                input::kind(other)
+            ))
+        }
+    };
+    let curve = ExprCurve::parse(text).map_err(|e| InputError(format!("field \"curve\": {e}")))?;
+    let (a, b) = input::interval(input::field(doc, "interval")?, "interval")?;
+    Ok((curve, a, b))
+}
+
+/// Check that the curve is finite with its derivatives at the ends of every segment.
+fn check_finite<T: Real, C: Curve<T>>(
+    c: &C,
+    a: &T,
+    b: &T,
+    segments: usize,
+) -> Result<(), InputError> {
+    for k in 0..=segments {
+        let t = crate::ph::piecewise::knot(a, b, segments, k);
+        if c.jet(&t, 4).iter().flatten().any(|x| !x.is_finite()) {
+            return fail(format!(
+                "field \"curve\": not finite (or a derivative up to the 4th is not) at t = {}",
+                format_float_digits(&Float::with_val(64, t.to_f64()), 8)
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// What `run phodcos` asks for.
+struct PhodcosInput {
+    curve: ExprCurve,
+    a: BigRational,
+    b: BigRational,
+    segments: Option<usize>,
+    tolerance: Option<BigRational>,
+    max_segments: usize,
+}
+
+/// The conversion in the number type `T` with `fixed` segments if given, else as asked.
+fn phodcos_in<T: Real>(
+    input: &PhodcosInput,
+    ctx: &T::Ctx,
+    fixed: Option<usize>,
+) -> Result<(usize, Out<T>), InputError> {
+    let c = input.curve.compile::<T>(ctx);
+    let (a, b) = (
+        T::from_rational(&input.a, ctx),
+        T::from_rational(&input.b, ctx),
+    );
+    let (pw, err) = match (fixed.or(input.segments), &input.tolerance) {
+        (Some(n), _) => {
+            check_finite(&c, &a, &b, n)?;
+            let pw =
+                convert(&c, &a, &b, n, 4, &FreeParameters::zero(4, ctx), true).map_err(ph_error)?;
+            let e = conversion_error(&c, &pw, DEFAULT_SAMPLES);
+            (pw, e)
+        }
+        (None, Some(tol)) => {
+            check_finite(&c, &a, &b, 1)?;
+            phodcos(&c, &a, &b, &T::from_rational(tol, ctx), input.max_segments)
+                .map_err(ph_error)?
+                .ok_or_else(|| {
+                    InputError(format!(
+                        "field \"tolerance\": not reached with {} segments (raise \"max_segments\")",
+                        input.max_segments
+                    ))
+                })?
+        }
+        (None, None) => return fail("input: give exactly one of \"segments\" and \"tolerance\""),
+    };
+    let n = pw.segments.len();
+    let pre = pw.segments.iter().map(preimage_out).collect();
+    Ok((
+        n,
+        Out::object(vec![
+            ("segments", Out::Int(n as i64)),
+            ("max_error", Out::Num(err.max)),
+            ("sampled_error", Out::Num(err.sampled)),
+            ("preimages", Out::List(pre)),
+        ]),
+    ))
+}
+
+/// `run phodcos`: a curve on uniform segments (or the fewest meeting a tolerance).
+pub fn run_phodcos(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, InputError> {
+    input::only_fields(
+        doc,
+        &["curve", "interval", "segments", "tolerance", "max_segments"],
+    )?;
+    let (curve, a, b) = read_curve(doc)?;
+    let segments = doc
+        .get("segments")
+        .map(|v| input::count(v, "segments", MAX_SEGMENTS))
+        .transpose()?;
+    let tolerance = doc
+        .get("tolerance")
+        .map(|v| input::number(v, "tolerance"))
+        .transpose()?;
+    let max_segments = doc
+        .get("max_segments")
+        .map(|v| input::count(v, "max_segments", MAX_SEGMENTS))
+        .transpose()?
+        .unwrap_or(4096);
+    match (&segments, &tolerance) {
+        (Some(_), Some(_)) | (None, None) => {
+            return fail("input: give exactly one of \"segments\" and \"tolerance\"")
+        }
+        (Some(0), _) => return fail("field \"segments\": at least 1 segment"),
+        (_, Some(t)) if *t <= BigRational::from_integer(0.into()) => {
+            return fail("field \"tolerance\": must be positive")
+        }
+        _ => {}
+    }
+    if max_segments == 0 {
+        return fail("field \"max_segments\": at least 1 segment");
+    }
+    needs_real(scalar)?;
+    let input = PhodcosInput {
+        curve,
+        a,
+        b,
+        segments,
+        tolerance,
+        max_segments,
+    };
+    let name = scalar.to_string();
+    match scalar {
+        ScalarKind::Mpfr(bits) => {
+            // The higher precision uses the number of segments the lower one chose.
+            let (n, lo) = phodcos_in::<Float>(&input, &bits, None)?;
+            let (_, hi) = phodcos_in::<Float>(&input, &(2 * bits), Some(n))?;
+            Ok(Rendered::certified(
+                lo.with_field("scalar", Out::Text(name.clone())),
+                hi.with_field("scalar", Out::Text(name)),
+            ))
+        }
+        _ => Ok(Rendered::plain(
+            phodcos_in::<f64>(&input, &(), None)?
+                .1
+                .with_field("scalar", Out::Text(name)),
+        )),
+    }
+}
+
+/// `run convergence`: the error on 2ⁿ segments for each level, with ratios and orders.
+pub fn run_convergence(
+    doc: &Map<String, Value>,
+    scalar: ScalarKind,
+) -> Result<Rendered, InputError> {
+    input::only_fields(doc, &["curve", "interval", "levels", "free"])?;
+    let (curve, a, b) = read_curve(doc)?;
+    let levels: Vec<u32> = input::array(input::field(doc, "levels")?, "levels")?
+        .iter()
+        .enumerate()
+        .map(|(i, v)| input::count(v, &format!("levels[{i}]"), MAX_LEVEL).map(|n| n as u32))
+        .collect::<Result<_, _>>()?;
+    if levels.is_empty() {
+        return fail("field \"levels\": at least one level");
+    }
+    let free = free_parameters(doc)?;
+    needs_real(scalar)?;
+    let mut rows = Vec::new();
+    let mut previous: Option<(Float, Float)> = None;
+    for &n in &levels {
+        let segments = 1usize << n;
+        let (text, pair) = match scalar {
+            ScalarKind::Mpfr(bits) => {
+                let c = curve.compile::<Float>(&bits);
+                check_finite(
+                    &c,
+                    &Float::from_rational(&a, &bits),
+                    &Float::from_rational(&b, &bits),
+                    segments,
+                )?;
+                let e = certified_error(
+                    |p| curve.compile::<Float>(&p),
+                    &a,
+                    &b,
+                    segments,
+                    4,
+                    &free,
+                    bits,
+                    2 * bits,
+                )
+                .map_err(ph_error)?;
+                (e.certified().text, (e.lo, e.hi))
+            }
+            _ => {
+                let c = curve.compile::<f64>(&());
+                let (fa, fb) = (f64::from_rational(&a, &()), f64::from_rational(&b, &()));
+                check_finite(&c, &fa, &fb, segments)?;
+                let pw = convert(
+                    &c,
+                    &fa,
+                    &fb,
+                    segments,
+                    4,
+                    &free.map(|q| f64::from_rational(q, &())),
+                    true,
+                )
+                .map_err(ph_error)?;
+                let e = conversion_error(&c, &pw, DEFAULT_SAMPLES).max;
+                (
+                    crate::scalar::float_text(e),
+                    (Float::with_val(53, e), Float::with_val(53, e)),
+                )
+            }
+        };
+        let (ratio, order) = match &previous {
+            Some((plo, phi)) => {
+                let (rlo, rhi) = (plo.clone() / &pair.0, phi.clone() / &pair.1);
+                let (olo, ohi) = (rlo.clone().log2(), rhi.clone().log2());
+                let show = |lo: &Float, hi: &Float| match scalar {
+                    ScalarKind::Mpfr(_) => crate::scalar::certify::certify(lo, hi).text,
+                    _ => crate::scalar::float_text(hi.to_f64()),
+                };
+                (
+                    Value::String(show(&rlo, &rhi)),
+                    Value::String(show(&olo, &ohi)),
+                )
+            }
+            None => (Value::Null, Value::Null),
+        };
+        rows.push(json!({"segments": segments, "error": text, "ratio": ratio, "order": order}));
+        previous = Some(pair);
+    }
+    Ok(Rendered::json(
+        json!({"rows": rows, "scalar": scalar.to_string()}),
+    ))
+}

@@ -1,0 +1,465 @@
+//! A small expression language for parametric curves, evaluated with Taylor-mode AD.
+//!
+//! Grammar (the usual precedences; `^` binds tighter than unary minus and is right-associative):
+//!
+//! ```text
+//! curve  := '[' expr (',' expr)* ']'
+//! expr   := term (('+' | '-') term)*
+//! term   := unary (('*' | '/') unary)*
+//! unary  := ('-' | '+') unary | power
+//! power  := atom ('^' unary)?
+//! atom   := number | 't' | 'pi' | name '(' expr ')' | '(' expr ')'
+//! name   := sin | cos | tan | exp | ln | sqrt | atan
+//! ```
+//!
+//! Numbers are read exactly (`7.2` is 36/5) and rounded once into the working precision, so an
+//! expression means the same curve in f64 and in MPFR. Evaluation is generic over [`Real`]: at
+//! a [`Taylor`] variable it returns the curve's derivatives at a point to any order, exact to
+//! the working precision (no finite differences). An integer exponent is repeated
+//! multiplication (`t^3` is defined for t < 0); any other exponent is exp(b·ln a).
+
+use super::taylor::Taylor;
+use crate::scalar::parse::{denotes_integer, parse_rational};
+use crate::scalar::{powi, BigRational, Field, Real};
+
+/// A syntax or name error, with the 1-based character position where it was found.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("at character {position}: {message}")]
+pub struct ExprError {
+    pub position: usize,
+    pub message: String,
+}
+
+/// The functions the language knows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Func {
+    Sin,
+    Cos,
+    Tan,
+    Exp,
+    Ln,
+    Sqrt,
+    Atan,
+}
+
+impl Func {
+    const ALL: [(&'static str, Func); 7] = [
+        ("sin", Func::Sin),
+        ("cos", Func::Cos),
+        ("tan", Func::Tan),
+        ("exp", Func::Exp),
+        ("ln", Func::Ln),
+        ("sqrt", Func::Sqrt),
+        ("atan", Func::Atan),
+    ];
+}
+
+/// A parsed scalar expression in t.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Expr {
+    Number(BigRational),
+    T,
+    Pi,
+    Neg(Box<Expr>),
+    Add(Box<Expr>, Box<Expr>),
+    Sub(Box<Expr>, Box<Expr>),
+    Mul(Box<Expr>, Box<Expr>),
+    Div(Box<Expr>, Box<Expr>),
+    Pow(Box<Expr>, Box<Expr>),
+    Call(Func, Box<Expr>),
+}
+
+impl Expr {
+    /// The value at `t` in the number type of `t` (a plain scalar or a Taylor series).
+    pub fn eval<X: Real>(&self, t: &X) -> X {
+        let ctx = t.ctx();
+        match self {
+            Expr::Number(q) => X::from_rational(q, &ctx),
+            Expr::T => t.clone(),
+            Expr::Pi => X::pi(&ctx),
+            Expr::Neg(a) => -a.eval(t),
+            Expr::Add(a, b) => a.eval(t) + &b.eval(t),
+            Expr::Sub(a, b) => a.eval(t) - &b.eval(t),
+            Expr::Mul(a, b) => a.eval(t) * &b.eval(t),
+            Expr::Div(a, b) => a.eval(t) / &b.eval(t),
+            Expr::Pow(a, b) => {
+                let base = a.eval(t);
+                if let Expr::Number(q) = b.as_ref() {
+                    if let Some(n) = denotes_integer(q).filter(|n| n.unsigned_abs() <= 1 << 20) {
+                        let p = powi(&base, n.unsigned_abs() as u32);
+                        return if n < 0 { X::one_in(&ctx) / &p } else { p };
+                    }
+                }
+                (b.eval(t) * &base.ln()).exp()
+            }
+            Expr::Call(f, a) => {
+                let x = a.eval(t);
+                match f {
+                    Func::Sin => x.sin_cos().0,
+                    Func::Cos => x.sin_cos().1,
+                    Func::Tan => {
+                        let (s, c) = x.sin_cos();
+                        s / &c
+                    }
+                    Func::Exp => x.exp(),
+                    Func::Ln => x.ln(),
+                    Func::Sqrt => x.sqrt(),
+                    Func::Atan => x.atan2(&X::one_in(&ctx)),
+                }
+            }
+        }
+    }
+
+    /// The value and the first `order` derivatives at t₀.
+    pub fn derivatives<T: Real>(&self, t0: &T, order: usize) -> Vec<T> {
+        self.eval(&Taylor::variable(t0.clone(), order))
+            .with_order(order)
+            .derivatives()
+    }
+}
+
+/// An [`Expr`] with its numbers rounded once into a context: what evaluation runs on.
+#[derive(Clone, Debug)]
+pub enum Compiled<T> {
+    Const(T),
+    T,
+    Neg(Box<Compiled<T>>),
+    Add(Box<Compiled<T>>, Box<Compiled<T>>),
+    Sub(Box<Compiled<T>>, Box<Compiled<T>>),
+    Mul(Box<Compiled<T>>, Box<Compiled<T>>),
+    Div(Box<Compiled<T>>, Box<Compiled<T>>),
+    /// An integer power by repeated squaring (negative: reciprocal).
+    PowInt(Box<Compiled<T>>, i64),
+    /// a^b = exp(b ln a).
+    Pow(Box<Compiled<T>>, Box<Compiled<T>>),
+    Call(Func, Box<Compiled<T>>),
+}
+
+impl Expr {
+    /// Round every number into `ctx` once.
+    pub fn compile<T: Real>(&self, ctx: &T::Ctx) -> Compiled<T> {
+        let c = |e: &Expr| Box::new(e.compile::<T>(ctx));
+        match self {
+            Expr::Number(q) => Compiled::Const(T::from_rational(q, ctx)),
+            Expr::T => Compiled::T,
+            Expr::Pi => Compiled::Const(T::pi(ctx)),
+            Expr::Neg(a) => Compiled::Neg(c(a)),
+            Expr::Add(a, b) => Compiled::Add(c(a), c(b)),
+            Expr::Sub(a, b) => Compiled::Sub(c(a), c(b)),
+            Expr::Mul(a, b) => Compiled::Mul(c(a), c(b)),
+            Expr::Div(a, b) => Compiled::Div(c(a), c(b)),
+            Expr::Pow(a, b) => match b.as_ref() {
+                Expr::Number(q) => match denotes_integer(q).filter(|n| n.unsigned_abs() <= 1 << 20)
+                {
+                    Some(n) => Compiled::PowInt(c(a), n),
+                    None => Compiled::Pow(c(a), c(b)),
+                },
+                _ => Compiled::Pow(c(a), c(b)),
+            },
+            Expr::Call(f, a) => Compiled::Call(*f, c(a)),
+        }
+    }
+}
+
+impl<T: Real> Compiled<T> {
+    /// The value at `t`: a Taylor series in t gives the derivatives.
+    pub fn eval_series(&self, t: &Taylor<T>) -> Taylor<T> {
+        match self {
+            Compiled::Const(v) => Taylor::constant(v.clone()),
+            Compiled::T => t.clone(),
+            Compiled::Neg(a) => -a.eval_series(t),
+            Compiled::Add(a, b) => a.eval_series(t) + &b.eval_series(t),
+            Compiled::Sub(a, b) => a.eval_series(t) - &b.eval_series(t),
+            Compiled::Mul(a, b) => a.eval_series(t) * &b.eval_series(t),
+            Compiled::Div(a, b) => a.eval_series(t) / &b.eval_series(t),
+            Compiled::PowInt(a, n) => {
+                let p = powi(&a.eval_series(t), n.unsigned_abs() as u32);
+                if *n < 0 {
+                    Taylor::constant(T::one_in(&t.ctx())) / &p
+                } else {
+                    p
+                }
+            }
+            Compiled::Pow(a, b) => (b.eval_series(t) * &a.eval_series(t).ln()).exp(),
+            Compiled::Call(f, a) => {
+                let x = a.eval_series(t);
+                match f {
+                    Func::Sin => x.sin_cos().0,
+                    Func::Cos => x.sin_cos().1,
+                    Func::Tan => {
+                        let (s, c) = x.sin_cos();
+                        s / &c
+                    }
+                    Func::Exp => x.exp(),
+                    Func::Ln => x.ln(),
+                    Func::Sqrt => x.sqrt(),
+                    Func::Atan => x.atan2(&Taylor::constant(T::one_in(&t.ctx()))),
+                }
+            }
+        }
+    }
+}
+
+impl<T: Field> Taylor<T> {
+    /// Pad a constant result (an expression without t) to the requested order.
+    fn with_order(mut self, order: usize) -> Self {
+        let ctx = self.c[0].ctx();
+        self.c.resize(order + 1, T::zero_in(&ctx));
+        self
+    }
+}
+
+/// Parse a single scalar expression.
+pub fn parse_expr(text: &str) -> Result<Expr, ExprError> {
+    let mut p = Parser::new(text);
+    let e = p.expr()?;
+    p.expect_end()?;
+    Ok(e)
+}
+
+/// Parse a vector `[e1, e2, …]` of scalar expressions.
+pub fn parse_vector(text: &str) -> Result<Vec<Expr>, ExprError> {
+    let mut p = Parser::new(text);
+    p.skip_space();
+    p.expect('[', "a curve starts with '['")?;
+    let mut items = vec![p.expr()?];
+    loop {
+        p.skip_space();
+        match p.peek() {
+            Some(',') => {
+                p.pos += 1;
+                items.push(p.expr()?);
+            }
+            Some(']') => {
+                p.pos += 1;
+                break;
+            }
+            _ => return Err(p.error("expected ',' or ']'")),
+        }
+    }
+    p.expect_end()?;
+    Ok(items)
+}
+
+struct Parser {
+    chars: Vec<char>,
+    pos: usize,
+}
+
+impl Parser {
+    fn new(text: &str) -> Self {
+        Parser {
+            chars: text.chars().collect(),
+            pos: 0,
+        }
+    }
+    fn error(&self, message: impl Into<String>) -> ExprError {
+        ExprError {
+            position: self.pos + 1,
+            message: message.into(),
+        }
+    }
+    fn peek(&self) -> Option<char> {
+        self.chars.get(self.pos).copied()
+    }
+    fn skip_space(&mut self) {
+        while self.peek().is_some_and(char::is_whitespace) {
+            self.pos += 1;
+        }
+    }
+    fn expect(&mut self, c: char, what: &str) -> Result<(), ExprError> {
+        self.skip_space();
+        if self.peek() == Some(c) {
+            self.pos += 1;
+            Ok(())
+        } else {
+            Err(self.error(what))
+        }
+    }
+    fn expect_end(&mut self) -> Result<(), ExprError> {
+        self.skip_space();
+        match self.peek() {
+            None => Ok(()),
+            Some(c) => Err(self.error(format!("unexpected {c:?}"))),
+        }
+    }
+    fn expr(&mut self) -> Result<Expr, ExprError> {
+        let mut left = self.term()?;
+        loop {
+            self.skip_space();
+            match self.peek() {
+                Some('+') => {
+                    self.pos += 1;
+                    left = Expr::Add(Box::new(left), Box::new(self.term()?));
+                }
+                Some('-') => {
+                    self.pos += 1;
+                    left = Expr::Sub(Box::new(left), Box::new(self.term()?));
+                }
+                _ => return Ok(left),
+            }
+        }
+    }
+    fn term(&mut self) -> Result<Expr, ExprError> {
+        let mut left = self.unary()?;
+        loop {
+            self.skip_space();
+            match self.peek() {
+                Some('*') => {
+                    self.pos += 1;
+                    left = Expr::Mul(Box::new(left), Box::new(self.unary()?));
+                }
+                Some('/') => {
+                    self.pos += 1;
+                    left = Expr::Div(Box::new(left), Box::new(self.unary()?));
+                }
+                _ => return Ok(left),
+            }
+        }
+    }
+    fn unary(&mut self) -> Result<Expr, ExprError> {
+        self.skip_space();
+        match self.peek() {
+            Some('-') => {
+                self.pos += 1;
+                Ok(Expr::Neg(Box::new(self.unary()?)))
+            }
+            Some('+') => {
+                self.pos += 1;
+                self.unary()
+            }
+            _ => self.power(),
+        }
+    }
+    fn power(&mut self) -> Result<Expr, ExprError> {
+        let base = self.atom()?;
+        self.skip_space();
+        if self.peek() == Some('^') {
+            self.pos += 1;
+            let exponent = self.unary()?;
+            return Ok(Expr::Pow(Box::new(base), Box::new(exponent)));
+        }
+        Ok(base)
+    }
+    fn atom(&mut self) -> Result<Expr, ExprError> {
+        self.skip_space();
+        let start = self.pos;
+        match self.peek() {
+            None => Err(self.error("unexpected end of the expression")),
+            Some('(') => {
+                self.pos += 1;
+                let e = self.expr()?;
+                self.expect(')', "expected ')'")?;
+                Ok(e)
+            }
+            Some(c) if c.is_ascii_digit() || c == '.' => {
+                while self.peek().is_some_and(|c| c.is_ascii_digit() || c == '.') {
+                    self.pos += 1;
+                }
+                // An exponent: e or E, an optional sign, digits.
+                if matches!(self.peek(), Some('e' | 'E')) {
+                    let save = self.pos;
+                    self.pos += 1;
+                    if matches!(self.peek(), Some('+' | '-')) {
+                        self.pos += 1;
+                    }
+                    if self.peek().is_some_and(|c| c.is_ascii_digit()) {
+                        while self.peek().is_some_and(|c| c.is_ascii_digit()) {
+                            self.pos += 1;
+                        }
+                    } else {
+                        self.pos = save;
+                    }
+                }
+                let text: String = self.chars[start..self.pos].iter().collect();
+                parse_rational(&text)
+                    .map(Expr::Number)
+                    .map_err(|e| ExprError {
+                        position: start + 1,
+                        message: format!("bad number {text:?}: {e}"),
+                    })
+            }
+            Some(c) if c.is_ascii_alphabetic() || c == '_' => {
+                while self
+                    .peek()
+                    .is_some_and(|c| c.is_ascii_alphanumeric() || c == '_')
+                {
+                    self.pos += 1;
+                }
+                let name: String = self.chars[start..self.pos].iter().collect();
+                match name.as_str() {
+                    "t" => return Ok(Expr::T),
+                    "pi" => return Ok(Expr::Pi),
+                    _ => {}
+                }
+                let Some(&(_, f)) = Func::ALL.iter().find(|(n, _)| *n == name) else {
+                    return Err(ExprError {
+                        position: start + 1,
+                        message: format!(
+                            "unknown name {name:?} (the variable is t; functions: sin, cos, tan, exp, ln, sqrt, atan; constant: pi)"
+                        ),
+                    });
+                };
+                self.expect('(', &format!("expected '(' after {name}"))?;
+                let arg = self.expr()?;
+                self.expect(')', "expected ')'")?;
+                Ok(Expr::Call(f, Box::new(arg)))
+            }
+            Some(c) => Err(self.error(format!("unexpected {c:?}"))),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_test_curve_of_eq_23_and_its_derivatives() {
+        let v = parse_vector("[1.5*sin(7.2*t), cos(9*t), exp(cos(1.8*t))]").unwrap();
+        let t = 0.4f64;
+        let x = v[0].derivatives(&t, 4);
+        let w = 7.2f64;
+        let expect = [
+            1.5 * (w * t).sin(),
+            1.5 * w * (w * t).cos(),
+            -1.5 * w * w * (w * t).sin(),
+            -1.5 * w.powi(3) * (w * t).cos(),
+            1.5 * w.powi(4) * (w * t).sin(),
+        ];
+        for k in 0..5 {
+            assert!(
+                (x[k] - expect[k]).abs() < 1e-11 * expect[k].abs().max(1.0),
+                "{k}"
+            );
+        }
+        let z = v[2].derivatives(&t, 1);
+        let e = (1.8 * t).cos().exp();
+        assert!((z[1] - e * (-1.8 * (1.8 * t).sin())).abs() < 1e-13);
+    }
+
+    #[test]
+    fn precedence_and_powers() {
+        let e = parse_expr("-t^2 + 2*t^-1 - 8/2/2 + 2^3^2/2^8").unwrap();
+        let t = 3.0f64;
+        let expected = -9.0 + 2.0 / 3.0 - 2.0 + 512.0 / 256.0;
+        assert!((e.eval(&t) - expected).abs() < 1e-12);
+        let r = parse_expr("t^0.5").unwrap();
+        assert!((r.eval(&4.0f64) - 2.0).abs() < 1e-15);
+        assert_eq!(
+            parse_expr("pi").unwrap().eval(&0.0f64),
+            std::f64::consts::PI
+        );
+    }
+
+    #[test]
+    fn errors_name_the_position() {
+        let e = parse_vector("[sin(t), sinh(t), 1]").unwrap_err();
+        assert_eq!(e.position, 10);
+        assert!(e.message.contains("unknown name \"sinh\""), "{e}");
+        assert_eq!(parse_expr("1 + * t").unwrap_err().position, 5);
+        assert_eq!(parse_expr("(t + 1").unwrap_err().position, 7);
+        assert!(parse_vector("sin(t)").is_err());
+        assert!(parse_expr("t t").is_err());
+    }
+}

@@ -1,0 +1,80 @@
+//! Curves given by the user: parametric expressions ([`expr`]) and sampled data fitted by a
+//! smooth spline ([`spline`]), both able to report their derivatives at a point in the working
+//! precision ([`Curve::jet`]), which is what Hermite interpolation needs.
+
+pub mod expr;
+pub mod spline;
+pub mod taylor;
+
+use crate::scalar::Real;
+use expr::{parse_vector, Compiled, Expr, ExprError};
+use taylor::Taylor;
+
+/// A curve γ: ℝ → ℝ³ that can report its derivatives.
+pub trait Curve<T: Real>: Sync {
+    /// γ(t), γ′(t), …, γ⁽ᵒʳᵈᵉʳ⁾(t): entry k is the k-th derivative.
+    fn jet(&self, t: &T, order: usize) -> Vec<[T; 3]>;
+}
+
+impl<T: Real, C: Curve<T> + ?Sized> Curve<T> for &C {
+    fn jet(&self, t: &T, order: usize) -> Vec<[T; 3]> {
+        (**self).jet(t, order)
+    }
+}
+
+/// A curve written as `[x(t), y(t), z(t)]` in the expression language of [`expr`].
+#[derive(Clone, Debug)]
+pub struct ExprCurve {
+    pub components: [Expr; 3],
+}
+
+impl ExprCurve {
+    /// Parse `[x, y, z]`; exactly three components.
+    pub fn parse(text: &str) -> Result<Self, ExprError> {
+        let items = parse_vector(text)?;
+        let n = items.len();
+        let components: [Expr; 3] = items.try_into().map_err(|_| ExprError {
+            position: 1,
+            message: format!("a space curve has 3 components, this one has {n}"),
+        })?;
+        Ok(ExprCurve { components })
+    }
+}
+
+impl ExprCurve {
+    /// The curve with its numbers rounded into `ctx`, ready for fast evaluation.
+    pub fn compile<T: Real>(&self, ctx: &T::Ctx) -> CompiledCurve<T> {
+        CompiledCurve {
+            components: [
+                self.components[0].compile(ctx),
+                self.components[1].compile(ctx),
+                self.components[2].compile(ctx),
+            ],
+        }
+    }
+}
+
+/// An [`ExprCurve`] compiled for one number type and precision.
+#[derive(Clone, Debug)]
+pub struct CompiledCurve<T> {
+    pub components: [Compiled<T>; 3],
+}
+
+impl<T: Real> Curve<T> for CompiledCurve<T> {
+    fn jet(&self, t: &T, order: usize) -> Vec<[T; 3]> {
+        let var = Taylor::variable(t.clone(), order);
+        let ctx = t.ctx();
+        let d: Vec<Vec<T>> = self
+            .components
+            .iter()
+            .map(|e| {
+                let mut s = e.eval_series(&var);
+                s.c.resize(order + 1, T::zero_in(&ctx));
+                s.derivatives()
+            })
+            .collect();
+        (0..=order)
+            .map(|k| [d[0][k].clone(), d[1][k].clone(), d[2][k].clone()])
+            .collect()
+    }
+}
