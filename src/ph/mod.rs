@@ -28,17 +28,36 @@ use crate::curve::taylor::Taylor;
 use crate::quat::{vec3, Quat};
 use crate::scalar::{Field, Real};
 
-/// C(n, k) for the small degrees of PH curves (exact while the result fits in i64).
+/// C(n, k) for the small degrees of PH curves, from a Pascal triangle built once (n ≤ 60,
+/// every entry fits in i64); the interpolation evaluates hundreds of them per segment.
 pub fn binom(n: usize, k: usize) -> i64 {
+    static TRIANGLE: std::sync::OnceLock<Vec<Vec<i64>>> = std::sync::OnceLock::new();
     if k > n {
         return 0;
     }
-    let k = k.min(n - k);
-    let mut r: i64 = 1;
-    for i in 0..k {
-        r = r * (n - i) as i64 / (i + 1) as i64;
-    }
-    r
+    let rows = TRIANGLE.get_or_init(|| {
+        let mut t: Vec<Vec<i64>> = vec![vec![1]];
+        for r in 1..=2 * MAX_PREIMAGE_DEGREE {
+            let prev = &t[r - 1];
+            let row = (0..=r)
+                .map(|j| {
+                    let left = if j > 0 { prev[j - 1] } else { 0 };
+                    let right = prev.get(j).copied().unwrap_or(0);
+                    left + right
+                })
+                .collect();
+            t.push(row);
+        }
+        t
+    });
+    rows.get(n).map_or_else(
+        || {
+            // Beyond the table (not used by the PH code): the multiplicative formula.
+            let k = k.min(n - k);
+            (0..k).fold(1i64, |r, i| r * (n - i) as i64 / (i + 1) as i64)
+        },
+        |row| row[k],
+    )
 }
 
 /// The largest preimage degree accepted (keeps every binomial product inside i64).

@@ -1,0 +1,85 @@
+//! Criterion benches for paper 001: one C⁴ conversion per segment (Algorithm 1 plus the 18
+//! control points) in f64 and MPFR-256, the Hermite data of a segment from the curve
+//! expression (Taylor AD), and evaluating p, R and ω at one point. The README reports the
+//! figures and the ratio to the public Python implementation.
+
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
+use std::hint::black_box;
+use std::time::Duration;
+use trajverify::curve::{Curve, ExprCurve};
+use trajverify::ph::hermite::{interpolate, FreeParameters, HermiteData};
+use trajverify::scalar::{Field, Float, Real};
+
+const CURVE: &str = "[1.5*sin(7.2*t), cos(9*t), exp(cos(1.8*t))]";
+
+/// The Hermite data of segment 37 of 256 of Eq. (23), derivatives scaled by h^k.
+fn segment_data<T: Real>(ctx: &T::Ctx) -> HermiteData<T> {
+    let c = ExprCurve::parse(CURVE).expect("curve").compile::<T>(ctx);
+    let h = T::from_ratio(1, 256, ctx);
+    let jet = |k: i64| {
+        let mut j = c.jet(&T::from_ratio(k, 256, ctx), 4);
+        let mut s = T::one_in(ctx);
+        for d in j.iter_mut().skip(1) {
+            s *= &h;
+            *d = d.clone().map(|x| x * &s);
+        }
+        j
+    };
+    HermiteData::from_jets(&jet(37), &jet(38))
+}
+
+fn conversion(c: &mut Criterion) {
+    let mut g = c.benchmark_group("ph_c4_segment");
+    g.sample_size(40)
+        .measurement_time(Duration::from_secs(2))
+        .warm_up_time(Duration::from_millis(500));
+    let d = segment_data::<f64>(&());
+    let f = FreeParameters::zero(4, &());
+    g.bench_function(BenchmarkId::new("f64", "interpolate+control_points"), |b| {
+        b.iter(|| {
+            interpolate(black_box(&d), &f)
+                .expect("data")
+                .control_points()
+        })
+    });
+    let dm = segment_data::<Float>(&256);
+    let fm = FreeParameters::zero(4, &256);
+    g.bench_function(
+        BenchmarkId::new("mpfr256", "interpolate+control_points"),
+        |b| {
+            b.iter(|| {
+                interpolate(black_box(&dm), &fm)
+                    .expect("data")
+                    .control_points()
+            })
+        },
+    );
+    let c64 = ExprCurve::parse(CURVE).expect("curve").compile::<f64>(&());
+    g.bench_function(BenchmarkId::new("f64", "hermite_data_jet4"), |b| {
+        b.iter(|| c64.jet(black_box(&0.3), 4))
+    });
+    g.finish();
+}
+
+fn evaluation(c: &mut Criterion) {
+    let mut g = c.benchmark_group("ph_evaluate_p_r_omega");
+    g.sample_size(40)
+        .measurement_time(Duration::from_secs(2))
+        .warm_up_time(Duration::from_millis(500));
+    let d = segment_data::<f64>(&());
+    let curve = interpolate(&d, &FreeParameters::zero(4, &())).expect("data");
+    let pts = curve.control_points();
+    g.bench_function("f64", |b| {
+        b.iter(|| curve.frame_state(&pts, black_box(&0.37)))
+    });
+    let dm = segment_data::<Float>(&256);
+    let cm = interpolate(&dm, &FreeParameters::zero(4, &256)).expect("data");
+    let pm = cm.control_points();
+    let x = Float::with_val(256, 0.37);
+    g.bench_function("mpfr256", |b| b.iter(|| cm.frame_state(&pm, black_box(&x))));
+    let _ = Float::from_i64(0, &256);
+    g.finish();
+}
+
+criterion_group!(benches, conversion, evaluation);
+criterion_main!(benches);
