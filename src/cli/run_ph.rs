@@ -140,59 +140,35 @@ pub fn run_ph_hermite(
     }
     let free = free_parameters(doc)?;
     needs_real(scalar)?;
-    let build = |ctx_bits: Option<u32>| -> Result<Out<Float>, InputError> {
-        let bits = ctx_bits.unwrap_or(53);
-        let conv = |v: &[BigRational; 3]| v.clone().map(|q| Float::from_rational(&q, &bits));
-        let data = HermiteData {
-            p_b: conv(&vectors[0]),
-            p_e: conv(&vectors[1]),
-            start: vec![
-                conv(&vectors[2]),
-                conv(&vectors[4]),
-                conv(&vectors[6]),
-                conv(&vectors[8]),
-            ],
-            end: vec![
-                conv(&vectors[3]),
-                conv(&vectors[5]),
-                conv(&vectors[7]),
-                conv(&vectors[9]),
-            ],
-        };
-        let c =
-            interpolate(&data, &free.map(|q| Float::from_rational(q, &bits))).map_err(ph_error)?;
-        Ok(Out::object(curve_out(&c)))
-    };
+    let name = scalar.to_string();
     match scalar {
         ScalarKind::Mpfr(bits) => Ok(Rendered::certified(
-            build(Some(bits))?.with_field("scalar", Out::Text(scalar.to_string())),
-            build(Some(2 * bits))?.with_field("scalar", Out::Text(scalar.to_string())),
+            ph_hermite_in::<Float>(&vectors, &free, &bits)?
+                .with_field("scalar", Out::Text(name.clone())),
+            ph_hermite_in::<Float>(&vectors, &free, &(2 * bits))?
+                .with_field("scalar", Out::Text(name)),
         )),
-        _ => {
-            let conv = |v: &[BigRational; 3]| v.clone().map(|q| f64::from_rational(&q, &()));
-            let data = HermiteData {
-                p_b: conv(&vectors[0]),
-                p_e: conv(&vectors[1]),
-                start: vec![
-                    conv(&vectors[2]),
-                    conv(&vectors[4]),
-                    conv(&vectors[6]),
-                    conv(&vectors[8]),
-                ],
-                end: vec![
-                    conv(&vectors[3]),
-                    conv(&vectors[5]),
-                    conv(&vectors[7]),
-                    conv(&vectors[9]),
-                ],
-            };
-            let c =
-                interpolate(&data, &free.map(|q| f64::from_rational(q, &()))).map_err(ph_error)?;
-            Ok(Rendered::plain(
-                Out::object(curve_out(&c)).with_field("scalar", Out::Text("f64".into())),
-            ))
-        }
+        _ => Ok(Rendered::plain(
+            ph_hermite_in::<f64>(&vectors, &free, &())?.with_field("scalar", Out::Text(name)),
+        )),
     }
+}
+
+/// The interpolant of the ten vectors (in `DATA_FIELDS` order) in the number type `T`.
+fn ph_hermite_in<T: Real>(
+    vectors: &[[BigRational; 3]],
+    free: &FreeParameters<BigRational>,
+    ctx: &T::Ctx,
+) -> Result<Out<T>, InputError> {
+    let conv = |k: usize| vectors[k].clone().map(|q| T::from_rational(&q, ctx));
+    let data = HermiteData {
+        p_b: conv(0),
+        p_e: conv(1),
+        start: vec![conv(2), conv(4), conv(6), conv(8)],
+        end: vec![conv(3), conv(5), conv(7), conv(9)],
+    };
+    let c = interpolate(&data, &free.map(|q| T::from_rational(q, ctx))).map_err(ph_error)?;
+    Ok(Out::object(curve_out(&c)))
 }
 
 fn read_curve(
