@@ -8,6 +8,7 @@ use std::hint::black_box;
 use std::time::Duration;
 use trajverify::curve::{Curve, ExprCurve};
 use trajverify::ph::hermite::{interpolate, FreeParameters, HermiteData};
+use trajverify::ph::piecewise::segment_jet;
 use trajverify::scalar::{Field, Float, Real};
 
 const CURVE: &str = "[1.5*sin(7.2*t), cos(9*t), exp(cos(1.8*t))]";
@@ -16,15 +17,7 @@ const CURVE: &str = "[1.5*sin(7.2*t), cos(9*t), exp(cos(1.8*t))]";
 fn segment_data<T: Real>(ctx: &T::Ctx) -> HermiteData<T> {
     let c = ExprCurve::parse(CURVE).expect("curve").compile::<T>(ctx);
     let h = T::from_ratio(1, 256, ctx);
-    let jet = |k: i64| {
-        let mut j = c.jet(&T::from_ratio(k, 256, ctx), 4);
-        let mut s = T::one_in(ctx);
-        for d in j.iter_mut().skip(1) {
-            s *= &h;
-            *d = d.clone().map(|x| x * &s);
-        }
-        j
-    };
+    let jet = |k: i64| segment_jet(&c, &T::from_ratio(k, 256, ctx), &h, 4);
     HermiteData::from_jets(&jet(37), &jet(38))
 }
 

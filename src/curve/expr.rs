@@ -20,7 +20,7 @@
 
 use super::taylor::Taylor;
 use crate::scalar::parse::{denotes_integer, parse_rational};
-use crate::scalar::{powi, BigRational, Field, Real};
+use crate::scalar::{powi, BigRational, Real};
 
 /// A syntax or name error, with the 1-based character position where it was found.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
@@ -72,42 +72,7 @@ pub enum Expr {
 impl Expr {
     /// The value at `t` in the number type of `t` (a plain scalar or a Taylor series).
     pub fn eval<X: Real>(&self, t: &X) -> X {
-        let ctx = t.ctx();
-        match self {
-            Expr::Number(q) => X::from_rational(q, &ctx),
-            Expr::T => t.clone(),
-            Expr::Pi => X::pi(&ctx),
-            Expr::Neg(a) => -a.eval(t),
-            Expr::Add(a, b) => a.eval(t) + &b.eval(t),
-            Expr::Sub(a, b) => a.eval(t) - &b.eval(t),
-            Expr::Mul(a, b) => a.eval(t) * &b.eval(t),
-            Expr::Div(a, b) => a.eval(t) / &b.eval(t),
-            Expr::Pow(a, b) => {
-                let base = a.eval(t);
-                if let Expr::Number(q) = b.as_ref() {
-                    if let Some(n) = denotes_integer(q).filter(|n| n.unsigned_abs() <= 1 << 20) {
-                        let p = powi(&base, n.unsigned_abs() as u32);
-                        return if n < 0 { X::one_in(&ctx) / &p } else { p };
-                    }
-                }
-                (b.eval(t) * &base.ln()).exp()
-            }
-            Expr::Call(f, a) => {
-                let x = a.eval(t);
-                match f {
-                    Func::Sin => x.sin_cos().0,
-                    Func::Cos => x.sin_cos().1,
-                    Func::Tan => {
-                        let (s, c) = x.sin_cos();
-                        s / &c
-                    }
-                    Func::Exp => x.exp(),
-                    Func::Ln => x.ln(),
-                    Func::Sqrt => x.sqrt(),
-                    Func::Atan => x.atan2(&X::one_in(&ctx)),
-                }
-            }
-        }
+        self.compile::<X>(&t.ctx()).eval(t)
     }
 
     /// The value and the first `order` derivatives at t₀.
@@ -161,28 +126,28 @@ impl Expr {
     }
 }
 
-impl<T: Real> Compiled<T> {
-    /// The value at `t`: a Taylor series in t gives the derivatives.
-    pub fn eval_series(&self, t: &Taylor<T>) -> Taylor<T> {
+impl<X: Real> Compiled<X> {
+    /// The value at `t`; at a [`Taylor`] variable (X = Taylor<T>) it carries the derivatives.
+    pub fn eval(&self, t: &X) -> X {
         match self {
-            Compiled::Const(v) => Taylor::constant(v.clone()),
+            Compiled::Const(v) => v.clone(),
             Compiled::T => t.clone(),
-            Compiled::Neg(a) => -a.eval_series(t),
-            Compiled::Add(a, b) => a.eval_series(t) + &b.eval_series(t),
-            Compiled::Sub(a, b) => a.eval_series(t) - &b.eval_series(t),
-            Compiled::Mul(a, b) => a.eval_series(t) * &b.eval_series(t),
-            Compiled::Div(a, b) => a.eval_series(t) / &b.eval_series(t),
+            Compiled::Neg(a) => -a.eval(t),
+            Compiled::Add(a, b) => a.eval(t) + &b.eval(t),
+            Compiled::Sub(a, b) => a.eval(t) - &b.eval(t),
+            Compiled::Mul(a, b) => a.eval(t) * &b.eval(t),
+            Compiled::Div(a, b) => a.eval(t) / &b.eval(t),
             Compiled::PowInt(a, n) => {
-                let p = powi(&a.eval_series(t), n.unsigned_abs() as u32);
+                let p = powi(&a.eval(t), n.unsigned_abs() as u32);
                 if *n < 0 {
-                    Taylor::constant(T::one_in(&t.ctx())) / &p
+                    X::one_in(&t.ctx()) / &p
                 } else {
                     p
                 }
             }
-            Compiled::Pow(a, b) => (b.eval_series(t) * &a.eval_series(t).ln()).exp(),
+            Compiled::Pow(a, b) => (b.eval(t) * &a.eval(t).ln()).exp(),
             Compiled::Call(f, a) => {
-                let x = a.eval_series(t);
+                let x = a.eval(t);
                 match f {
                     Func::Sin => x.sin_cos().0,
                     Func::Cos => x.sin_cos().1,
@@ -193,19 +158,10 @@ impl<T: Real> Compiled<T> {
                     Func::Exp => x.exp(),
                     Func::Ln => x.ln(),
                     Func::Sqrt => x.sqrt(),
-                    Func::Atan => x.atan2(&Taylor::constant(T::one_in(&t.ctx()))),
+                    Func::Atan => x.atan2(&X::one_in(&t.ctx())),
                 }
             }
         }
-    }
-}
-
-impl<T: Field> Taylor<T> {
-    /// Pad a constant result (an expression without t) to the requested order.
-    fn with_order(mut self, order: usize) -> Self {
-        let ctx = self.c[0].ctx();
-        self.c.resize(order + 1, T::zero_in(&ctx));
-        self
     }
 }
 

@@ -57,21 +57,16 @@ impl ExprCurve {
 /// An [`ExprCurve`] compiled for one number type and precision.
 #[derive(Clone, Debug)]
 pub struct CompiledCurve<T> {
-    pub components: [Compiled<T>; 3],
+    pub components: [Compiled<Taylor<T>>; 3],
 }
 
 impl<T: Real> Curve<T> for CompiledCurve<T> {
     fn jet(&self, t: &T, order: usize) -> Vec<[T; 3]> {
         let var = Taylor::variable(t.clone(), order);
-        let ctx = t.ctx();
         let d: Vec<Vec<T>> = self
             .components
             .iter()
-            .map(|e| {
-                let mut s = e.eval_series(&var);
-                s.c.resize(order + 1, T::zero_in(&ctx));
-                s.derivatives()
-            })
+            .map(|e| e.eval(&var).with_order(order).derivatives())
             .collect();
         (0..=order)
             .map(|k| [d[0][k].clone(), d[1][k].clone(), d[2][k].clone()])

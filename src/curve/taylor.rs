@@ -45,6 +45,29 @@ impl<T: Field> Taylor<T> {
         );
         Taylor { c }
     }
+    /// The series padded with zeros (or cut) to `order`: a constant result, such as an
+    /// expression without t, as a series of the requested length.
+    pub fn with_order(mut self, order: usize) -> Self {
+        let ctx = self.c[0].ctx();
+        self.c.resize(order + 1, T::zero_in(&ctx));
+        self
+    }
+    /// The series of a function from its derivatives f(t₀), f′(t₀), …: c_k = f⁽ᵏ⁾/k!.
+    pub fn from_derivatives(d: Vec<T>) -> Self {
+        let ctx = d[0].ctx();
+        let mut fact = T::one_in(&ctx);
+        let c = d
+            .into_iter()
+            .enumerate()
+            .map(|(k, x)| {
+                if k > 1 {
+                    fact *= &T::from_i64(k as i64, &ctx);
+                }
+                x / &fact
+            })
+            .collect();
+        Taylor { c }
+    }
     pub fn order(&self) -> usize {
         self.c.len() - 1
     }

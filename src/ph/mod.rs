@@ -192,21 +192,8 @@ impl<T: Field> PhCurve<T> {
     /// any function of A by generic code.
     pub fn preimage_taylor(&self, xi: &T, order: usize) -> Quat<Taylor<T>> {
         let jet = self.preimage_jet(xi, order);
-        let ctx = self.ctx();
-        let series = |f: &dyn Fn(&Quat<T>) -> T| {
-            let mut fact = T::one_in(&ctx);
-            let c = jet
-                .iter()
-                .enumerate()
-                .map(|(k, q)| {
-                    if k > 1 {
-                        fact *= &T::from_i64(k as i64, &ctx);
-                    }
-                    f(q) / &fact
-                })
-                .collect();
-            Taylor::from_coeffs(c)
-        };
+        let series =
+            |f: &dyn Fn(&Quat<T>) -> T| Taylor::from_derivatives(jet.iter().map(f).collect());
         Quat::new(
             series(&|q| q.w.clone()),
             series(&|q| q.x.clone()),

@@ -78,6 +78,23 @@ pub fn knot<T: Field>(a: &T, b: &T, n: usize, k: usize) -> T {
     a.clone() + &((b.clone() - a) * &T::from_i64(k as i64, &ctx) / &T::from_i64(n as i64, &ctx))
 }
 
+/// γ(t), h γ′(t), …, h^m γ⁽ᵐ⁾(t): the jet in the local parameter of a segment of length h
+/// (Eq. 20).
+pub fn segment_jet<T: Real, C: Curve<T> + ?Sized>(
+    curve: &C,
+    t: &T,
+    h: &T,
+    m: usize,
+) -> Vec<[T; 3]> {
+    let mut jet = curve.jet(t, m);
+    let mut scale = T::one_in(&h.ctx());
+    for d in jet.iter_mut().skip(1) {
+        scale *= h;
+        *d = vec3::scale(d, &scale);
+    }
+    jet
+}
+
 /// The Hermite data of every segment: derivatives 1…m scaled by h^j (Eq. 20).
 pub fn segment_data<T: Real, C: Curve<T> + ?Sized>(
     curve: &C,
@@ -90,15 +107,7 @@ pub fn segment_data<T: Real, C: Curve<T> + ?Sized>(
     let h = (b.clone() - a) / &T::from_i64(segments as i64, &ctx);
     let jets: Vec<Vec<[T; 3]>> = (0..=segments)
         .into_par_iter()
-        .map(|k| {
-            let mut jet = curve.jet(&knot(a, b, segments, k), m);
-            let mut scale = T::one_in(&ctx);
-            for d in jet.iter_mut().skip(1) {
-                scale *= &h;
-                *d = vec3::scale(d, &scale);
-            }
-            jet
-        })
+        .map(|k| segment_jet(curve, &knot(a, b, segments, k), &h, m))
         .collect();
     (0..segments)
         .map(|k| HermiteData::from_jets(&jets[k], &jets[k + 1]))
@@ -564,15 +573,7 @@ pub fn certified_error<C: Curve<Float>>(
     let free_hi = free.map(|x| Float::from_rational(x, &hi_bits));
     let k = e.segment;
     let h = (b_hi.clone() - &a_hi) / &Float::from_i64(segments as i64, &hi_bits);
-    let jet_at = |j: usize| {
-        let mut jet = hi_curve.jet(&knot(&a_hi, &b_hi, segments, j), m);
-        let mut scale = Float::one_in(&hi_bits);
-        for d in jet.iter_mut().skip(1) {
-            scale *= &h;
-            *d = vec3::scale(d, &scale);
-        }
-        jet
-    };
+    let jet_at = |j: usize| segment_jet(&hi_curve, &knot(&a_hi, &b_hi, segments, j), &h, m);
     let data = HermiteData::from_jets(&jet_at(k), &jet_at(k + 1));
     let seg = interpolate(&data, &free_hi)?;
     let xi_hi = Float::with_val(hi_bits, &e.xi);

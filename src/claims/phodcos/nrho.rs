@@ -73,20 +73,8 @@ impl<T: Real> Curve<T> for Inertial<'_> {
     fn jet(&self, t: &T, order: usize) -> Vec<[T; 3]> {
         let ctx = t.ctx();
         let jet = Curve::<T>::jet(self.0, t, order);
-        let series = |d: usize| {
-            let mut fact = T::one_in(&ctx);
-            let c = jet
-                .iter()
-                .enumerate()
-                .map(|(k, v)| {
-                    if k > 1 {
-                        fact *= &T::from_i64(k as i64, &ctx);
-                    }
-                    v[d].clone() / &fact
-                })
-                .collect();
-            Taylor::from_coeffs(c)
-        };
+        let series =
+            |d: usize| Taylor::from_derivatives(jet.iter().map(|v| v[d].clone()).collect());
         let x = series(0) + &Taylor::constant(T::from_f64(MU, &ctx));
         let (y, z) = (series(1), series(2));
         let (s, c) = Taylor::variable(t.clone(), order).sin_cos();
