@@ -19,7 +19,8 @@
 //! Only steps 1, 3 and 5 take square roots. With all free parameters zero (φ* = 0) the
 //! interpolant has approximation order 2m − 2 + … (6 for m = 4, Theorem 1; 4 for m = 2).
 
-use super::{binom, PhCurve};
+use super::weights::MiddleWeights;
+use super::{binom, weights::middle_weights, PhCurve};
 use crate::quat::{solve_linear, solve_quadratic, vec3, Quat};
 use crate::scalar::{Field, Real};
 
@@ -193,40 +194,38 @@ pub fn interpolate_with<T: Real>(
     let u = standard_rotation(&vec3::add(&data.start[0], &data.end[0]))?;
     let rotate = |v: &[T; 3]| u.sandwich(v);
     let start: Vec<[T; 3]> = data.start.iter().map(rotate).collect();
-    let end: Vec<[T; 3]> = data.end.iter().map(rotate).collect();
+    // The end data of the reversed parameter 1 − ξ: odd derivatives change sign, and then
+    // h_end[k] = h_{2n−k}.
+    let end_reversed: Vec<[T; 3]> = data
+        .end
+        .iter()
+        .enumerate()
+        .map(|(k, d)| {
+            let r = rotate(d);
+            if k % 2 == 1 {
+                vec3::map(&r, |x| -x.clone())
+            } else {
+                r
+            }
+        })
+        .collect();
     let displacement = rotate(&vec3::sub(&data.p_e, &data.p_b));
 
     let n = 2 * m;
     let big = 2 * n;
     // Step 2: hodograph control points at both ends.
     let h_start = end_coefficients(&start, big, &ctx);
-    let h_end = end_coefficients(
-        &end.iter()
-            .enumerate()
-            .map(|(k, d)| {
-                if k % 2 == 1 {
-                    vec3::map(d, |x| -x.clone())
-                } else {
-                    d.clone()
-                }
-            })
-            .collect::<Vec<_>>(),
-        big,
-        &ctx,
-    );
-    // h_end[k] = h_{2n−k}: the end data of the reversed parameter 1 − ξ (odd derivatives flip).
+    let h_end = end_coefficients(&end_reversed, big, &ctx);
 
-    let mut a: Vec<Option<Quat<T>>> = vec![None; n + 1];
+    // A_0 … A_n; A_m stays zero until step 5.
+    let mut a: Vec<Quat<T>> = vec![Quat::zero(&ctx); n + 1];
     // Step 3.
-    a[0] = Some(
-        solve_quadratic(&h_start[0], &free.theta_start)
-            .map_err(|_| PhHermiteError::ZeroTangent("v_b"))?,
-    );
-    a[n] = Some(
-        solve_quadratic(&h_end[0], &free.theta_end)
-            .map_err(|_| PhHermiteError::ZeroTangent("v_e"))?,
-    );
-    // Step 4: A_k from h_k (start) and A_{n−k} from h_{2n−k} (end).
+    a[0] = solve_quadratic(&h_start[0], &free.theta_start)
+        .map_err(|_| PhHermiteError::ZeroTangent("v_b"))?;
+    a[n] = solve_quadratic(&h_end[0], &free.theta_end)
+        .map_err(|_| PhHermiteError::ZeroTangent("v_e"))?;
+    // Step 4: A_k from h_k (start) and A_{n−k} from h_{2n−k} (end); A_1 … A_{k−1} of the
+    // same side are known by then.
     for k in 1..m {
         for (side, h, tau) in [
             (0usize, &h_start, &free.tau_start),
@@ -235,33 +234,26 @@ pub fn interpolate_with<T: Real>(
             let index = |i: usize| if side == 0 { i } else { n - i };
             let mut rhs = vec3::scale(&h[k], &T::from_i64(binom(big, k), &ctx));
             for i in 1..k {
-                let (ai, aj) = (a[index(i)].as_ref(), a[index(k - i)].as_ref());
-                if let (Some(ai), Some(aj)) = (ai, aj) {
-                    let w = T::from_i64(binom(n, i) * binom(n, k - i), &ctx);
-                    let v = ai.i_conj(aj).vector();
-                    let neg_w = -w;
-                    vec3::axpy(&mut rhs, &neg_w, &v);
-                }
+                let w = -T::from_i64(binom(n, i) * binom(n, k - i), &ctx);
+                vec3::axpy(&mut rhs, &w, &a[index(i)].star(&a[index(k - i)]));
             }
             let rhs = vec3::scale(
                 &rhs,
                 &(T::one_in(&ctx) / &T::from_i64(2 * binom(n, k), &ctx)),
             );
-            let b = a[index(0)].clone().expect("end preimage set in step 3");
-            let x = solve_linear(&rhs, &b, &tau[k - 1]).ok_or(PhHermiteError::ZeroTangent(
-                if side == 0 { "v_b" } else { "v_e" },
-            ))?;
-            a[index(k)] = Some(x);
+            let x = solve_linear(&rhs, &a[index(0)], &tau[k - 1]).ok_or(
+                PhHermiteError::ZeroTangent(if side == 0 { "v_b" } else { "v_e" }),
+            )?;
+            a[index(k)] = x;
         }
     }
     // Step 5: the middle control point.
-    let known: Vec<Quat<T>> = (0..=n)
-        .map(|j| a[j].clone().unwrap_or_else(|| Quat::zero(&ctx)))
-        .collect();
-    let coeffs = middle_coefficients::<T>(n, &ctx);
-    let (lambda, alpha, c_p) = (&coeffs.lambda, &coeffs.alpha, coeffs.c_p(&known));
+    let weights = middle_weights(n);
+    let c_p = c_p(weights, &a);
     let target = match middle {
-        MiddleRule::Derived => vec3::sub(&vec3::scale(&displacement, lambda), &c_p),
+        MiddleRule::Derived => {
+            vec3::sub(&vec3::scale(&displacement, &weights.lambda.to(&ctx)), &c_p)
+        }
         MiddleRule::AsPrintedEq18 => c_p,
     };
     let x = match solve_quadratic(&target, &free.theta_mid) {
@@ -270,14 +262,13 @@ pub fn interpolate_with<T: Real>(
     };
     let mut rest = Quat::zero(&ctx);
     for j in (0..=n).filter(|&j| j != m) {
-        rest = rest + &known[j].scale(&alpha[j]);
+        rest = rest + &a[j].scale(&weights.alpha[j].to(&ctx));
     }
-    let mid = (x - &rest).scale(&(T::one_in(&ctx) / &alpha[m]));
+    // α_m = λ, so dividing by it is multiplying by the exact 1/λ.
+    a[m] = (x - &rest).scale(&weights.inverse_lambda.to(&ctx));
     // Step 6.
     let back = u.conj();
-    let preimage = (0..=n)
-        .map(|j| back.mul(if j == m { &mid } else { &known[j] }))
-        .collect();
+    let preimage = a.iter().map(|aj| back.mul(aj)).collect();
     Ok(PhCurve::new(preimage, data.p_b.clone()))
 }
 
@@ -318,64 +309,16 @@ pub fn end_coefficients<T: Field>(d: &[[T; 3]], big: usize, ctx: &T::Ctx) -> Vec
     h
 }
 
-/// λ, α_j and the c_p weights of step 5 for preimage degree n.
-pub struct MiddleCoefficients<T> {
-    pub lambda: T,
-    pub alpha: Vec<T>,
-    /// weight[i][j] of A_i i A_j* in c_p (zero in row and column m).
-    pub weight: Vec<Vec<T>>,
-}
-
-impl<T: Field> MiddleCoefficients<T> {
-    /// c_p for the given control points (entry m ignored).
-    pub fn c_p(&self, a: &[Quat<T>]) -> [T; 3] {
-        let n = a.len() - 1;
-        let ctx = a[0].ctx();
-        let mut c = vec3::zero::<T>(&ctx);
-        for i in 0..=n {
-            for j in i..=n {
-                if self.weight[i][j].is_zero() {
-                    continue;
-                }
-                let v = a[i].i_conj(&a[j]).vector();
-                let w = if i == j {
-                    self.weight[i][j].clone()
-                } else {
-                    self.weight[i][j].clone() * &T::from_i64(2, &ctx)
-                };
-                vec3::axpy(&mut c, &w, &v);
-            }
-        }
-        c
+/// c_p of step 5: the part of the curve's displacement carried by every control point but
+/// A_m, Σ w_ij vec(A_i i A_j*) with the cached exact weights (entry m of `a` is ignored).
+pub fn c_p<T: Field>(weights: &MiddleWeights, a: &[Quat<T>]) -> [T; 3] {
+    let ctx = a[0].ctx();
+    let mut c = vec3::zero::<T>(&ctx);
+    for term in &weights.c_p {
+        let v = a[term.i].star(&a[term.j]);
+        vec3::axpy(&mut c, &term.weight.to(&ctx), &v);
     }
-}
-
-/// The coefficients of Eq. (17) for any even preimage degree n (m = n/2).
-pub fn middle_coefficients<T: Field>(n: usize, ctx: &T::Ctx) -> MiddleCoefficients<T> {
-    let m = n / 2;
-    let big = 2 * n;
-    let w = |i: usize, j: usize| T::from_ratio(binom(n, i) * binom(n, j), binom(big, i + j), ctx);
-    let odd = T::from_i64((big + 1) as i64, ctx);
-    let alpha: Vec<T> = (0..=n).map(|j| w(m, j) / &odd).collect();
-    let lambda = alpha[m].clone();
-    let weight = (0..=n)
-        .map(|i| {
-            (0..=n)
-                .map(|j| {
-                    if i == m || j == m {
-                        T::zero_in(ctx)
-                    } else {
-                        lambda.clone() * &w(i, j) / &odd - &(alpha[i].clone() * &alpha[j])
-                    }
-                })
-                .collect()
-        })
-        .collect();
-    MiddleCoefficients {
-        lambda,
-        alpha,
-        weight,
-    }
+    c
 }
 
 #[cfg(test)]
@@ -434,18 +377,6 @@ mod tests {
                 }
             }
         }
-    }
-
-    #[test]
-    fn coefficients_of_eq_17_for_degree_8() {
-        use crate::scalar::BigRational;
-        let c = middle_coefficients::<BigRational>(8, &());
-        assert_eq!(c.lambda, BigRational::new(490.into(), 21879.into()));
-        assert_eq!(c.alpha[0], BigRational::new(1.into(), 442.into()));
-        assert_eq!(
-            c.weight[0][0],
-            BigRational::new(147807.into(), 112633092.into())
-        );
     }
 
     #[test]

@@ -23,6 +23,7 @@
 pub mod hermite;
 pub mod piecewise;
 pub mod symbolic;
+pub mod weights;
 
 use crate::curve::taylor::Taylor;
 use crate::quat::{vec3, Quat};
@@ -109,22 +110,12 @@ impl<T: Field> PhCurve<T> {
     pub fn hodograph(&self) -> Vec<[T; 3]> {
         let n = self.preimage_degree();
         let ctx = self.ctx();
-        // A_i i, a permutation of components; then vec(A_i i A_j*) for i ≤ j. The pair (i, j)
-        // and (j, i) give the same vector part (their sum is real-free), hence the factor 2.
-        let ai: Vec<Quat<T>> = self
-            .preimage
-            .iter()
-            .map(|a| Quat::new(-a.x.clone(), a.w.clone(), a.z.clone(), -a.y.clone()))
-            .collect();
-        let conj: Vec<Quat<T>> = self.preimage.iter().map(Quat::conj).collect();
+        // Each pair (i, j), i ≤ j, contributes A_i ⋆ A_j; (i, j) and (j, i) give the same
+        // vector, so the cached weight of i < j holds the factor 2.
         let mut h = vec![vec3::zero::<T>(&ctx); 2 * n + 1];
-        for i in 0..=n {
-            for j in i..=n {
-                let v = ai[i].mul(&conj[j]).vector();
-                let pairs = if i == j { 1 } else { 2 };
-                let w = T::from_ratio(pairs * binom(n, i) * binom(n, j), binom(2 * n, i + j), &ctx);
-                vec3::axpy(&mut h[i + j], &w, &v);
-            }
+        for term in weights::product_terms(n) {
+            let v = self.preimage[term.i].star(&self.preimage[term.j]);
+            vec3::axpy(&mut h[term.i + term.j], &term.weight.to(&ctx), &v);
         }
         h
     }
@@ -148,12 +139,12 @@ impl<T: Field> PhCurve<T> {
         let n = self.preimage_degree();
         let ctx = self.ctx();
         let mut s = vec![T::zero_in(&ctx); 2 * n + 1];
-        for i in 0..=n {
-            for j in i..=n {
-                let pairs = if i == j { 1 } else { 2 };
-                let w = T::from_ratio(pairs * binom(n, i) * binom(n, j), binom(2 * n, i + j), &ctx);
-                s[i + j].mul_add_assign(&w, &self.preimage[i].dot(&self.preimage[j]));
-            }
+        for term in weights::product_terms(n) {
+            let (i, j) = (term.i, term.j);
+            s[i + j].mul_add_assign(
+                &term.weight.to(&ctx),
+                &self.preimage[i].dot(&self.preimage[j]),
+            );
         }
         s
     }

@@ -5,7 +5,7 @@
 //! Eqs. (15) and (17c) has weight w_ii on A_i^{2⋆} and w_ij + w_ji on A_i ⋆ A_j (i < j).
 
 use super::binom;
-use super::hermite::middle_coefficients;
+use super::weights::middle_weights;
 use crate::scalar::BigRational;
 use std::collections::BTreeMap;
 
@@ -61,16 +61,23 @@ pub fn end_derivative(big: usize, k: usize, at_end: bool) -> BTreeMap<usize, i64
 
 /// λ, α_0 … α_n and c_p (ordered-pair form) of Eq. (17) for preimage degree n.
 pub fn middle(n: usize) -> (BigRational, Vec<BigRational>, Form) {
-    let c = middle_coefficients::<BigRational>(n, &());
+    let w = middle_weights(n);
     let mut form = Form::new();
-    for i in 0..=n {
-        for j in 0..=n {
-            if c.weight[i][j] != ratio(0, 1) {
-                form.insert((i, j), c.weight[i][j].clone());
-            }
+    for term in &w.c_p {
+        if term.i == term.j {
+            form.insert((term.i, term.j), term.weight.value.clone());
+        } else {
+            // The cached weight holds both orders (i, j) and (j, i); the form lists each.
+            let half = &term.weight.value / BigRational::from_integer(2.into());
+            form.insert((term.i, term.j), half.clone());
+            form.insert((term.j, term.i), half);
         }
     }
-    (c.lambda, c.alpha, form)
+    (
+        w.lambda.value.clone(),
+        w.alpha.iter().map(|a| a.value.clone()).collect(),
+        form,
+    )
 }
 
 #[cfg(test)]

@@ -21,6 +21,9 @@ impl Field for f64 {
             Self::from_rational(&BigRational::new(n.into(), d.into()), &())
         }
     }
+    fn from_ratio_nearest(_: i64, _: i64, nearest: f64, _: &()) -> Self {
+        nearest
+    }
     fn from_rational(q: &BigRational, _: &()) -> Self {
         super::mpfr::rational_to_f64(q)
     }

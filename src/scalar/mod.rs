@@ -77,6 +77,13 @@ pub trait Field:
     fn from_i64(v: i64, ctx: &Self::Ctx) -> Self;
     /// The fraction `n/d` with one rounding (exact for rationals). `d` must not be zero.
     fn from_ratio(n: i64, d: i64, ctx: &Self::Ctx) -> Self;
+    /// The fraction `n/d` whose correctly rounded double `nearest` the caller precomputed
+    /// (cached constants): f64 returns `nearest` without dividing, every other type
+    /// computes `n/d` in its own precision as [`Field::from_ratio`] does.
+    fn from_ratio_nearest(n: i64, d: i64, nearest: f64, ctx: &Self::Ctx) -> Self {
+        let _ = nearest;
+        Self::from_ratio(n, d, ctx)
+    }
     /// The rational `q`, correctly rounded to the context (exact for rationals).
     fn from_rational(q: &BigRational, ctx: &Self::Ctx) -> Self;
     /// The double `v` (exact for rationals and for MPFR with at least 53 bits). `v` must be finite.
