@@ -36,6 +36,7 @@ pub mod bspline;
 pub mod claims;
 pub mod cli;
 pub mod curve;
+pub mod gerbs;
 pub mod hermite;
 pub mod linalg;
 pub mod param;

@@ -55,3 +55,8 @@ fn marin_param_claims() {
 fn phodcos_claims() {
     snapshot_paper("phodcos");
 }
+
+#[test]
+fn gerbs_paths_claims() {
+    snapshot_paper("gerbs");
+}

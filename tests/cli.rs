@@ -312,7 +312,7 @@ fn list_names_every_claim_with_its_location() {
         hermite.stdout.starts_with("# 000_d51e5cedfa8471cf")
             && !hermite.stdout.contains("bspline.")
     );
-    let sections: String = ["hermite", "phodcos", "bspline", "marin"]
+    let sections: String = ["hermite", "phodcos", "bspline", "gerbs", "marin"]
         .iter()
         .map(|p| trajverify(&["list", "--paper", p], "").stdout)
         .collect();

@@ -11,6 +11,7 @@
 //! finding, with evidence); `failed` — something that must hold does not.
 
 pub mod bspline_control;
+pub mod gerbs_paths;
 pub mod hermite_bernstein;
 pub mod marin_param;
 pub mod phodcos;
@@ -210,6 +211,7 @@ pub fn papers() -> Vec<Paper> {
         hermite_bernstein::paper(),
         phodcos::paper(),
         bspline_control::paper(),
+        gerbs_paths::paper(),
         marin_param::paper(),
     ]
 }

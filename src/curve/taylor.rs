@@ -114,7 +114,7 @@ impl<T: Field> Taylor<T> {
     }
     /// The series of the primitive of `deriv` with constant term `c0`: coefficient k of the
     /// result is deriv_{k−1}/k, of length n.
-    fn integrate(deriv: &Taylor<T>, c0: T, n: usize) -> Self {
+    pub fn integrate(deriv: &Taylor<T>, c0: T, n: usize) -> Self {
         let ctx = c0.ctx();
         let mut c = vec![c0];
         for k in 1..n {

@@ -1,0 +1,216 @@
+//! Generalized expo-rational B-splines (GERBS) for curvature-continuous paths (paper 003,
+//! Andersen, Bouzidi, Kristiansen).
+//!
+//! A GERBS curve blends local curves, p(t) = Σ_{k=2}^{n+1} c_{k−1}(t) B_k(t) (Eqs. 1, 25), with
+//! basis functions of support [t_{k−1}, t_{k+1}] built from one rising function per knot
+//! interval (Eq. 6): on (t_j, t_{j+1}) the function F_j rises from 0 to 1 and
+//!
+//! B_k = F_{k−1} on (t_{k−1}, t_k],  B_k = 1 − F_k on (t_k, t_{k+1}),  0 elsewhere,
+//!
+//! so the B_k are a partition of unity and B_k(t_k) = 1: the curve passes through c_{k−1}(t_k).
+//! Two kinds of F (the [`Blend`] trait):
+//! - [`bfbs`]: Beta-function B-splines (Eqs. 7–9), F_j(t) = S_j ∫_{t_j}^t Ψ_j with the
+//!   polynomial kernel Ψ_j ∝ (t−t_j)^{i_j}(t_{j+1}−t)^{i_{j+1}}, a regularized incomplete beta
+//!   function, evaluated exactly in its Bernstein form; Eqs. 10–18 are its i = 2 case.
+//! - [`erbs`]: expo-rational B-splines (Eqs. 3–5), F_j = ∫_{t_j}^t Ψ_j / S_j with
+//!   Ψ_j = exp(−β|t − c|^{2σ}/((t−t_j)(t_{j+1}−t)^γ)^α), by tanh–sinh [`quadrature`] and
+//!   derivatives B′ = ±Ψ/S from Ψ itself (Taylor AD, no differencing).
+//!
+//! [`path`] builds the local arcs and lines (Eqs. 19–24), Algorithm 1 (tangents and turn
+//! directions) and Algorithm 2 (the blended path); [`dubins`] is the shortest-path baseline of
+//! Fig. 7. Knots use the paper's numbering t_1 … t_{n+2}, stored from index 0.
+
+pub mod bfbs;
+pub mod dubins;
+pub mod erbs;
+pub mod path;
+pub mod quadrature;
+
+use crate::curve::taylor::Taylor;
+use crate::scalar::Field;
+
+/// Bad input to the GERBS constructions, named by field.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum GerbsError {
+    #[error("knots: {0}")]
+    Knots(String),
+    #[error("waypoints: {0}")]
+    Waypoints(String),
+    #[error("{field}: {message}")]
+    Parameter {
+        field: &'static str,
+        message: String,
+    },
+}
+
+/// The knot vector t_1 ≤ t_2 < t_3 < … < t_{n+1} ≤ t_{n+2} (the end knots may be double,
+/// Section III) of n basis functions B_2 … B_{n+1}.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Knots<T> {
+    t: Vec<T>,
+}
+
+impl<T: Field> Knots<T> {
+    pub fn new(t: Vec<T>) -> Result<Self, GerbsError> {
+        if t.len() < 3 {
+            return Err(GerbsError::Knots(format!(
+                "need at least 3 knots (one basis function), got {}",
+                t.len()
+            )));
+        }
+        if !t.iter().all(Field::is_finite) {
+            return Err(GerbsError::Knots("every knot must be finite".into()));
+        }
+        let last = t.len() - 1;
+        for j in 1..=last {
+            // Only the two end pairs may repeat.
+            let strict = j != 1 && j != last;
+            let bad = if strict {
+                t[j] <= t[j - 1]
+            } else {
+                t[j] < t[j - 1]
+            };
+            if bad {
+                return Err(GerbsError::Knots(format!(
+                    "knots must increase (t_{} = {} after t_{} = {})",
+                    j + 1,
+                    t[j].to_f64(),
+                    j,
+                    t[j - 1].to_f64()
+                )));
+            }
+        }
+        Ok(Knots { t })
+    }
+
+    /// The knot vector of Algorithm 2 for n waypoints: t_1 = t_2 = 0, t_{n+1} = t_{n+2} = 1,
+    /// uniform steps 1/(n−1) in between (Fig. 1 for n = 5: {0, 0, 1/4, 2/4, 3/4, 1, 1}).
+    pub fn uniform(n: usize, ctx: &T::Ctx) -> Result<Self, GerbsError> {
+        if n < 2 {
+            return Err(GerbsError::Waypoints(format!(
+                "need at least 2 waypoints for a knot vector, got {n}"
+            )));
+        }
+        let mut t = vec![T::zero_in(ctx)];
+        for j in 0..n {
+            t.push(T::from_ratio(j as i64, (n - 1) as i64, ctx));
+        }
+        t.push(T::one_in(ctx));
+        Knots::new(t)
+    }
+
+    /// Knot t_j in the paper's numbering (1-based).
+    pub fn at(&self, j: usize) -> &T {
+        &self.t[j - 1]
+    }
+
+    /// The number n of basis functions (knots t_1 … t_{n+2}).
+    pub fn basis_count(&self) -> usize {
+        self.t.len() - 2
+    }
+
+    pub fn as_slice(&self) -> &[T] {
+        &self.t
+    }
+
+    /// The non-empty interval (t_j, t_{j+1}) holding t, with t_j ≤ t < t_{j+1} from the
+    /// right or t_j < t ≤ t_{j+1} from the left; `None` outside [t_1, t_{n+2}].
+    pub fn interval(&self, t: &T, side: Side) -> Option<usize> {
+        let m = self.t.len();
+        (1..m)
+            .filter(|&j| self.t[j - 1] < self.t[j])
+            .find(|&j| match side {
+                Side::Right => self.t[j - 1] <= *t && *t < self.t[j],
+                Side::Left => self.t[j - 1] < *t && *t <= self.t[j],
+            })
+            .or_else(|| {
+                // The end points: the only interval that reaches them.
+                let first = (1..m).find(|&j| self.t[j - 1] < self.t[j])?;
+                let last = (1..m).rev().find(|&j| self.t[j - 1] < self.t[j])?;
+                if *t == self.t[0] {
+                    Some(first)
+                } else if *t == self.t[m - 1] {
+                    Some(last)
+                } else {
+                    None
+                }
+            })
+    }
+}
+
+/// Which one-sided limit to take at a knot.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Side {
+    Left,
+    Right,
+}
+
+/// The rising function F_j of one kind of GERBS on each knot interval (Eq. 6).
+pub trait Blend<T: Field> {
+    /// The Taylor series of F_j at t ∈ [t_j, t_{j+1}] to `order` (interval j in the paper's
+    /// 1-based numbering).
+    fn rising(&self, knots: &Knots<T>, j: usize, t: &T, order: usize) -> Taylor<T>;
+
+    /// Points inside interval j where F_j is less smooth (quadrature splits there).
+    fn break_points(&self, knots: &Knots<T>, j: usize) -> Vec<T> {
+        let _ = (knots, j);
+        Vec::new()
+    }
+}
+
+/// The series of B_2 … B_{n+1} at t to `order`, from the side `side` at a knot; every basis
+/// function outside its support is the zero series. `None` outside [t_1, t_{n+2}].
+pub fn basis_series<T: Field, B: Blend<T> + ?Sized>(
+    knots: &Knots<T>,
+    blend: &B,
+    t: &T,
+    order: usize,
+    side: Side,
+) -> Option<Vec<Taylor<T>>> {
+    let n = knots.basis_count();
+    let j = knots.interval(t, side)?;
+    let ctx = t.ctx();
+    let zero = Taylor::constant(T::zero_in(&ctx)).with_order(order);
+    let mut out = vec![zero; n];
+    let f = blend.rising(knots, j, t, order);
+    // On (t_j, t_{j+1}): B_j = 1 − F_j falls, B_{j+1} = F_j rises (B_k is index k − 2).
+    if (2..=n + 1).contains(&j) {
+        out[j - 2] = Taylor::constant(T::one_in(&ctx)).with_order(order) - &f;
+    }
+    if (2..=n + 1).contains(&(j + 1)) {
+        out[j - 1] = f;
+    }
+    Some(out)
+}
+
+/// The derivatives B_k, B_k′, …, B_k^(order) of every basis function at t (k = 2 … n+1).
+pub fn basis_derivatives<T: Field, B: Blend<T> + ?Sized>(
+    knots: &Knots<T>,
+    blend: &B,
+    t: &T,
+    order: usize,
+    side: Side,
+) -> Option<Vec<Vec<T>>> {
+    basis_series(knots, blend, t, order, side).map(|s| s.iter().map(|b| b.derivatives()).collect())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scalar::BigRational;
+
+    #[test]
+    fn knot_vectors_are_checked() {
+        let k = Knots::<BigRational>::uniform(5, &()).expect("knots");
+        let r = |n: i64, d: i64| BigRational::new(n.into(), d.into());
+        assert_eq!(k.at(3), &r(1, 4));
+        assert_eq!(k.basis_count(), 5);
+        assert_eq!(k.interval(&r(1, 4), Side::Right), Some(3));
+        assert_eq!(k.interval(&r(1, 4), Side::Left), Some(2));
+        assert_eq!(k.interval(&r(0, 1), Side::Left), Some(2));
+        assert_eq!(k.interval(&r(1, 1), Side::Right), Some(5));
+        assert!(Knots::new(vec![0.0, 0.5, 0.5, 1.0]).is_err());
+        assert!(Knots::new(vec![0.0, 0.0, 0.5, 1.0, 1.0]).is_ok());
+        assert!(Knots::new(vec![0.0, 0.0, 0.0, 1.0]).is_err());
+    }
+}

@@ -1,0 +1,379 @@
+//! Local curves, Algorithms 1 and 2: the GERBS path through waypoints (Sec. III).
+//!
+//! Algorithm 1 gives each waypoint W_i a unit tangent m_i (the bisector of the incoming and
+//! outgoing directions; the segment direction at the ends) and a turn sign
+//! s_i = sign(m₁ ∧ m₂) (+1 left, −1 right; s_1 = −s_2, s_n = −s_{n−1}). Interior waypoints get
+//! a circular arc (Eqs. 19–22) of radius R through W_i: centre p_c = W_i + R s_i (−m_y, m_x)
+//! (Eq. 20, with cos(φ + sπ/2) = −s sin φ), angles from θ₁ to θ₂ over the local parameter
+//! u ∈ [0, 1], W_i at u = 1/2. The ends get lines (Eqs. 23–24) of length l. Algorithm 2
+//! blends c_{k−1} with B_k on the knots of Fig. 1, the local parameter of c_{k−1} being
+//! u = (t − t_{k−1})/(t_{k+1} − t_{k−1}), so c_{k−1}(1/2) = W_{k−1} sits at t_k.
+//!
+//! Eqs. (21)–(22) as printed, θ₁ = φ − sπ/2 + θ_o and θ₂ = φ − sπ/2 − θ_o, always sweep the
+//! arc clockwise: that is the travel direction for a right turn (s = −1) but runs a left
+//! turn backwards, so the path's tangent at a left-turn waypoint is −m_i.
+//! [`ArcConvention::TurnDirection`] sweeps by s: θ₁ = φ − sπ/2 − sθ_o, θ₂ = φ − sπ/2 + sθ_o.
+
+// `!(x > 0)` is meant: a NaN parameter must fail the range checks too.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+use super::quadrature::tanh_sinh;
+use super::{basis_series, Blend, GerbsError, Knots, Side};
+use crate::curve::taylor::Taylor;
+use crate::scalar::{Field, Real};
+
+/// Unit tangents m_i and turn signs s_i of Algorithm 1.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Tangents<T> {
+    pub m: Vec<[T; 2]>,
+    pub s: Vec<i32>,
+}
+
+fn unit<T: Real>(v: [T; 2]) -> [T; 2] {
+    let len = (v[0].clone() * &v[0] + &(v[1].clone() * &v[1])).sqrt();
+    [v[0].clone() / &len, v[1].clone() / &len]
+}
+
+fn direction<T: Real>(from: &[T; 2], to: &[T; 2]) -> [T; 2] {
+    unit([to[0].clone() - &from[0], to[1].clone() - &from[1]])
+}
+
+/// Check waypoints for Algorithm 1: at least 3, finite, no repeats of consecutive points,
+/// no interior triple whose turn sign is undefined (collinear, straight or reversing).
+pub fn check_waypoints<T: Real>(w: &[[T; 2]]) -> Result<(), GerbsError> {
+    if w.len() < 3 {
+        return Err(GerbsError::Waypoints(format!(
+            "need at least 3 waypoints, got {}",
+            w.len()
+        )));
+    }
+    if let Some(i) = w
+        .iter()
+        .position(|p| !p[0].is_finite() || !p[1].is_finite())
+    {
+        return Err(GerbsError::Waypoints(format!(
+            "waypoint {} is not finite",
+            i + 1
+        )));
+    }
+    for i in 1..w.len() {
+        if w[i] == w[i - 1] {
+            return Err(GerbsError::Waypoints(format!(
+                "waypoint {} repeats waypoint {}",
+                i + 1,
+                i
+            )));
+        }
+    }
+    for i in 1..w.len() - 1 {
+        let (a, b) = (direction(&w[i - 1], &w[i]), direction(&w[i], &w[i + 1]));
+        let wedge = a[0].clone() * &b[1] - &(a[1].clone() * &b[0]);
+        if wedge.is_zero() {
+            return Err(GerbsError::Waypoints(format!(
+                "waypoints {}, {}, {} are collinear: the turn direction at {} is undefined",
+                i,
+                i + 1,
+                i + 2,
+                i + 1
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// Algorithm 1.
+pub fn tangents<T: Real>(w: &[[T; 2]]) -> Result<Tangents<T>, GerbsError> {
+    check_waypoints(w)?;
+    let n = w.len();
+    let mut m = vec![direction(&w[0], &w[1])];
+    let mut s = vec![0];
+    for i in 1..n - 1 {
+        let (a, b) = (direction(&w[i - 1], &w[i]), direction(&w[i], &w[i + 1]));
+        let wedge = a[0].clone() * &b[1] - &(a[1].clone() * &b[0]);
+        m.push(unit([a[0].clone() + &b[0], a[1].clone() + &b[1]]));
+        s.push(if wedge > T::zero_in(&wedge.ctx()) {
+            1
+        } else {
+            -1
+        });
+    }
+    m.push(direction(&w[n - 2], &w[n - 1]));
+    s.push(-s[n - 2]);
+    s[0] = -s[1];
+    Ok(Tangents { m, s })
+}
+
+/// How θ₁ and θ₂ of an arc are chosen.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ArcConvention {
+    /// Eqs. (21)–(22) as printed: θ₁,₂ = φ − sπ/2 ± θ_o (always clockwise).
+    AsPrinted,
+    /// Sweep in the turn direction: θ₁,₂ = φ − sπ/2 ∓ sθ_o.
+    TurnDirection,
+}
+
+/// One local curve, parametrized by u ∈ [0, 1].
+#[derive(Clone, Debug, PartialEq)]
+pub enum LocalCurve<T> {
+    /// origin + u·(l m): the start line of Eq. (23); for the end line of Eq. (24) the
+    /// origin is W_n − l m.
+    Line { origin: [T; 2], step: [T; 2] },
+    /// centre + R (cos θ, sin θ), θ = (1 − u)θ₁ + uθ₂ (Eq. 19).
+    Arc {
+        centre: [T; 2],
+        radius: T,
+        theta1: T,
+        theta2: T,
+    },
+}
+
+impl<T: Real> LocalCurve<T> {
+    /// The curve as series in t, given the local parameter u as a series.
+    pub fn series(&self, u: &Taylor<T>) -> [Taylor<T>; 2] {
+        let k = |v: &T| Taylor::constant(v.clone());
+        match self {
+            LocalCurve::Line { origin, step } => [
+                k(&origin[0]) + &(u.clone() * &k(&step[0])),
+                k(&origin[1]) + &(u.clone() * &k(&step[1])),
+            ],
+            LocalCurve::Arc {
+                centre,
+                radius,
+                theta1,
+                theta2,
+            } => {
+                let theta = k(theta1) + &(u.clone() * &k(&(theta2.clone() - theta1)));
+                let (s, c) = theta.sin_cos();
+                [
+                    k(&centre[0]) + &(c * &k(radius)),
+                    k(&centre[1]) + &(s * &k(radius)),
+                ]
+            }
+        }
+    }
+
+    /// The point at u.
+    pub fn at(&self, u: &T) -> [T; 2] {
+        let [x, y] = self.series(&Taylor::constant(u.clone()));
+        [x.value().clone(), y.value().clone()]
+    }
+}
+
+/// The inputs of a GERBS path.
+#[derive(Clone, Debug)]
+pub struct PathSpec<T> {
+    pub waypoints: Vec<[T; 2]>,
+    pub radius: T,
+    pub theta_o: T,
+    /// l of Eqs. (23)–(24); `None`: 2Rθ_o, the length of each arc.
+    pub line_length: Option<T>,
+    pub convention: ArcConvention,
+}
+
+/// The local curves c_1 … c_n of Algorithm 2 (lines at the ends, arcs inside), with the
+/// tangents of Algorithm 1 (or the given ones).
+pub fn local_curves<T: Real>(
+    spec: &PathSpec<T>,
+    given: Option<&Tangents<T>>,
+) -> Result<(Vec<LocalCurve<T>>, Tangents<T>), GerbsError> {
+    let tan = match given {
+        Some(t) => t.clone(),
+        None => tangents(&spec.waypoints)?,
+    };
+    let ctx = spec.radius.ctx();
+    let zero = T::zero_in(&ctx);
+    if !(spec.radius > zero) || !spec.radius.is_finite() {
+        return Err(GerbsError::Parameter {
+            field: "radius",
+            message: "the arc radius R must be a positive number".into(),
+        });
+    }
+    let pi = T::pi(&ctx);
+    if !(spec.theta_o.clone().abs() < pi) || spec.theta_o.is_zero() {
+        return Err(GerbsError::Parameter {
+            field: "theta_o",
+            message: "theta_o must lie in (-pi, pi) and not be 0".into(),
+        });
+    }
+    let length = match &spec.line_length {
+        Some(l) if !(*l > zero) || !l.is_finite() => {
+            return Err(GerbsError::Parameter {
+                field: "line_length",
+                message: "the line length l must be a positive number".into(),
+            })
+        }
+        Some(l) => l.clone(),
+        None => T::from_i64(2, &ctx) * &spec.radius * &spec.theta_o.clone().abs(),
+    };
+    let n = spec.waypoints.len();
+    let half_pi = pi / &T::from_i64(2, &ctx);
+    let mut curves = Vec::with_capacity(n);
+    for (i, w) in spec.waypoints.iter().enumerate() {
+        let m = &tan.m[i];
+        let step = [length.clone() * &m[0], length.clone() * &m[1]];
+        if i == 0 {
+            curves.push(LocalCurve::Line {
+                origin: w.clone(),
+                step,
+            });
+        } else if i == n - 1 {
+            curves.push(LocalCurve::Line {
+                origin: [w[0].clone() - &step[0], w[1].clone() - &step[1]],
+                step,
+            });
+        } else {
+            let s = T::from_i64(tan.s[i] as i64, &ctx);
+            let centre = [
+                w[0].clone() - &(spec.radius.clone() * &s * &m[1]),
+                w[1].clone() + &(spec.radius.clone() * &s * &m[0]),
+            ];
+            let phi = m[1].atan2(&m[0]);
+            let base = phi - &(s.clone() * &half_pi);
+            let (theta1, theta2) = match spec.convention {
+                ArcConvention::AsPrinted => (base.clone() + &spec.theta_o, base - &spec.theta_o),
+                ArcConvention::TurnDirection => (
+                    base.clone() - &(s.clone() * &spec.theta_o),
+                    base + &(s * &spec.theta_o),
+                ),
+            };
+            curves.push(LocalCurve::Arc {
+                centre,
+                radius: spec.radius.clone(),
+                theta1,
+                theta2,
+            });
+        }
+    }
+    Ok((curves, tan))
+}
+
+/// A point of the path with its derivatives and curvature.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PathPoint<T> {
+    pub t: T,
+    pub point: [T; 2],
+    pub d1: [T; 2],
+    pub d2: [T; 2],
+    /// Signed curvature (x′y″ − y′x″)/|p′|³.
+    pub curvature: T,
+    /// dκ/dt.
+    pub curvature_rate: T,
+}
+
+/// The blended path p(t) = Σ c_{k−1}(t) B_k(t) (Eq. 25, Algorithm 2).
+pub struct GerbsPath<T, B> {
+    pub knots: Knots<T>,
+    pub blend: B,
+    pub curves: Vec<LocalCurve<T>>,
+    pub tangents: Tangents<T>,
+}
+
+impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
+    /// Algorithm 2 on the knots of Fig. 1 with the given basis.
+    pub fn new(spec: &PathSpec<T>, blend: B) -> Result<Self, GerbsError> {
+        let (curves, tangents) = local_curves(spec, None)?;
+        let knots = Knots::uniform(spec.waypoints.len(), &spec.radius.ctx())?;
+        Ok(GerbsPath {
+            knots,
+            blend,
+            curves,
+            tangents,
+        })
+    }
+
+    /// The path from explicit parts (knots must have n + 2 entries for n curves).
+    pub fn from_parts(
+        knots: Knots<T>,
+        blend: B,
+        curves: Vec<LocalCurve<T>>,
+        tangents: Tangents<T>,
+    ) -> Self {
+        GerbsPath {
+            knots,
+            blend,
+            curves,
+            tangents,
+        }
+    }
+
+    /// p as series in t to `order` at t ∈ [0, 1], one-sided at knots.
+    pub fn series(&self, t: &T, order: usize, side: Side) -> [Taylor<T>; 2] {
+        let ctx = t.ctx();
+        let zero = Taylor::constant(T::zero_in(&ctx)).with_order(order);
+        let mut p = [zero.clone(), zero];
+        let Some(basis) = basis_series(&self.knots, &self.blend, t, order, side) else {
+            return p;
+        };
+        let var = Taylor::variable(t.clone(), order);
+        for (i, b) in basis.iter().enumerate() {
+            if b.c.iter().all(Field::is_zero) {
+                continue;
+            }
+            let k = i + 2;
+            let (lo, hi) = (self.knots.at(k - 1), self.knots.at(k + 1));
+            let u =
+                (var.clone() - &Taylor::constant(lo.clone())) / &Taylor::constant(hi.clone() - lo);
+            let c = self.curves[i].series(&u);
+            p[0] += &(c[0].clone() * b);
+            p[1] += &(c[1].clone() * b);
+        }
+        p
+    }
+
+    /// Point, derivatives and curvature at t.
+    pub fn at(&self, t: &T, side: Side) -> PathPoint<T> {
+        let [x, y] = self.series(t, 3, side);
+        let (dx, dy) = (x.derivative_series(), y.derivative_series());
+        let (ddx, ddy) = (dx.derivative_series(), dy.derivative_series());
+        let speed2 = dx.clone() * &dx + &(dy.clone() * &dy);
+        let cross = dx.clone() * &ddy - &(dy.clone() * &ddx);
+        let kappa = cross / &(speed2.clone() * &speed2.sqrt());
+        let d = |s: &Taylor<T>, k: usize| s.derivatives()[k].clone();
+        PathPoint {
+            t: t.clone(),
+            point: [d(&x, 0), d(&y, 0)],
+            d1: [d(&x, 1), d(&y, 1)],
+            d2: [d(&x, 2), d(&y, 2)],
+            curvature: d(&kappa, 0),
+            curvature_rate: d(&kappa, 1),
+        }
+    }
+
+    /// `count` ≥ 2 evenly spaced points of [0, 1] (from the right, the last from the left).
+    pub fn sample(&self, count: usize) -> Vec<PathPoint<T>> {
+        let ctx = self.knots.at(1).ctx();
+        let last = count.max(2) - 1;
+        (0..=last)
+            .map(|i| {
+                let t = T::from_ratio(i as i64, last as i64, &ctx);
+                self.at(&t, if i == last { Side::Left } else { Side::Right })
+            })
+            .collect()
+    }
+
+    /// The arc length ∫|p′| dt, by tanh–sinh on each knot interval (split at the basis's
+    /// break points), to relative tolerance `tol`.
+    pub fn length(&self, tol: &T) -> T {
+        let ctx = tol.ctx();
+        let mut total = T::zero_in(&ctx);
+        let knots = self.knots.as_slice();
+        for j in 1..knots.len() {
+            let (a, b) = (&knots[j - 1], &knots[j]);
+            if a >= b {
+                continue;
+            }
+            let mut cuts = vec![a.clone()];
+            cuts.extend(self.blend.break_points(&self.knots, j));
+            cuts.push(b.clone());
+            for w in cuts.windows(2) {
+                let speed = |l: &T, _: &T| {
+                    let t = w[0].clone() + l;
+                    let [x, y] = self.series(&t, 1, Side::Right);
+                    let (dx, dy) = (x.derivatives()[1].clone(), y.derivatives()[1].clone());
+                    (dx.clone() * &dx + &(dy.clone() * &dy)).sqrt()
+                };
+                total += &tanh_sinh(&w[0], &w[1], speed, tol, 12).value;
+            }
+        }
+        total
+    }
+}
