@@ -174,16 +174,22 @@ impl<T: Real> Erbs<T> {
         }
     }
 
-    /// The centre c_j if it lies strictly inside the interval.
-    pub fn centre(&self, knots: &Knots<T>, j: usize) -> Option<T> {
+    /// The centre c_j of interval j under this basis's reading of Eq. (4), inside the
+    /// interval or not.
+    pub fn centre_point(&self, knots: &Knots<T>, j: usize) -> T {
         let (a, b) = (knots.at(j), knots.at(j + 1));
         let p = self.params(j);
         let one = T::one_in(&a.ctx());
-        let c = match self.reading {
+        match self.reading {
             CentreReading::Cited => (one - &p.lambda) * a + &(p.lambda.clone() * b),
             CentreReading::AsPrinted => (one - &p.lambda) * a - &(p.lambda.clone() * b),
-        };
-        (c > *a && c < *b).then_some(c)
+        }
+    }
+
+    /// The centre c_j if it lies strictly inside the interval.
+    pub fn centre(&self, knots: &Knots<T>, j: usize) -> Option<T> {
+        let c = self.centre_point(knots, j);
+        (c > *knots.at(j) && c < *knots.at(j + 1)).then_some(c)
     }
 
     /// Ψ_j (unnormalized) in any Real R (T itself or a Taylor series over T), from the

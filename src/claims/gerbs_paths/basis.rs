@@ -321,12 +321,8 @@ pub fn centre_reading() -> (Outcome, Vec<Vec<String>>) {
         (CentreReading::AsPrinted, "printed: (1−λ)t_k − λt_{k+1}"),
     ] {
         let e = erbs::<f64>(&(), ErbsSet::Fig2Alpha1, reading);
-        let p = e.params(3);
         let (a, b) = (*k.at(3), *k.at(4));
-        let centre = match reading {
-            CentreReading::Cited => (1.0 - p.lambda) * a + p.lambda * b,
-            CentreReading::AsPrinted => (1.0 - p.lambda) * a - p.lambda * b,
-        };
+        let centre = e.centre_point(&k, 3);
         // Asymmetry of B_4 about t_4 = 1/2 and where Ψ_3 peaks on (1/4, 1/2).
         let b4 = |t: f64| {
             let side = if t < 0.5 { Side::Left } else { Side::Right };

@@ -170,19 +170,13 @@ pub fn verify() -> PaperOutput {
         (figure_name(2), figure2()),
         (
             figure_name(3),
-            path_figure(
-                &[
-                    ("ERBS, arcs swept in the turn direction", &erbs_pts),
-                    ("ERBS, Eqs. (21)-(22) as printed", &printed),
-                ],
-                true,
-            ),
+            path_figure(&[
+                ("ERBS, arcs swept in the turn direction", &erbs_pts),
+                ("ERBS, Eqs. (21)-(22) as printed", &printed),
+            ]),
         ),
         (figure_name(4), figure4(&erbs_pts)),
-        (
-            figure_name(5),
-            path_figure(&[("BFBS (i = 2)", &bfbs_pts)], true),
-        ),
+        (figure_name(5), path_figure(&[("BFBS (i = 2)", &bfbs_pts)])),
         (figure_name(6), figure6(&bfbs_pts, &erbs_pts)),
         (figure_name(7), figure7(&erbs_pts, &legs)),
     ];
@@ -291,24 +285,24 @@ fn waypoint_series() -> Series {
     )
 }
 
-fn path_figure(paths: &[(&str, &[PathPoint<f64>])], waypoints: bool) -> String {
+/// A panel of paths in the plane (equal axes) with the waypoints marked.
+fn plane_panel(title: &str, mut series: Vec<Series>) -> Panel {
+    series.push(waypoint_series());
+    Panel {
+        title: title.into(),
+        x_label: "x".into(),
+        y_label: "y".into(),
+        series,
+        equal_aspect: true,
+        legend: Corner::LowerLeft,
+        ..Panel::default()
+    }
+}
+
+fn path_figure(paths: &[(&str, &[PathPoint<f64>])]) -> String {
     let panels: Vec<Panel> = paths
         .iter()
-        .map(|(name, pts)| {
-            let mut series = vec![curve(name, xy(pts), Style::Solid, 1)];
-            if waypoints {
-                series.push(waypoint_series());
-            }
-            Panel {
-                title: (*name).into(),
-                x_label: "x".into(),
-                y_label: "y".into(),
-                series,
-                equal_aspect: true,
-                legend: Corner::LowerLeft,
-                ..Panel::default()
-            }
-        })
+        .map(|(name, pts)| plane_panel(name, vec![curve(name, xy(pts), Style::Solid, 1)]))
         .collect();
     let cols = panels.len();
     plot::render_or_note(&panels, (1, cols), (700 * cols as u32, 500))
@@ -331,17 +325,11 @@ fn figure4(erbs: &[PathPoint<f64>]) -> String {
             2,
         ));
     }
-    series.push(waypoint_series());
     plot::render_or_note(
-        &[Panel {
-            title: "local curves: lines at the ends, arcs R = 80, theta_o = pi/8".into(),
-            x_label: "x".into(),
-            y_label: "y".into(),
+        &[plane_panel(
+            "local curves: lines at the ends, arcs R = 80, theta_o = pi/8",
             series,
-            equal_aspect: true,
-            legend: Corner::LowerLeft,
-            ..Panel::default()
-        }],
+        )],
         (1, 1),
         (900, 500),
     )
@@ -357,19 +345,13 @@ fn curvature_series(name: &str, pts: &[PathPoint<f64>], color: usize) -> Series 
 }
 
 fn figure6(bfbs: &[PathPoint<f64>], erbs: &[PathPoint<f64>]) -> String {
-    let a = Panel {
-        title: "paths".into(),
-        x_label: "x".into(),
-        y_label: "y".into(),
-        series: vec![
+    let a = plane_panel(
+        "paths",
+        vec![
             curve("BFBS", xy(bfbs), Style::Solid, 2),
             curve("ERBS", xy(erbs), Style::Dashed, 1),
-            waypoint_series(),
         ],
-        equal_aspect: true,
-        legend: Corner::LowerLeft,
-        ..Panel::default()
-    };
+    );
     let b = Panel {
         title: "signed curvature".into(),
         x_label: "t".into(),
@@ -409,19 +391,13 @@ fn figure7(erbs: &[PathPoint<f64>], legs: &[crate::gerbs::dubins::DubinsPath<f64
         }
         ke.push((s, p.curvature));
     }
-    let a = Panel {
-        title: "paths".into(),
-        x_label: "x".into(),
-        y_label: "y".into(),
-        series: vec![
+    let a = plane_panel(
+        "paths",
+        vec![
             curve("Dubins (R = 80)", dubins, Style::Solid, 2),
             curve("ERBS", xy(erbs), Style::Dashed, 1),
-            waypoint_series(),
         ],
-        equal_aspect: true,
-        legend: Corner::LowerLeft,
-        ..Panel::default()
-    };
+    );
     let b = Panel {
         title: "signed curvature along the path".into(),
         x_label: "arc length".into(),

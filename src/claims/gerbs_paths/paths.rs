@@ -5,7 +5,7 @@ use super::basis::fmt_e;
 use super::setup::{bfbs_path, erbs_path, spec, ErbsSet, HI, LO, RADIUS};
 use crate::claims::{Outcome, Verdict};
 use crate::gerbs::dubins::{shortest, DubinsPath};
-use crate::gerbs::path::{local_curves, ArcConvention, GerbsPath, PathPoint};
+use crate::gerbs::path::{local_curves, tangents, ArcConvention, GerbsPath, PathPoint};
 use crate::gerbs::{Blend, Side};
 use crate::scalar::certify::certify;
 use crate::scalar::Float;
@@ -66,6 +66,10 @@ pub fn algorithm2() -> (Outcome, Outcome, Outcome, Vec<Vec<String>>) {
     let mut fixed_backwards = 0;
     let mut kappa = Vec::new();
     let mut kappa_ok = true;
+    // Turn signs of Algorithm 1 (the same for every basis and arc convention).
+    let turns = tangents(&super::setup::waypoints::<f64>(&()))
+        .expect("documented waypoints are valid")
+        .s;
     for (name, conv) in [
         ("printed", ArcConvention::AsPrinted),
         ("turn direction", ArcConvention::TurnDirection),
@@ -84,7 +88,6 @@ pub fn algorithm2() -> (Outcome, Outcome, Outcome, Vec<Vec<String>>) {
                 .iter()
                 .map(|a| format!("{:+.3}", a.to_f64()))
                 .collect();
-            let turns = bfbs_path::<f64>(&(), conv).tangents.s;
             for (i, a) in hi.along.iter().enumerate() {
                 if a.is_sign_negative() {
                     match conv {
@@ -144,17 +147,12 @@ pub fn algorithm2() -> (Outcome, Outcome, Outcome, Vec<Vec<String>>) {
     (interp, tangent, curvature, table)
 }
 
-/// Sample a path in f64.
-pub fn sample<B: Blend<f64>>(path: &GerbsPath<f64, B>, count: usize) -> Vec<PathPoint<f64>> {
-    path.sample(count)
-}
-
 /// Fig. 6: BFBS against ERBS at the same parameter.
 pub fn bfbs_vs_erbs() -> (Outcome, Vec<PathPoint<f64>>, Vec<PathPoint<f64>>) {
     let conv = ArcConvention::TurnDirection;
     let bp = bfbs_path::<f64>(&(), conv);
     let ep = erbs_path::<f64>(&(), ErbsSet::Smooth, conv);
-    let (bs, es) = (sample(&bp, 801), sample(&ep, 801));
+    let (bs, es) = (bp.sample(801), ep.sample(801));
     let dist = |a: &PathPoint<f64>, b: &PathPoint<f64>| {
         (a.point[0] - b.point[0]).hypot(a.point[1] - b.point[1])
     };
@@ -274,11 +272,10 @@ pub fn against_dubins(erbs: &[PathPoint<f64>]) -> (Outcome, Vec<DubinsPath<f64>>
 pub fn locality() -> Outcome {
     let conv = ArcConvention::TurnDirection;
     let mut sp = spec::<f64>(&(), conv);
-    let (curves, tan) = local_curves(&sp, None).expect("valid");
+    let tan = tangents(&sp.waypoints).expect("valid");
     let base = bfbs_path::<f64>(&(), conv);
     sp.waypoints[2] = [sp.waypoints[2][0] + 20.0, sp.waypoints[2][1] - 30.0];
     let (moved_curves, _) = local_curves(&sp, Some(&tan)).expect("valid");
-    let _ = curves;
     let kept = GerbsPath::from_parts(
         base.knots.clone(),
         base.blend.clone(),
