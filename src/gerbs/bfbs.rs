@@ -5,7 +5,10 @@
 //! integral (Eq. 8), so the rising function is the regularized incomplete beta function in
 //! u = (t − t_j)/h, which has the exact Bernstein form
 //!
-//! F_j(u) = S_j ∫ Ψ_j = I_u(p+1, q+1) = Σ_{r=p+1}^{N} C(N, r) u^r (1−u)^{N−r},  N = p + q + 1.
+//! F_j(u) = S_j ∫ Ψ_j = I_u(p+1, q+1) = Σ_{r=p+1}^{N} C(N, r) u^r (1−u)^{N−r},  N = p + q + 1,
+//!
+//! and the falling 1 − F_j is the complementary sum over r = 0 … p (no cancellation near
+//! t_{j+1}; the two sums add to (u + 1 − u)^N = 1 only as an identity, which the claims check).
 //!
 //! It is evaluated as a Taylor series in t (exact in rational arithmetic). B_k − 1 has a zero
 //! of order i_k + 1 at t_k from both sides, so the basis is C^{i_k} there and no more
@@ -62,8 +65,17 @@ impl Bfbs {
     }
 }
 
-impl<T: Field> Blend<T> for Bfbs {
-    fn rising(&self, knots: &Knots<T>, j: usize, t: &T, order: usize) -> Taylor<T> {
+impl Bfbs {
+    /// Σ_{r ∈ terms} C(N, r) u^r (1−u)^{N−r} on interval j as a series in t: the terms
+    /// r = p+1 … N give F_j, the terms r = 0 … p its complement 1 − F_j.
+    fn bernstein_sum<T: Field>(
+        &self,
+        knots: &Knots<T>,
+        j: usize,
+        t: &T,
+        order: usize,
+        rising: bool,
+    ) -> Taylor<T> {
         let (p, q) = (self.exponent(j) as usize, self.exponent(j + 1) as usize);
         let ctx = t.ctx();
         let h = knots.at(j + 1).clone() - knots.at(j);
@@ -73,11 +85,22 @@ impl<T: Field> Blend<T> for Bfbs {
         let v = one - &u;
         let big = p + q + 1;
         let mut f = Taylor::constant(T::zero_in(&ctx)).with_order(order);
-        for r in p + 1..=big {
+        let terms = if rising { p + 1..=big } else { 0..=p };
+        for r in terms {
             let term = powi(&u, r as u32) * &powi(&v, (big - r) as u32);
             f += &(term * &Taylor::constant(T::from_i64(binom(big, r), &ctx)));
         }
         f
+    }
+}
+
+impl<T: Field> Blend<T> for Bfbs {
+    fn rising(&self, knots: &Knots<T>, j: usize, t: &T, order: usize) -> Taylor<T> {
+        self.bernstein_sum(knots, j, t, order, true)
+    }
+
+    fn falling(&self, knots: &Knots<T>, j: usize, t: &T, order: usize) -> Taylor<T> {
+        self.bernstein_sum(knots, j, t, order, false)
     }
 }
 

@@ -13,7 +13,8 @@
 //!
 //! F_k is computed by tanh–sinh quadrature, split at c_k when 2σ is not an even integer
 //! (|t − c|^{2σ} then has a kink there that would slow the rule down); near t_{k+1} the
-//! complement 1 − ∫_t^{t_{k+1}} Ψ/S is used so that no digits cancel. Derivatives are exact:
+//! complement 1 − ∫_t^{t_{k+1}} Ψ/S is used so that no digits cancel, and the falling
+//! B_k = 1 − F_k there is ∫_t^{t_{k+1}} Ψ/S itself (relative accuracy where it is tiny). Derivatives are exact:
 //! F′ = Ψ/S and the higher ones come from Ψ's own Taylor series.
 //!
 //! For α > 0 every derivative of Ψ vanishes at both knots (Ψ ~ exp(−C/(t − t_k)^α)), so the
@@ -23,7 +24,7 @@
 
 // `!(x > 0)` is meant: a NaN parameter must fail the range checks too.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
-use super::quadrature::{default_tolerance, tanh_sinh_scaled};
+use super::quadrature::{default_tolerance, TanhSinh};
 use super::{Blend, GerbsError, Knots};
 use crate::curve::taylor::Taylor;
 use crate::scalar::{powi, Real};
@@ -99,6 +100,12 @@ impl<T: Real> ErbsParams<T> {
     }
 }
 
+/// x as a small whole number, when it is exactly one.
+fn whole<T: Real>(x: &T) -> Option<u32> {
+    let r = x.to_f64().round();
+    ((1.0..=64.0).contains(&r) && T::from_i64(r as i64, &x.ctx()) == *x).then_some(r as u32)
+}
+
 /// Where the numerator of Ψ_k vanishes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum CentreReading {
@@ -115,7 +122,12 @@ pub struct Erbs<T> {
     reading: CentreReading,
     /// S_j per interval j (paper numbering, index j − 1), zero for empty intervals.
     scale: Vec<T>,
+    /// The quadrature rule of the working precision, shared by every integral.
+    rule: TanhSinh<T>,
 }
+
+/// The most halvings of the tanh–sinh step for one integral.
+const MAX_LEVEL: usize = 14;
 
 impl<T: Real> Erbs<T> {
     /// The basis on `knots` with `params` (one set, or one per interval t_j…t_{j+1},
@@ -139,6 +151,7 @@ impl<T: Real> Erbs<T> {
             params,
             reading,
             scale: Vec::new(),
+            rule: TanhSinh::new(&knots.at(1).ctx(), MAX_LEVEL),
         };
         erbs.scale = (1..=intervals)
             .map(|j| {
@@ -227,13 +240,21 @@ impl<T: Real> Erbs<T> {
             // defined at the knots too.
             return (-(lift(&p.beta) * &numerator)).exp();
         }
-        let denominator = (lift(&p.alpha) * &(left.ln() + &(lift(&p.gamma) * &right.ln()))).exp();
+        // ((t − t_j)(t_{j+1} − t)^γ)^α: by multiplication when α and γ are whole numbers
+        // (one exp per evaluation instead of three transcendentals).
+        let denominator = match (whole(&p.alpha), whole(&p.gamma)) {
+            (Some(a), Some(g)) => powi(&(left.clone() * &powi(right, g)), a),
+            _ => (lift(&p.alpha) * &(left.ln() + &(lift(&p.gamma) * &right.ln()))).exp(),
+        };
         (-(lift(&p.beta) * &numerator / &denominator)).exp()
     }
 
     /// ∫_lo^hi Ψ_j for t_j ≤ lo < hi ≤ t_{j+1}, split at the centre.
     pub fn integral(&self, knots: &Knots<T>, j: usize, lo: &T, hi: &T) -> T {
         let ctx = lo.ctx();
+        if lo >= hi {
+            return T::zero_in(&ctx);
+        }
         let mut cuts = vec![lo.clone()];
         let centre = self
             .centre(knots, j)
@@ -269,7 +290,7 @@ impl<T: Real> Erbs<T> {
                 .get(j - 1)
                 .cloned()
                 .unwrap_or_else(|| T::zero_in(&ctx));
-            total += &tanh_sinh_scaled(p, q, f, &tol, &scale, 14).value;
+            total += &self.rule.integrate(p, q, f, &tol, &scale).value;
         }
         total
     }
@@ -284,36 +305,76 @@ impl<T: Real> Blend<T> for Erbs<T> {
     }
 
     fn rising(&self, knots: &Knots<T>, j: usize, t: &T, order: usize) -> Taylor<T> {
+        self.pair(knots, j, t, order).1
+    }
+
+    fn falling(&self, knots: &Knots<T>, j: usize, t: &T, order: usize) -> Taylor<T> {
+        self.pair(knots, j, t, order).0
+    }
+
+    /// 1 − F_j and F_j from one quadrature. The value is the integral over the nearer end of
+    /// the interval; the side it belongs to takes it directly and the other its complement, so
+    /// a value near 0 keeps its relative accuracy.
+    fn pair(&self, knots: &Knots<T>, j: usize, t: &T, order: usize) -> (Taylor<T>, Taylor<T>) {
         let ctx = t.ctx();
         let (a, b) = (knots.at(j), knots.at(j + 1));
         let s = self.normalizer(j);
         let mid = (a.clone() + b) / &T::from_i64(2, &ctx);
-        let value = if *t <= *a {
-            T::zero_in(&ctx)
+        let (zero, one) = (T::zero_in(&ctx), T::one_in(&ctx));
+        // (∫ from the nearer end) / S, and whether that end is t_j.
+        let (near, from_left) = if *t <= *a {
+            (zero, true)
         } else if *t >= *b {
-            T::one_in(&ctx)
+            (zero, false)
         } else if *t <= mid {
-            self.integral(knots, j, a, t) / s
+            (self.integral(knots, j, a, t) / s, true)
         } else {
-            T::one_in(&ctx) - &(self.integral(knots, j, t, b) / s)
+            (self.integral(knots, j, t, b) / s, false)
+        };
+        let other = one - &near;
+        let (falling, rising) = if from_left {
+            (other, near)
+        } else {
+            (near, other)
         };
         if order == 0 {
-            return Taylor::constant(value);
+            return (Taylor::constant(falling), Taylor::constant(rising));
         }
-        // F′ = Ψ/S as a series of order − 1, then integrated; at the knots every derivative
-        // of Ψ is 0 for α > 0 (the limit), which the series at t_j cannot represent.
-        // (Evaluated at a knot only for α = 0, where the kernel has no denominator.)
+        let psi = self.slope_series(knots, j, t, order - 1);
+        (
+            Taylor::integrate(&(-psi.clone()), falling, order + 1),
+            Taylor::integrate(&psi, rising, order + 1),
+        )
+    }
+
+    fn slope(&self, knots: &Knots<T>, j: usize, t: &T) -> T {
+        self.slope_series(knots, j, t, 0).value().clone()
+    }
+
+    fn sweeps(&self) -> bool {
+        true
+    }
+
+    fn increment(&self, knots: &Knots<T>, j: usize, from: &T, to: &T) -> T {
+        self.integral(knots, j, from, to) / self.normalizer(j)
+    }
+}
+
+impl<T: Real> Erbs<T> {
+    /// F_j′ = Ψ_j/S_j as a series of `order` at t. At the knots every derivative of Ψ is 0
+    /// for α > 0 (the limit), which the series at t_j cannot represent; it is evaluated at
+    /// a knot only for α = 0, where the kernel has no denominator.
+    fn slope_series(&self, knots: &Knots<T>, j: usize, t: &T, order: usize) -> Taylor<T> {
+        let (a, b) = (knots.at(j), knots.at(j + 1));
         let flat_at_knots = !self.params(j).alpha.is_zero();
-        let psi = if flat_at_knots && (*t <= *a || *t >= *b) {
-            Taylor::constant(T::zero_in(&ctx)).with_order(order - 1)
-        } else {
-            let var = Taylor::variable(t.clone(), order - 1);
-            let left = var.clone() - &Taylor::constant(a.clone());
-            let right = Taylor::constant(b.clone()) - &var;
-            self.kernel(knots, j, &left, &right, |v| Taylor::constant(v.clone()))
-                / &Taylor::constant(s.clone())
-        };
-        Taylor::integrate(&psi, value, order + 1)
+        if flat_at_knots && (*t <= *a || *t >= *b) {
+            return Taylor::constant(T::zero_in(&t.ctx())).with_order(order);
+        }
+        let var = Taylor::variable(t.clone(), order);
+        let left = var.clone() - &Taylor::constant(a.clone());
+        let right = Taylor::constant(b.clone()) - &var;
+        self.kernel(knots, j, &left, &right, |v| Taylor::constant(v.clone()))
+            / &Taylor::constant(self.normalizer(j).clone())
     }
 }
 

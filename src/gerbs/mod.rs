@@ -151,6 +151,38 @@ pub trait Blend<T: Field> {
     /// 1-based numbering).
     fn rising(&self, knots: &Knots<T>, j: usize, t: &T, order: usize) -> Taylor<T>;
 
+    /// The series of 1 − F_j at t. Kinds override it to compute the complement directly:
+    /// near t_{j+1}, where 1 − F_j is tiny, subtracting from 1 would leave only absolute
+    /// accuracy.
+    fn falling(&self, knots: &Knots<T>, j: usize, t: &T, order: usize) -> Taylor<T> {
+        Taylor::constant(T::one_in(&t.ctx())).with_order(order) - &self.rising(knots, j, t, order)
+    }
+
+    /// Both 1 − F_j and F_j at t (kinds whose F_j is a quadrature compute it once).
+    fn pair(&self, knots: &Knots<T>, j: usize, t: &T, order: usize) -> (Taylor<T>, Taylor<T>) {
+        (
+            self.falling(knots, j, t, order),
+            self.rising(knots, j, t, order),
+        )
+    }
+
+    /// F_j′(t).
+    fn slope(&self, knots: &Knots<T>, j: usize, t: &T) -> T {
+        self.rising(knots, j, t, 1).derivatives()[1].clone()
+    }
+
+    /// Whether F_j is a quadrature, so that a sweep over many points (a path length) should
+    /// carry F_j from one point to the next with [`Blend::increment`] instead of integrating
+    /// from a knot every time.
+    fn sweeps(&self) -> bool {
+        false
+    }
+
+    /// F_j(to) − F_j(from).
+    fn increment(&self, knots: &Knots<T>, j: usize, from: &T, to: &T) -> T {
+        self.rising(knots, j, to, 0).value().clone() - self.rising(knots, j, from, 0).value()
+    }
+
     /// Points inside interval j where F_j is less smooth (quadrature splits there).
     fn break_points(&self, knots: &Knots<T>, j: usize) -> Vec<T> {
         let _ = (knots, j);
@@ -172,13 +204,17 @@ pub fn basis_series<T: Field, B: Blend<T> + ?Sized>(
     let ctx = t.ctx();
     let zero = Taylor::constant(T::zero_in(&ctx)).with_order(order);
     let mut out = vec![zero; n];
-    let f = blend.rising(knots, j, t, order);
     // On (t_j, t_{j+1}): B_j = 1 − F_j falls, B_{j+1} = F_j rises (B_k is index k − 2).
-    if (2..=n + 1).contains(&j) {
-        out[j - 2] = Taylor::constant(T::one_in(&ctx)).with_order(order) - &f;
-    }
-    if (2..=n + 1).contains(&(j + 1)) {
-        out[j - 1] = f;
+    // Each is computed on its own, so Σ B_k = 1 is a property, not a construction.
+    match ((2..=n + 1).contains(&j), (2..=n + 1).contains(&(j + 1))) {
+        (true, true) => {
+            let (falling, rising) = blend.pair(knots, j, t, order);
+            out[j - 2] = falling;
+            out[j - 1] = rising;
+        }
+        (true, false) => out[j - 2] = blend.falling(knots, j, t, order),
+        (false, true) => out[j - 1] = blend.rising(knots, j, t, order),
+        (false, false) => {}
     }
     Some(out)
 }

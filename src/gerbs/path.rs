@@ -16,10 +16,11 @@
 
 // `!(x > 0)` is meant: a NaN parameter must fail the range checks too.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
-use super::quadrature::tanh_sinh;
+use super::quadrature::TanhSinh;
 use super::{basis_series, Blend, GerbsError, Knots, Side};
 use crate::curve::taylor::Taylor;
 use crate::scalar::{Field, Real};
+use std::cell::RefCell;
 
 /// Unit tangents m_i and turn signs s_i of Algorithm 1.
 #[derive(Clone, Debug, PartialEq)]
@@ -37,9 +38,24 @@ fn direction<T: Real>(from: &[T; 2], to: &[T; 2]) -> [T; 2] {
     unit([to[0].clone() - &from[0], to[1].clone() - &from[1]])
 }
 
+/// (W_i − W_{i−1}) ∧ (W_{i+1} − W_i): positive for a left turn at W_i, negative for a right
+/// one, zero when the three points are collinear. No root is taken, so with rational
+/// waypoints the sign is exact.
+fn turn_wedge<T: Field>(w: &[[T; 2]], i: usize) -> T {
+    let a = [
+        w[i][0].clone() - &w[i - 1][0],
+        w[i][1].clone() - &w[i - 1][1],
+    ];
+    let b = [
+        w[i + 1][0].clone() - &w[i][0],
+        w[i + 1][1].clone() - &w[i][1],
+    ];
+    a[0].clone() * &b[1] - &(a[1].clone() * &b[0])
+}
+
 /// Check waypoints for Algorithm 1: at least 3, finite, no repeats of consecutive points,
 /// no interior triple whose turn sign is undefined (collinear, straight or reversing).
-pub fn check_waypoints<T: Real>(w: &[[T; 2]]) -> Result<(), GerbsError> {
+pub fn check_waypoints<T: Field>(w: &[[T; 2]]) -> Result<(), GerbsError> {
     if w.len() < 3 {
         return Err(GerbsError::Waypoints(format!(
             "need at least 3 waypoints, got {}",
@@ -65,9 +81,7 @@ pub fn check_waypoints<T: Real>(w: &[[T; 2]]) -> Result<(), GerbsError> {
         }
     }
     for i in 1..w.len() - 1 {
-        let (a, b) = (direction(&w[i - 1], &w[i]), direction(&w[i], &w[i + 1]));
-        let wedge = a[0].clone() * &b[1] - &(a[1].clone() * &b[0]);
-        if wedge.is_zero() {
+        if turn_wedge(w, i).is_zero() {
             return Err(GerbsError::Waypoints(format!(
                 "waypoints {}, {}, {} are collinear: the turn direction at {} is undefined",
                 i,
@@ -88,8 +102,8 @@ pub fn tangents<T: Real>(w: &[[T; 2]]) -> Result<Tangents<T>, GerbsError> {
     let mut s = vec![0];
     for i in 1..n - 1 {
         let (a, b) = (direction(&w[i - 1], &w[i]), direction(&w[i], &w[i + 1]));
-        let wedge = a[0].clone() * &b[1] - &(a[1].clone() * &b[0]);
         m.push(unit([a[0].clone() + &b[0], a[1].clone() + &b[1]]));
+        let wedge = turn_wedge(w, i);
         s.push(if wedge > T::zero_in(&wedge.ctx()) {
             1
         } else {
@@ -351,29 +365,81 @@ impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
     }
 
     /// The arc length ∫|p′| dt, by tanh–sinh on each knot interval (split at the basis's
-    /// break points), to relative tolerance `tol`.
+    /// break points), to relative tolerance `tol`. When F_j is itself a quadrature (ERBS),
+    /// F_j is carried from node to node: each node integrates Ψ_j only from the nearest node
+    /// already done, not from the knot.
     pub fn length(&self, tol: &T) -> T {
         let ctx = tol.ctx();
-        let mut total = T::zero_in(&ctx);
+        let (zero, one) = (T::zero_in(&ctx), T::one_in(&ctx));
+        let rule = TanhSinh::new(&ctx, 12);
+        let mut total = zero.clone();
         let knots = self.knots.as_slice();
         for j in 1..knots.len() {
             let (a, b) = (&knots[j - 1], &knots[j]);
             if a >= b {
                 continue;
             }
+            // (t, F_j(t)) already known on this interval, sorted by t.
+            let known = RefCell::new(vec![(a.clone(), zero.clone()), (b.clone(), one.clone())]);
+            let carried = |t: &T| -> T {
+                let mut known = known.borrow_mut();
+                let i = known.partition_point(|(s, _)| s <= t);
+                let (prev, next) = (&known[i - 1], &known[i.min(known.len() - 1)]);
+                if prev.0 == *t {
+                    return prev.1.clone();
+                }
+                let f = if t.clone() - &prev.0 <= next.0.clone() - t {
+                    prev.1.clone() + &self.blend.increment(&self.knots, j, &prev.0, t)
+                } else {
+                    next.1.clone() - &self.blend.increment(&self.knots, j, t, &next.0)
+                };
+                known.insert(i, (t.clone(), f.clone()));
+                f
+            };
             let mut cuts = vec![a.clone()];
             cuts.extend(self.blend.break_points(&self.knots, j));
             cuts.push(b.clone());
             for w in cuts.windows(2) {
                 let speed = |l: &T, _: &T| {
                     let t = w[0].clone() + l;
-                    let [x, y] = self.series(&t, 1, Side::Right);
-                    let (dx, dy) = (x.derivatives()[1].clone(), y.derivatives()[1].clone());
-                    (dx.clone() * &dx + &(dy.clone() * &dy)).sqrt()
+                    let d = if self.blend.sweeps() {
+                        self.velocity(j, &t, &carried(&t), &self.blend.slope(&self.knots, j, &t))
+                    } else {
+                        let [x, y] = self.series(&t, 1, Side::Right);
+                        [x.derivatives()[1].clone(), y.derivatives()[1].clone()]
+                    };
+                    (d[0].clone() * &d[0] + &(d[1].clone() * &d[1])).sqrt()
                 };
-                total += &tanh_sinh(&w[0], &w[1], speed, tol, 12).value;
+                total += &rule.integrate(&w[0], &w[1], speed, tol, &zero).value;
             }
         }
         total
+    }
+
+    /// p′(t) on knot interval j from F_j(t) and F_j′(t): the falling B_j = 1 − F_j and the
+    /// rising B_{j+1} = F_j blend their local curves, p′ = Σ c′ B + c B′.
+    fn velocity(&self, j: usize, t: &T, f: &T, slope: &T) -> [T; 2] {
+        let ctx = t.ctx();
+        let n = self.curves.len();
+        let one = T::one_in(&ctx);
+        let mut d = [T::zero_in(&ctx), T::zero_in(&ctx)];
+        let active = [
+            (j, one - f, -slope.clone()),
+            (j + 1, f.clone(), slope.clone()),
+        ];
+        for (k, basis, basis_slope) in active {
+            if !(2..=n + 1).contains(&k) {
+                continue;
+            }
+            let (lo, hi) = (self.knots.at(k - 1), self.knots.at(k + 1));
+            let u = (Taylor::variable(t.clone(), 1) - &Taylor::constant(lo.clone()))
+                / &Taylor::constant(hi.clone() - lo);
+            let c = self.curves[k - 2].series(&u);
+            for (di, ci) in d.iter_mut().zip(&c) {
+                let cd = ci.derivatives();
+                *di += &(cd[1].clone() * &basis + &(cd[0].clone() * &basis_slope));
+            }
+        }
+        d
     }
 }

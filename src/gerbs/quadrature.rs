@@ -11,6 +11,7 @@
 //! E = exp(−2|s|): 1 − |tanh s| = 2E/(1+E), so kernels singular at an end see exact offsets.
 
 use crate::scalar::Real;
+use std::sync::OnceLock;
 
 /// The value of a quadrature and how it was reached.
 #[derive(Clone, Debug)]
@@ -23,7 +24,7 @@ pub struct Quadrature<T> {
 }
 
 /// ∫_a^b f, f called as f(x − a, b − x), to relative tolerance `tol` (at most `max_level`
-/// halvings of the step, h = 2^−level).
+/// halvings of the step, h = 2^−level). Builds a one-off [`TanhSinh`] rule.
 pub fn tanh_sinh<T: Real>(
     a: &T,
     b: &T,
@@ -31,86 +32,130 @@ pub fn tanh_sinh<T: Real>(
     tol: &T,
     max_level: usize,
 ) -> Quadrature<T> {
-    tanh_sinh_scaled(a, b, f, tol, &T::zero_in(&a.ctx()), max_level)
+    TanhSinh::new(&a.ctx(), max_level).integrate(a, b, f, tol, &T::zero_in(&a.ctx()))
 }
 
-/// [`tanh_sinh`] that stops when the change is below tol · max(|value|, scale): for running
-/// integrals that are tiny next to the total `scale` they will be divided by.
-pub fn tanh_sinh_scaled<T: Real>(
-    a: &T,
-    b: &T,
-    f: impl Fn(&T, &T) -> T,
-    tol: &T,
-    scale: &T,
-    max_level: usize,
-) -> Quadrature<T> {
-    let ctx = a.ctx();
-    let bits = T::precision_bits(&ctx) as f64;
-    // Nodes beyond t_max carry weights below e^{−2 s_max}: cosh²(s) ≈ e^{2s}/4. An
-    // integrand like 1/√(x − a) grows as e^{s} there, so s_max is twice what a bounded
-    // integrand needs.
-    let s_max = bits * std::f64::consts::LN_2 + 8.0;
-    let t_max = (2.0 * s_max / std::f64::consts::PI).asinh();
-    let half = (b.clone() - a) / &T::from_i64(2, &ctx);
-    let pi_half = T::pi(&ctx) / &T::from_i64(2, &ctx);
-    let one = T::one_in(&ctx);
-    let two = T::from_i64(2, &ctx);
-    // The contribution of the node at t (both signs when t > 0).
-    let node = |t: &T, evaluations: &mut usize| -> T {
-        let s = pi_half.clone() * &sinh(t);
-        let e = (-(s.clone().abs() * &two)).exp();
-        let near = half.clone() * &two * &e / &(one.clone() + &e); // distance to the near end
-        let far = half.clone() * &two / &(one.clone() + &e); // distance to the far end
-        let sech2 = T::from_i64(4, &ctx) * &e / &((one.clone() + &e) * &(one.clone() + &e));
-        let w = half.clone() * &pi_half * &cosh(t) * &sech2;
-        *evaluations += 1;
-        if t.is_zero() {
-            return w * &f(&half, &half);
+/// One node of the rule on [−1, 1], for the half-width 1: the distances of x to the near
+/// and far ends and the weight (π/2)·cosh(t)/cosh²(π/2·sinh t).
+#[derive(Clone, Debug)]
+struct Node<T> {
+    near: T,
+    far: T,
+    weight: T,
+    /// t = 0: the single node at the midpoint.
+    centre: bool,
+}
+
+/// The tanh–sinh rule for one precision: the nodes of each level, computed the first time a
+/// level is reached and kept (every integral of an ERBS basis or a path length reuses them,
+/// so only the integrand is evaluated per node).
+#[derive(Clone, Debug)]
+pub struct TanhSinh<T> {
+    t_max: f64,
+    levels: Vec<OnceLock<Vec<Node<T>>>>,
+}
+
+impl<T: Real> TanhSinh<T> {
+    /// The rule for the precision of `ctx` with at most `max_level` halvings of h.
+    pub fn new(ctx: &T::Ctx, max_level: usize) -> Self {
+        let bits = T::precision_bits(ctx) as f64;
+        // Nodes beyond t_max carry weights below e^{−2 s_max}: cosh²(s) ≈ e^{2s}/4. An
+        // integrand like 1/√(x − a) grows as e^{s} there, so s_max is twice what a bounded
+        // integrand needs.
+        let s_max = bits * std::f64::consts::LN_2 + 8.0;
+        TanhSinh {
+            t_max: (2.0 * s_max / std::f64::consts::PI).asinh(),
+            levels: (0..=max_level).map(|_| OnceLock::new()).collect(),
         }
-        *evaluations += 1;
-        // t > 0: x near b on the right, its mirror near a on the left.
-        let right = f(&far, &near);
-        let left = f(&near, &far);
-        w * &(right + &left)
-    };
-    let mut evaluations = 0;
-    // Level 0: h = 1, nodes k = 0, 1, 2, …
-    let mut h = one.clone();
-    let mut sum = T::zero_in(&ctx);
-    let mut k = 0i64;
-    while (k as f64) <= t_max {
-        sum += &node(&T::from_i64(k, &ctx), &mut evaluations);
-        k += 1;
     }
-    let mut estimate = sum.clone() * &h;
-    let mut change = estimate.clone().abs();
-    let mut levels = 0;
-    for level in 1..=max_level {
-        h /= &two;
-        let mut k = 1i64;
-        loop {
-            let t = T::from_i64(k, &ctx) * &h;
-            if t.to_f64() > t_max {
+
+    /// The nodes added at `level`: t = k for k = 0, 1, … at level 0, t = k·2^−level for odd
+    /// k after that, up to t_max.
+    fn nodes(&self, level: usize, ctx: &T::Ctx) -> &[Node<T>] {
+        self.levels[level].get_or_init(|| {
+            let one = T::one_in(ctx);
+            let two = T::from_i64(2, ctx);
+            let pi_half = T::pi(ctx) / &two;
+            let h = crate::scalar::powi(&(one.clone() / &two), level as u32);
+            let (first, step) = if level == 0 { (0, 1) } else { (1, 2) };
+            let mut out = Vec::new();
+            let mut k = first;
+            loop {
+                let t = T::from_i64(k, ctx) * &h;
+                if t.to_f64() > self.t_max {
+                    break;
+                }
+                let s = pi_half.clone() * &sinh(&t);
+                // E = exp(−2|s|): 1 − |tanh s| = 2E/(1+E) without cancellation.
+                let e = (-(s.abs() * &two)).exp();
+                let sech2 = T::from_i64(4, ctx) * &e / &((one.clone() + &e) * &(one.clone() + &e));
+                out.push(Node {
+                    near: two.clone() * &e / &(one.clone() + &e),
+                    far: two.clone() / &(one.clone() + &e),
+                    weight: pi_half.clone() * &cosh(&t) * &sech2,
+                    centre: k == 0,
+                });
+                k += step;
+            }
+            out
+        })
+    }
+
+    /// ∫_a^b f, f called as f(x − a, b − x); stops when two levels differ by at most
+    /// tol · max(|value|, scale) (a `scale` for running integrals that are tiny next to the
+    /// total they will be divided by), or at the last level.
+    pub fn integrate(
+        &self,
+        a: &T,
+        b: &T,
+        f: impl Fn(&T, &T) -> T,
+        tol: &T,
+        scale: &T,
+    ) -> Quadrature<T> {
+        let ctx = a.ctx();
+        let half = (b.clone() - a) / &T::from_i64(2, &ctx);
+        let mut evaluations = 0;
+        let level_sum = |level: usize, evaluations: &mut usize| {
+            let mut sum = T::zero_in(&ctx);
+            for node in self.nodes(level, &ctx) {
+                let w = half.clone() * &node.weight;
+                if node.centre {
+                    *evaluations += 1;
+                    sum += &(w * &f(&half, &half));
+                } else {
+                    *evaluations += 2;
+                    let (near, far) = (half.clone() * &node.near, half.clone() * &node.far);
+                    // x near b on the right, its mirror near a on the left.
+                    sum += &(w * &(f(&far, &near) + &f(&near, &far)));
+                }
+            }
+            sum
+        };
+        let mut h = T::one_in(&ctx);
+        let two = T::from_i64(2, &ctx);
+        let mut sum = level_sum(0, &mut evaluations);
+        let mut estimate = sum.clone() * &h;
+        let mut change = estimate.clone().abs();
+        let mut levels = 0;
+        for level in 1..self.levels.len() {
+            h /= &two;
+            sum += &level_sum(level, &mut evaluations);
+            let next = sum.clone() * &h;
+            change = (next.clone() - &estimate).abs();
+            estimate = next;
+            levels = level;
+            let size = estimate.clone().abs();
+            let size = if size > *scale { size } else { scale.clone() };
+            if level >= 3 && change <= tol.clone() * &size {
                 break;
             }
-            sum += &node(&t, &mut evaluations);
-            k += 2;
         }
-        let next = sum.clone() * &h;
-        change = (next.clone() - &estimate).abs();
-        estimate = next;
-        levels = level;
-        let size = estimate.clone().abs();
-        let size = if size > *scale { size } else { scale.clone() };
-        if level >= 3 && change <= tol.clone() * &size {
-            break;
+        Quadrature {
+            value: estimate,
+            change,
+            levels,
+            evaluations,
         }
-    }
-    Quadrature {
-        value: estimate,
-        change,
-        levels,
-        evaluations,
     }
 }
 
