@@ -581,3 +581,248 @@ fn ph_bad_input_is_one_line_exit_two() {
         assert!(r.stderr.contains(expected), "{input}: {}", r.stderr);
     }
 }
+
+const WAYPOINTS: &str = "[[0,0],[300,100],[600,-50],[900,150],[1200,0]]";
+const FIG1_KNOTS: &str = "[0, 0, 0.25, 0.5, 0.75, 1, 1]";
+
+fn strings(v: &Value) -> Vec<String> {
+    v.as_array()
+        .expect("an array")
+        .iter()
+        .map(|x| x.as_str().expect("a string").to_string())
+        .collect()
+}
+
+fn num(v: &Value) -> f64 {
+    v.as_str().expect("a string").parse().expect("a number")
+}
+
+#[test]
+fn gerbs_basis_bfbs_is_exact_and_erbs_certified() {
+    // At t = 3/10, u = (t − 1/4)/(1/4) = 1/5 on (t_3, t_4): B_4 = 10u³ − 15u⁴ + 6u⁵ = 181/3125,
+    // B_4′ = (30u² − 60u³ + 30u⁴)/h = 384/125, and B_3 = 1 − B_4.
+    let r = trajverify(
+        &["run", "gerbs-basis", "--scalar", "rational"],
+        &format!(r#"{{"knots": {FIG1_KNOTS}, "kind": "bfbs", "at": ["3/10"], "derivatives": 1}}"#),
+    );
+    let v = json(&r);
+    let row = &v["values"][0];
+    assert_eq!(row.as_array().unwrap().len(), 5, "B_2 … B_6");
+    assert_eq!(strings(&row[2]), ["181/3125", "384/125"]);
+    assert_eq!(strings(&row[1]), ["2944/3125", "-384/125"]);
+    assert_eq!(strings(&row[0]), ["0", "0"]);
+    // ERBS in MPFR: certified digits, partition of unity, B_k(t_k) = 1.
+    let r = trajverify(
+        &["run", "gerbs-basis", "--scalar", "mpfr:128"],
+        &format!(
+            r#"{{"knots": {FIG1_KNOTS}, "kind": "erbs", "params": {{"alpha": 1, "beta": 3, "gamma": 1, "lambda": 0.5, "sigma": 1}}, "at": [0.3, 0.5], "derivatives": 2}}"#
+        ),
+    );
+    let v = json(&r);
+    let at_03: Vec<Vec<String>> = v["values"][0]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(strings)
+        .collect();
+    let sum: f64 = at_03.iter().map(|b| b[0].parse::<f64>().unwrap()).sum();
+    assert!((sum - 1.0).abs() < 1e-15, "{sum}");
+    assert!(at_03[1][0].len() > 30, "certified digits: {}", at_03[1][0]);
+    assert_eq!(num(&v["values"][1][2][0]), 1.0, "B_4(t_4) = 1");
+    assert_eq!(v["scalar"], "mpfr:128");
+}
+
+#[test]
+fn gerbs_path_interpolates_the_waypoints_with_curvature_one_over_r() {
+    for kind in ["bfbs", "erbs"] {
+        let input = format!(
+            r#"{{"waypoints": {WAYPOINTS}, "radius": 80, "theta_o": "pi/8", "kind": "{kind}", "samples": 21}}"#
+        );
+        let v = json(&trajverify(&["run", "gerbs-path"], &input));
+        assert_eq!(v["points"].as_array().unwrap().len(), 21);
+        assert_eq!(v["curvature"].as_array().unwrap().len(), 21);
+        let w: Value = serde_json::from_str(WAYPOINTS).unwrap();
+        let at = v["at_waypoints"].as_array().unwrap();
+        assert_eq!(at.len(), 5);
+        for (i, a) in at.iter().enumerate() {
+            for c in 0..2 {
+                let got = num(&a["point"][c]);
+                let want = w[i][c].as_f64().unwrap();
+                assert!(
+                    (got - want).abs() < 1e-9,
+                    "{kind} W{}: {got} vs {want}",
+                    i + 1
+                );
+            }
+            if (1..4).contains(&i) {
+                // On the arc at its middle: |κ| = 1/R, the sign of the turn.
+                let k = num(&a["curvature"]);
+                assert!((k.abs() - 1.0 / 80.0).abs() < 1e-12, "{kind}: κ = {k}");
+                assert_eq!(k.signum() as i64, v["turns"][i].as_i64().unwrap());
+            }
+        }
+        let length = num(&v["length"]);
+        assert!(length > 1200.0 && length < 1500.0, "{kind}: {length}");
+    }
+    // Certified in MPFR (BFBS: no quadrature inside, so this is quick).
+    let v = json(&trajverify(
+        &["run", "gerbs-path", "--scalar", "mpfr:128"],
+        &format!(
+            r#"{{"waypoints": {WAYPOINTS}, "radius": 80, "theta_o": "pi/8", "kind": "bfbs", "samples": 3}}"#
+        ),
+    ));
+    let length = v["length"].as_str().unwrap();
+    assert!(length.starts_with("1349.14216332056819"), "{length}");
+    assert!(length.len() > 35, "{length}");
+}
+
+#[test]
+fn dubins_words_and_legs_reach_the_next_waypoint() {
+    let v = json(&trajverify(
+        &["run", "dubins"],
+        &format!(r#"{{"waypoints": {WAYPOINTS}, "radius": 80, "samples": 5}}"#),
+    ));
+    let legs = v["legs"].as_array().unwrap();
+    let words: Vec<&str> = legs.iter().map(|l| l["word"].as_str().unwrap()).collect();
+    assert_eq!(words, ["LSR", "RSL", "LSR", "RSL"]);
+    let w: Value = serde_json::from_str(WAYPOINTS).unwrap();
+    let mut total = 0.0;
+    for (i, leg) in legs.iter().enumerate() {
+        let samples = leg["samples"].as_array().unwrap();
+        assert_eq!(samples.len(), 5);
+        let end = samples.last().unwrap();
+        for c in 0..2 {
+            let got = num(&end[c]);
+            assert!(
+                (got - w[i + 1][c].as_f64().unwrap()).abs() < 1e-9,
+                "leg {i}"
+            );
+        }
+        let parts: f64 = strings(&leg["lengths"])
+            .iter()
+            .map(|x| x.parse::<f64>().unwrap())
+            .sum();
+        assert!((parts - num(&leg["length"])).abs() < 1e-9);
+        total += num(&leg["length"]);
+    }
+    assert!((total - num(&v["length"])).abs() < 1e-9);
+    // Given headings: two waypoints are enough; a U-turn to the side is RSR or LSL.
+    let v = json(&trajverify(
+        &["run", "dubins", "--scalar", "mpfr:64"],
+        r#"{"waypoints": [[0, 0], [0, 500]], "headings": [0, "pi"], "radius": 100}"#,
+    ));
+    assert_eq!(v["legs"][0]["word"], "LSL");
+    let length = num(&v["length"]);
+    // Two quarter... half-turn arcs of π·100 in total plus the straight 500 − 200 = 300.
+    assert!(
+        (length - (std::f64::consts::PI * 100.0 + 300.0)).abs() < 1e-9,
+        "{length}"
+    );
+}
+
+#[test]
+fn gerbs_bad_input_is_one_line_exit_two() {
+    let path = |w: &str, extra: &str| {
+        format!(r#"{{"waypoints": {w}, "radius": 80, "theta_o": "pi/8", "kind": "erbs"{extra}}}"#)
+    };
+    let cases: Vec<(&str, String, &str)> = vec![
+        (
+            "gerbs-path",
+            path("[[0,0],[1,1]]", ""),
+            "at least 3 waypoints",
+        ),
+        (
+            "gerbs-path",
+            path("[[0,0],[1,1],[1,1],[2,0]]", ""),
+            "repeats",
+        ),
+        (
+            "gerbs-path",
+            path("[[0,0],[1,1],[3,3],[4,0]]", ""),
+            "collinear",
+        ),
+        (
+            "gerbs-path",
+            path(WAYPOINTS, "").replace("80", "0"),
+            "\"radius\"",
+        ),
+        (
+            "gerbs-path",
+            path(WAYPOINTS, r#", "params": {"alpha": 0}"#),
+            "\"params.alpha\"",
+        ),
+        (
+            "gerbs-path",
+            path(WAYPOINTS, r#", "params": {"alpha": [1, -1, 1, 1]}"#),
+            "\"params.alpha[2]\"",
+        ),
+        (
+            "gerbs-path",
+            path(WAYPOINTS, r#", "theta_o": "t/8""#),
+            "\"theta_o\"",
+        ),
+        (
+            "gerbs-path",
+            path(WAYPOINTS, r#", "samples": 1"#),
+            "\"samples\"",
+        ),
+        (
+            "gerbs-path",
+            path(WAYPOINTS, r#", "arcs": "clockwise""#),
+            "\"arcs\"",
+        ),
+        (
+            "gerbs-basis",
+            r#"{"knots": [0, 0.5, 0.25, 1], "kind": "bfbs", "at": [0.3]}"#.into(),
+            "knots must increase",
+        ),
+        (
+            "gerbs-basis",
+            format!(r#"{{"knots": {FIG1_KNOTS}, "kind": "bspline", "at": [0.3]}}"#),
+            "\"kind\"",
+        ),
+        (
+            "gerbs-basis",
+            format!(r#"{{"knots": {FIG1_KNOTS}, "kind": "bfbs", "at": [1.5]}}"#),
+            "\"at[0]\"",
+        ),
+        (
+            "gerbs-basis",
+            format!(
+                r#"{{"knots": {FIG1_KNOTS}, "kind": "bfbs", "params": {{"i": [2, 2]}}, "at": [0.3]}}"#
+            ),
+            "\"params.i\"",
+        ),
+        (
+            "gerbs-basis",
+            format!(
+                r#"{{"knots": {FIG1_KNOTS}, "kind": "erbs", "params": {{"lambda": 2}}, "at": [0.3]}}"#
+            ),
+            "\"params.lambda\"",
+        ),
+        (
+            "dubins",
+            format!(r#"{{"waypoints": {WAYPOINTS}, "headings": [0, 1], "radius": 80}}"#),
+            "\"headings\"",
+        ),
+        (
+            "dubins",
+            format!(r#"{{"waypoints": {WAYPOINTS}, "radius": -5}}"#),
+            "\"radius\"",
+        ),
+    ];
+    for (alg, input, expected) in &cases {
+        let r = trajverify(&["run", alg], input);
+        assert_eq!(r.code, 2, "{alg} {input}: {}", r.stderr);
+        assert!(r.stdout.is_empty());
+        assert_eq!(r.stderr.trim().lines().count(), 1, "{}", r.stderr);
+        assert!(r.stderr.contains(expected), "{input}: {}", r.stderr);
+    }
+    // The ERBS is a quadrature: no exact run.
+    let r = trajverify(
+        &["run", "gerbs-basis", "--scalar", "rational"],
+        &format!(r#"{{"knots": {FIG1_KNOTS}, "kind": "erbs", "at": [0.3]}}"#),
+    );
+    assert_eq!(r.code, 2);
+    assert!(r.stderr.contains("--scalar"), "{}", r.stderr);
+}

@@ -74,6 +74,53 @@ pub fn number(v: &Value, path: &str) -> Result<BigRational, InputError> {
     parse_rational(&text).map_err(|e| InputError(format!("field \"{path}\": {e}")))
 }
 
+/// A real input: an exact number, or a constant expression such as `"pi/8"` (the curve
+/// language without t) that is evaluated in the working precision.
+#[derive(Clone, Debug, PartialEq)]
+pub enum RealInput {
+    Exact(BigRational),
+    Expr(crate::curve::expr::Expr),
+}
+
+impl RealInput {
+    /// The value in the number type `T`; an error naming `path` if it is not finite.
+    pub fn to<T: crate::scalar::Real>(&self, ctx: &T::Ctx, path: &str) -> Result<T, InputError> {
+        let x = match self {
+            RealInput::Exact(q) => T::from_rational(q, ctx),
+            RealInput::Expr(e) => e.eval(&T::zero_in(ctx)),
+        };
+        if !x.is_finite() {
+            return fail(format!("field \"{path}\": the expression is not finite"));
+        }
+        Ok(x)
+    }
+
+    /// The exact value, if the input is a number.
+    pub fn exact(&self) -> Option<&BigRational> {
+        match self {
+            RealInput::Exact(q) => Some(q),
+            RealInput::Expr(_) => None,
+        }
+    }
+}
+
+/// A number, or a string holding a number or a constant expression (`"pi/8"`), at `path`.
+pub fn real(v: &Value, path: &str) -> Result<RealInput, InputError> {
+    match v {
+        Value::String(text) if parse_rational(text).is_err() => {
+            let e = crate::curve::expr::parse_expr(text)
+                .map_err(|e| InputError(format!("field \"{path}\": {e}")))?;
+            if e.mentions_t() {
+                return fail(format!(
+                    "field \"{path}\": expected a constant, found an expression in t"
+                ));
+            }
+            Ok(RealInput::Expr(e))
+        }
+        _ => number(v, path).map(RealInput::Exact),
+    }
+}
+
 /// A non-negative whole number at `path`, at most `max`.
 pub fn count(v: &Value, path: &str, max: usize) -> Result<usize, InputError> {
     let q = number(v, path)?;

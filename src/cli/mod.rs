@@ -7,6 +7,7 @@
 pub mod input;
 pub mod output;
 mod run_bspline;
+mod run_gerbs;
 mod run_hermite;
 mod run_param;
 mod run_ph;
@@ -50,8 +51,9 @@ pub enum Command {
     Run {
         algorithm: Algorithm,
         /// Number type: f64, rational (exact), or mpfr:<bits> (printed with the digits that
-        /// agree between <bits> and 2·<bits>). Default: f64 for hermite, spline-fit and
-        /// natural-spline; mpfr:256 for hermite-condition, bang-bang, marin-1d and marin;
+        /// agree between <bits> and 2·<bits>). Default: f64 for hermite, spline-fit,
+        /// natural-spline, ph-hermite, phodcos, gerbs-basis, gerbs-path and dubins; mpfr:128 for
+        /// convergence; mpfr:256 for hermite-condition, bang-bang, marin-1d and marin;
         /// bspline-basis and bspline-gram are always exact.
         #[arg(long, value_name = "SCALAR", value_parser = parse_scalar)]
         scalar: Option<ScalarKind>,
@@ -83,7 +85,25 @@ const RUN_HELP: &str = r#"Algorithms and their input:
                      -> {"segments", "max_error", "sampled_error", "preimages": [[[u,v,p,q] x 9] x N]}
   convergence        {"curve", "interval", "levels": [0, ..., 13], "free": {...} (optional)}
                      -> {"rows": [{"segments", "error", "ratio", "order"}]} (default scalar mpfr:128)
+  gerbs-basis        {"knots": [t1, ..., t(n+2)], "kind": "bfbs" | "erbs", "params": {...} (optional),
+                      "at": [...], "derivatives": d (optional, default 0), "side": "right" | "left" (optional)}
+                     -> {"values": [[[B, B', ..., B^(d)] x n] x points]} for B_2 ... B_(n+1); null where a
+                     derivative does not exist (erbs with 2*sigma < d, at an interval's centre); erbs
+                     values are accurate relative to 1, so a tiny value near a knot has fewer digits
+                     params bfbs: {"i": 2 | [i_2, ..., i_(n+1)]}; erbs: {"alpha", "beta", "gamma",
+                     "lambda", "sigma"} (each a number or one per knot interval; default 1, 3, 1, 1/2, 1),
+                     "centre": "cited" | "printed" (Eq. 4's centre term; default cited)
+  gerbs-path         {"waypoints": [[x, y], ...], "radius": R, "theta_o": "pi/8", "kind": "bfbs" | "erbs",
+                      "params": {...} (optional; per-interval arrays have one value per leg),
+                      "samples": n (optional, default 101), "line_length": l (optional, default 2*R*theta_o),
+                      "arcs": "turn" | "printed" (optional; Eqs. 21-22 as printed run left turns backwards)}
+                     -> {"t", "points", "curvature", "length", "at_waypoints": [{"t", "point", "tangent",
+                         "curvature"}], "turns"}; erbs in mpfr takes seconds to a minute (the length)
+  dubins             {"waypoints": [[x, y], ...], "headings": [...] (optional, default from Algorithm 1),
+                      "radius": R, "samples": n per leg (optional, default 33)}
+                     -> {"headings", "legs": [{"from", "to", "word", "lengths", "length", "samples": [[x, y, heading]]}], "length"}
   curves: numbers, t, pi, + - * / ^, sin cos tan exp ln sqrt atan, parentheses
+  angles (theta_o, headings, ERBS parameters) may also be constant expressions such as "pi/8"
 Numbers may be JSON numbers or strings ("3/5", "0.6", "1e-3"); both are read exactly."#;
 
 /// The algorithms `run` knows.
@@ -114,6 +134,12 @@ pub enum Algorithm {
     Phodcos,
     /// Conversion error on 2ⁿ segments, ratios and orders (paper 001, Table 1).
     Convergence,
+    /// BFBS or ERBS basis functions and derivatives on a knot vector (paper 003, Eqs. 3–9).
+    GerbsBasis,
+    /// A curvature-continuous GERBS path through waypoints (paper 003, Algorithms 1–2).
+    GerbsPath,
+    /// Shortest Dubins paths between consecutive waypoint poses (paper 003, Fig. 7).
+    Dubins,
 }
 
 fn parse_scalar(s: &str) -> Result<ScalarKind, String> {
@@ -328,6 +354,11 @@ fn run(
         Algorithm::Convergence => {
             run_ph::run_convergence(&doc, scalar.unwrap_or(ScalarKind::Mpfr(128)))
         }
+        Algorithm::GerbsBasis => {
+            run_gerbs::run_gerbs_basis(&doc, scalar.unwrap_or(ScalarKind::F64))
+        }
+        Algorithm::GerbsPath => run_gerbs::run_gerbs_path(&doc, scalar.unwrap_or(ScalarKind::F64)),
+        Algorithm::Dubins => run_gerbs::run_dubins(&doc, scalar.unwrap_or(ScalarKind::F64)),
     }
     .map_err(|e| Failure::Usage(e.0))?;
     let value = rendered.into_value().map_err(Failure::Usage)?;

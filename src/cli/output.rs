@@ -5,7 +5,7 @@
 //! for f64, and for MPFR the digits on which two runs at p and 2p bits agree.
 
 use crate::scalar::certify::{certify, format_float_digits};
-use crate::scalar::{Field, Float};
+use crate::scalar::{Field, Float, Real};
 use serde_json::{Map, Value};
 
 /// A JSON-like tree whose numbers are values of `T`.
@@ -46,6 +46,38 @@ impl<T> Out<T> {
     pub fn nums(values: Vec<T>) -> Self {
         Out::List(values.into_iter().map(Out::Num).collect())
     }
+}
+
+/// The level below which a value computed at the working precision cannot be told from 0
+/// next to quantities of size `scale`: 2^(16−p)·|scale| at p bits.
+///
+/// A quantity that vanishes mathematically comes out as rounding noise of either sign, on
+/// which no two precisions agree, so printing it certified is impossible; below this level
+/// it is printed as 0. Used only where the output has a natural scale (coordinates next to
+/// the largest coordinate), never for values computed with relative accuracy.
+pub fn noise_level<T: Real>(scale: &T) -> T {
+    let ctx = scale.ctx();
+    let bits = T::precision_bits(&ctx).saturating_sub(16);
+    scale.clone().abs() * &crate::scalar::powi(&T::from_ratio(1, 2, &ctx), bits)
+}
+
+/// x, or 0 when |x| is below `level`.
+pub fn flush<T: Real>(x: T, level: Option<&T>) -> T {
+    match level {
+        Some(l) if x.clone().abs() < *l => T::zero_in(&x.ctx()),
+        _ => x,
+    }
+}
+
+/// The largest |x| of `values`, if there is one.
+pub fn largest<'a, T: Real + 'a>(values: impl IntoIterator<Item = &'a T>) -> Option<T> {
+    values.into_iter().fold(None, |m: Option<T>, x| {
+        let a = x.clone().abs();
+        match m {
+            Some(m) if m >= a => Some(m),
+            _ => Some(a),
+        }
+    })
 }
 
 fn f64_value(x: f64) -> Value {

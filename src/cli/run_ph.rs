@@ -1,7 +1,7 @@
 //! `run ph-hermite`, `run phodcos` and `run convergence`: the JSON shapes of issue 3.
 
 use super::input::{self, fail, InputError};
-use super::output::Out;
+use super::output::{flush, largest, noise_level, Out};
 use super::Rendered;
 use crate::curve::{Curve, ExprCurve};
 use crate::ph::hermite::{interpolate, FreeParameters, HermiteData, PhHermiteError};
@@ -82,31 +82,14 @@ fn needs_real(scalar: ScalarKind) -> Result<(), InputError> {
     Ok(())
 }
 
-/// A list of vectors with every entry below the rounding level of the largest one set to 0.
-///
-/// Components that vanish mathematically (the real part of A_0 in standard form, say) come
-/// out as rounding noise of either sign, on which no two precisions agree; below
-/// 2^(16−p)·max|x| a value cannot be told from 0 at p bits, so it is printed as 0.
+/// A list of vectors with every entry below the rounding level of the largest one set to 0
+/// (see [`noise_level`]: components that vanish mathematically, such as the real part of A_0
+/// in standard form, come out as rounding noise of either sign).
 fn vectors<T: Real>(rows: Vec<Vec<T>>) -> Out<T> {
-    let mut largest: Option<T> = None;
-    for x in rows.iter().flatten() {
-        let a = x.abs();
-        if largest.as_ref().is_none_or(|m| a > *m) {
-            largest = Some(a);
-        }
-    }
-    let threshold = largest.map(|m| {
-        let ctx = m.ctx();
-        let bits = T::precision_bits(&ctx).saturating_sub(16);
-        m * &crate::scalar::powi(&T::from_ratio(1, 2, &ctx), bits)
-    });
-    let flush = |x: T| match &threshold {
-        Some(t) if x.abs() < *t => T::zero_in(&x.ctx()),
-        _ => x,
-    };
+    let level = largest(rows.iter().flatten()).map(|m| noise_level(&m));
     Out::List(
         rows.into_iter()
-            .map(|r| Out::nums(r.into_iter().map(flush).collect()))
+            .map(|r| Out::nums(r.into_iter().map(|x| flush(x, level.as_ref())).collect()))
             .collect(),
     )
 }

@@ -75,6 +75,20 @@ impl Expr {
         self.compile::<X>(&t.ctx()).eval(t)
     }
 
+    /// Whether the expression depends on t (a constant such as `pi/8` does not).
+    pub fn mentions_t(&self) -> bool {
+        match self {
+            Expr::T => true,
+            Expr::Number(_) | Expr::Pi => false,
+            Expr::Neg(a) | Expr::Call(_, a) => a.mentions_t(),
+            Expr::Add(a, b)
+            | Expr::Sub(a, b)
+            | Expr::Mul(a, b)
+            | Expr::Div(a, b)
+            | Expr::Pow(a, b) => a.mentions_t() || b.mentions_t(),
+        }
+    }
+
     /// The value and the first `order` derivatives at t₀.
     pub fn derivatives<T: Real>(&self, t0: &T, order: usize) -> Vec<T> {
         self.eval(&Taylor::variable(t0.clone(), order))

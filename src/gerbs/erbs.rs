@@ -14,7 +14,9 @@
 //! F_k is computed by tanh–sinh quadrature, split at c_k when 2σ is not an even integer
 //! (|t − c|^{2σ} then has a kink there that would slow the rule down); near t_{k+1} the
 //! complement 1 − ∫_t^{t_{k+1}} Ψ/S is used so that no digits cancel, and the falling
-//! B_k = 1 − F_k there is ∫_t^{t_{k+1}} Ψ/S itself (relative accuracy where it is tiny). Derivatives are exact:
+//! B_k = 1 − F_k there is ∫_t^{t_{k+1}} Ψ/S itself (no cancellation against 1; the
+//! running integrals are accurate relative to S_k, so a tiny value near a knot carries fewer
+//! significant digits, which the certified output shows). Derivatives are exact:
 //! F′ = Ψ/S and the higher ones come from Ψ's own Taylor series.
 //!
 //! For α > 0 every derivative of Ψ vanishes at both knots (Ψ ~ exp(−C/(t − t_k)^α)), so the
@@ -284,7 +286,10 @@ impl<T: Real> Erbs<T> {
                     self.kernel(knots, j, &left, &right, |v| v.clone())
                 }
             };
-            // Relative to S_j once it is known: F_j = ∫/S_j needs no more digits than that.
+            // Relative to S_j once it is known: F_j = ∫/S_j is then accurate to the working
+            // precision in absolute terms. (Relative to the integral itself would keep the
+            // digits of a tiny F_j near a knot too, but there the integrand is a boundary
+            // layer of width ~(t − t_j)² and the rule needs its last levels: 5–50× slower.)
             let scale = self
                 .scale
                 .get(j - 1)
@@ -314,7 +319,7 @@ impl<T: Real> Blend<T> for Erbs<T> {
 
     /// 1 − F_j and F_j from one quadrature. The value is the integral over the nearer end of
     /// the interval; the side it belongs to takes it directly and the other its complement, so
-    /// a value near 0 keeps its relative accuracy.
+    /// a value near 0 is not the difference of two numbers near 1.
     fn pair(&self, knots: &Knots<T>, j: usize, t: &T, order: usize) -> (Taylor<T>, Taylor<T>) {
         let ctx = t.ctx();
         let (a, b) = (knots.at(j), knots.at(j + 1));

@@ -1,0 +1,809 @@
+//! `run gerbs-basis`, `run gerbs-path` and `run dubins`: the JSON shapes of issue 6 (paper 003).
+//!
+//! Inputs are read exactly (rationals, or constant expressions such as `"pi/8"` for angles)
+//! and checked before anything is computed: knots, waypoints (collinearity decided exactly on
+//! the rationals), radius, basis parameters. The computation then runs in f64, or in MPFR at
+//! p and 2p bits with the agreeing digits printed; the BFBS basis also runs exactly.
+
+use super::input::{self, fail, InputError, RealInput};
+use super::output::{flush, largest, noise_level, Out};
+use super::Rendered;
+use crate::gerbs::bfbs::{Bfbs, MAX_EXPONENT};
+use crate::gerbs::dubins::shortest;
+use crate::gerbs::erbs::{CentreReading, Erbs, ErbsParams};
+use crate::gerbs::path::{check_waypoints, tangents, ArcConvention, GerbsPath, PathSpec};
+use crate::gerbs::quadrature::default_tolerance;
+use crate::gerbs::{basis_derivatives, Blend, GerbsError, Knots, Side};
+use crate::scalar::{BigRational, Field, Float, Real, ScalarKind};
+use serde_json::{Map, Value};
+
+/// The highest derivative order `run gerbs-basis` accepts.
+pub const MAX_DERIVATIVES: usize = 30;
+/// The most evaluation points or samples one command accepts.
+pub const MAX_POINTS: usize = 100_000;
+/// Samples of a path when `samples` is not given.
+pub const DEFAULT_PATH_SAMPLES: usize = 101;
+/// Samples per Dubins leg when `samples` is not given.
+pub const DEFAULT_LEG_SAMPLES: usize = 33;
+
+const ERBS_FIELDS: [&str; 5] = ["alpha", "beta", "gamma", "lambda", "sigma"];
+/// The ERBS parameters used when a field is not given: the Fig. 2 caption (β = 3, γ = 1,
+/// λ = 1/2) with α = 1 and σ = 1, the set of the report's ERBS paths (C^∞ everywhere).
+const ERBS_DEFAULTS: [(i64, i64); 5] = [(1, 1), (3, 1), (1, 1), (1, 2), (1, 1)];
+
+fn gerbs_error(e: GerbsError) -> InputError {
+    match e {
+        GerbsError::Knots(m) => InputError(format!("field \"knots\": {m}")),
+        GerbsError::Waypoints(m) => InputError(format!("field \"waypoints\": {m}")),
+        GerbsError::Parameter { field, message } => {
+            InputError(format!("field \"{field}\": {message}"))
+        }
+    }
+}
+
+/// x, or null where the quantity does not exist: an ERBS with 2σ < k has an unbounded k-th
+/// derivative at the centre of an interval (|t − c|^{2σ}), and so may the path's curvature.
+fn finite_or_null<T: Field>(x: T) -> Out<T> {
+    if x.is_finite() {
+        Out::Num(x)
+    } else {
+        Out::Null
+    }
+}
+
+/// A computation run in the number type the user chose.
+trait Job {
+    fn run<T: Real>(&self, ctx: &T::Ctx) -> Result<Out<T>, InputError>;
+}
+
+/// f64, or MPFR at p and 2p bits printed with the digits that agree.
+fn run_real(job: &impl Job, scalar: ScalarKind, what: &str) -> Result<Rendered, InputError> {
+    let name = scalar.to_string();
+    match scalar {
+        ScalarKind::Rational => fail(format!(
+            "option --scalar: {what} needs square roots and trigonometry; use f64 or mpfr:<bits>"
+        )),
+        ScalarKind::Mpfr(bits) => Ok(Rendered::certified(
+            job.run::<Float>(&bits)?
+                .with_field("scalar", Out::Text(name.clone())),
+            job.run::<Float>(&(2 * bits))?
+                .with_field("scalar", Out::Text(name)),
+        )),
+        ScalarKind::F64 => Ok(Rendered::plain(
+            job.run::<f64>(&())?.with_field("scalar", Out::Text(name)),
+        )),
+    }
+}
+
+/// `"bfbs"` or `"erbs"`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Kind {
+    Bfbs,
+    Erbs,
+}
+
+fn kind(doc: &Map<String, Value>) -> Result<Kind, InputError> {
+    match input::field(doc, "kind")? {
+        Value::String(s) if s == "bfbs" => Ok(Kind::Bfbs),
+        Value::String(s) if s == "erbs" => Ok(Kind::Erbs),
+        other => fail(format!(
+            "field \"kind\": expected \"bfbs\" or \"erbs\", found {}",
+            describe(other)
+        )),
+    }
+}
+
+fn describe(v: &Value) -> String {
+    match v {
+        Value::String(s) => format!("{s:?}"),
+        other => input::kind(other).to_string(),
+    }
+}
+
+/// The basis parameters, already expanded to the knot vector they are used on.
+#[derive(Clone, Debug)]
+enum BasisParams {
+    /// One exponent per basis function B_2 … B_{n+1}.
+    Bfbs(Vec<u32>),
+    /// One set (α, β, γ, λ, σ) for all intervals, or one per knot interval t_j … t_{j+1}.
+    Erbs {
+        sets: Vec<[RealInput; 5]>,
+        centre: CentreReading,
+    },
+}
+
+/// Read `params` for `kind` on knots t_1 … t_{n+2} (`nonempty[j]`: interval j+1 is not
+/// empty). A per-interval array has one entry per knot interval, or one per non-empty
+/// interval (the empty end intervals of doubled end knots then copy their neighbour).
+fn basis_params(
+    doc: &Map<String, Value>,
+    kind: Kind,
+    nonempty: &[bool],
+) -> Result<BasisParams, InputError> {
+    let empty = Map::new();
+    let params = match doc.get("params") {
+        None => &empty,
+        Some(Value::Object(map)) => map,
+        Some(other) => {
+            return fail(format!(
+                "field \"params\": expected an object, found {}",
+                input::kind(other)
+            ))
+        }
+    };
+    let basis_count = nonempty.len() - 1;
+    match kind {
+        Kind::Bfbs => {
+            input::only_fields(params, &["i"])
+                .map_err(|e| InputError(e.0.replacen("input:", "field \"params\":", 1)))?;
+            let exponent = |v: &Value, path: &str| {
+                input::count(v, path, MAX_EXPONENT as usize).and_then(|i| {
+                    if i == 0 {
+                        fail(format!("field \"{path}\": exponents must be at least 1"))
+                    } else {
+                        Ok(i as u32)
+                    }
+                })
+            };
+            let exponents = match params.get("i") {
+                None => vec![2; basis_count],
+                Some(Value::Array(items)) => {
+                    if items.len() != basis_count {
+                        return fail(format!(
+                            "field \"params.i\": expected one exponent per basis function ({basis_count}), found {}",
+                            items.len()
+                        ));
+                    }
+                    items
+                        .iter()
+                        .enumerate()
+                        .map(|(k, v)| exponent(v, &format!("params.i[{k}]")))
+                        .collect::<Result<_, _>>()?
+                }
+                Some(v) => vec![exponent(v, "params.i")?; basis_count],
+            };
+            Ok(BasisParams::Bfbs(exponents))
+        }
+        Kind::Erbs => {
+            let mut known = ERBS_FIELDS.to_vec();
+            known.push("centre");
+            input::only_fields(params, &known)
+                .map_err(|e| InputError(e.0.replacen("input:", "field \"params\":", 1)))?;
+            let centre = match params.get("centre") {
+                None => CentreReading::Cited,
+                Some(Value::String(s)) if s == "cited" => CentreReading::Cited,
+                Some(Value::String(s)) if s == "printed" => CentreReading::AsPrinted,
+                Some(other) => {
+                    return fail(format!(
+                        "field \"params.centre\": expected \"cited\" or \"printed\", found {}",
+                        describe(other)
+                    ))
+                }
+            };
+            let intervals = nonempty.len();
+            let filled = nonempty.iter().filter(|&&b| b).count();
+            // Each field: one value, or one per interval.
+            let mut columns: Vec<Option<Vec<RealInput>>> = Vec::new();
+            let mut single = Vec::new();
+            for (name, (n, d)) in ERBS_FIELDS.iter().zip(ERBS_DEFAULTS) {
+                let path = format!("params.{name}");
+                match params.get(*name) {
+                    None => {
+                        single.push(RealInput::Exact(BigRational::new(n.into(), d.into())));
+                        columns.push(None);
+                    }
+                    Some(Value::Array(items)) => {
+                        let values: Vec<RealInput> = items
+                            .iter()
+                            .enumerate()
+                            .map(|(k, v)| input::real(v, &format!("{path}[{k}]")))
+                            .collect::<Result<_, _>>()?;
+                        let per_interval = if values.len() == intervals {
+                            values
+                        } else if values.len() == filled {
+                            spread(&values, nonempty)
+                        } else {
+                            return fail(format!(
+                                "field \"{path}\": expected one value per knot interval ({intervals}, or {filled} without the empty ones), found {}",
+                                values.len()
+                            ));
+                        };
+                        single.push(per_interval[0].clone());
+                        columns.push(Some(per_interval));
+                    }
+                    Some(v) => {
+                        single.push(input::real(v, &path)?);
+                        columns.push(None);
+                    }
+                }
+            }
+            let sets = if columns.iter().all(Option::is_none) {
+                vec![array5(single)]
+            } else {
+                (0..intervals)
+                    .map(|j| {
+                        array5(
+                            columns
+                                .iter()
+                                .zip(&single)
+                                .map(|(c, s)| c.as_ref().map_or(s, |c| &c[j]).clone())
+                                .collect(),
+                        )
+                    })
+                    .collect()
+            };
+            Ok(BasisParams::Erbs { sets, centre })
+        }
+    }
+}
+
+fn array5(v: Vec<RealInput>) -> [RealInput; 5] {
+    let mut it = v.into_iter();
+    std::array::from_fn(|_| {
+        it.next()
+            .unwrap_or(RealInput::Exact(BigRational::from_integer(0.into())))
+    })
+}
+
+/// Values given for the non-empty intervals, copied onto the empty ones from the nearest
+/// non-empty interval (so an empty end interval takes the first or last value).
+fn spread(values: &[RealInput], nonempty: &[bool]) -> Vec<RealInput> {
+    let mut out = Vec::with_capacity(nonempty.len());
+    let mut next = 0;
+    for &full in nonempty {
+        out.push(values[next.min(values.len() - 1)].clone());
+        if full {
+            next += 1;
+        }
+    }
+    out
+}
+
+impl BasisParams {
+    /// The ERBS basis on `knots` in `T`, with each parameter set checked (α > 0 …).
+    fn erbs<T: Real>(
+        sets: &[[RealInput; 5]],
+        centre: CentreReading,
+        knots: &Knots<T>,
+        ctx: &T::Ctx,
+    ) -> Result<Erbs<T>, InputError> {
+        let mut params = Vec::with_capacity(sets.len());
+        for (j, set) in sets.iter().enumerate() {
+            let index = if sets.len() == 1 {
+                String::new()
+            } else {
+                format!("[{j}]")
+            };
+            let mut v = Vec::with_capacity(5);
+            for (x, name) in set.iter().zip(ERBS_FIELDS) {
+                v.push(x.to::<T>(ctx, &format!("params.{name}{index}"))?);
+            }
+            let [alpha, beta, gamma, lambda, sigma]: [T; 5] = v
+                .try_into()
+                .map_err(|_| InputError("internal: five ERBS parameters".into()))?;
+            params.push(ErbsParams::new(alpha, beta, gamma, lambda, sigma).map_err(
+                |e| match e {
+                    GerbsError::Parameter { field, message } => {
+                        InputError(format!("field \"{field}{index}\": {message}"))
+                    }
+                    other => gerbs_error(other),
+                },
+            )?);
+        }
+        Erbs::new(knots, params, centre).map_err(gerbs_error)
+    }
+}
+
+/// A list of knots read exactly and checked (`field "knots": …`).
+fn knots(doc: &Map<String, Value>) -> Result<Knots<BigRational>, InputError> {
+    let items = input::array(input::field(doc, "knots")?, "knots")?;
+    let t = items
+        .iter()
+        .enumerate()
+        .map(|(k, v)| input::number(v, &format!("knots[{k}]")))
+        .collect::<Result<Vec<_>, _>>()?;
+    Knots::new(t).map_err(gerbs_error)
+}
+
+fn nonempty_intervals<T: Field>(knots: &Knots<T>) -> Vec<bool> {
+    knots.as_slice().windows(2).map(|w| w[0] < w[1]).collect()
+}
+
+fn side(doc: &Map<String, Value>) -> Result<Side, InputError> {
+    match doc.get("side") {
+        None => Ok(Side::Right),
+        Some(Value::String(s)) if s == "right" => Ok(Side::Right),
+        Some(Value::String(s)) if s == "left" => Ok(Side::Left),
+        Some(other) => fail(format!(
+            "field \"side\": expected \"left\" or \"right\", found {}",
+            describe(other)
+        )),
+    }
+}
+
+/// What `run gerbs-basis` asks for.
+struct BasisJob {
+    knots: Knots<BigRational>,
+    params: BasisParams,
+    at: Vec<BigRational>,
+    derivatives: usize,
+    side: Side,
+}
+
+impl BasisJob {
+    fn values<T: Field, B: Blend<T>>(&self, knots: &Knots<T>, blend: &B) -> Out<T> {
+        let ctx = knots.at(1).ctx();
+        let rows = self
+            .at
+            .iter()
+            .map(|q| {
+                let t = T::from_rational(q, &ctx);
+                let d = basis_derivatives(knots, blend, &t, self.derivatives, self.side)
+                    .unwrap_or_default();
+                Out::List(
+                    d.into_iter()
+                        .map(|b| Out::List(b.into_iter().map(finite_or_null).collect()))
+                        .collect(),
+                )
+            })
+            .collect();
+        Out::object(vec![("values", Out::List(rows))])
+    }
+
+    fn knots_in<T: Field>(&self, ctx: &T::Ctx) -> Result<Knots<T>, InputError> {
+        let t = self
+            .knots
+            .as_slice()
+            .iter()
+            .map(|q| T::from_rational(q, ctx))
+            .collect();
+        Knots::new(t).map_err(|e| match e {
+            // Distinct rationals that round to one value in T.
+            GerbsError::Knots(m) => InputError(format!(
+                "field \"knots\": {m} after rounding to the working precision"
+            )),
+            other => gerbs_error(other),
+        })
+    }
+}
+
+impl Job for BasisJob {
+    fn run<T: Real>(&self, ctx: &T::Ctx) -> Result<Out<T>, InputError> {
+        let knots = self.knots_in::<T>(ctx)?;
+        Ok(match &self.params {
+            BasisParams::Bfbs(i) => {
+                self.values(&knots, &Bfbs::new(i.clone()).map_err(gerbs_error)?)
+            }
+            BasisParams::Erbs { sets, centre } => {
+                let erbs = BasisParams::erbs(sets, *centre, &knots, ctx)?;
+                self.values(&knots, &erbs)
+            }
+        })
+    }
+}
+
+/// `run gerbs-basis`: B_2 … B_{n+1} and their derivatives at the given points.
+pub fn run_gerbs_basis(
+    doc: &Map<String, Value>,
+    scalar: ScalarKind,
+) -> Result<Rendered, InputError> {
+    input::only_fields(
+        doc,
+        &["knots", "kind", "params", "at", "derivatives", "side"],
+    )?;
+    let knots = knots(doc)?;
+    let kind = kind(doc)?;
+    let params = basis_params(doc, kind, &nonempty_intervals(&knots))?;
+    let items = input::array(input::field(doc, "at")?, "at")?;
+    if items.len() > MAX_POINTS {
+        return fail(format!(
+            "field \"at\": {} points is more than the supported {MAX_POINTS}",
+            items.len()
+        ));
+    }
+    let (first, last) = (
+        knots.at(1),
+        knots.as_slice()[knots.as_slice().len() - 1].clone(),
+    );
+    let mut at = Vec::with_capacity(items.len());
+    for (k, v) in items.iter().enumerate() {
+        let t = input::number(v, &format!("at[{k}]"))?;
+        if t < *first || t > last {
+            return fail(format!(
+                "field \"at[{k}]\": {t} is outside the knots [{first}, {last}]"
+            ));
+        }
+        at.push(t);
+    }
+    let derivatives = match doc.get("derivatives") {
+        Some(v) => input::count(v, "derivatives", MAX_DERIVATIVES)?,
+        None => 0,
+    };
+    let job = BasisJob {
+        knots,
+        params,
+        at,
+        derivatives,
+        side: side(doc)?,
+    };
+    match (&job.params, scalar) {
+        (BasisParams::Bfbs(i), ScalarKind::Rational) => {
+            let bfbs = Bfbs::new(i.clone()).map_err(gerbs_error)?;
+            Ok(Rendered::plain(
+                job.values(&job.knots, &bfbs)
+                    .with_field("scalar", Out::Text("rational".into())),
+            ))
+        }
+        (BasisParams::Erbs { .. }, ScalarKind::Rational) => fail(
+            "option --scalar: the ERBS basis is an integral of exp(…) (quadrature); use f64 or mpfr:<bits>",
+        ),
+        _ => run_real(&job, scalar, "the ERBS basis"),
+    }
+}
+
+/// Waypoints [[x, y], …], read exactly and checked for Algorithm 1 (at least `min`).
+fn waypoints(doc: &Map<String, Value>) -> Result<Vec<[BigRational; 2]>, InputError> {
+    let items = input::array(input::field(doc, "waypoints")?, "waypoints")?;
+    if items.len() > MAX_POINTS {
+        return fail(format!(
+            "field \"waypoints\": {} waypoints is more than the supported {MAX_POINTS}",
+            items.len()
+        ));
+    }
+    items
+        .iter()
+        .enumerate()
+        .map(|(k, v)| {
+            let path = format!("waypoints[{k}]");
+            let xy = input::array(v, &path)?;
+            if xy.len() != 2 {
+                return fail(format!(
+                    "field \"{path}\": expected [x, y], found {} values",
+                    xy.len()
+                ));
+            }
+            Ok([
+                input::number(&xy[0], &format!("{path}[0]"))?,
+                input::number(&xy[1], &format!("{path}[1]"))?,
+            ])
+        })
+        .collect()
+}
+
+fn positive(doc: &Map<String, Value>, name: &str, what: &str) -> Result<BigRational, InputError> {
+    let r = input::number(input::field(doc, name)?, name)?;
+    if r <= BigRational::from_integer(0.into()) {
+        return fail(format!(
+            "field \"{name}\": {what} must be positive, got {r}"
+        ));
+    }
+    Ok(r)
+}
+
+fn to_points<T: Field>(w: &[[BigRational; 2]], ctx: &T::Ctx) -> Vec<[T; 2]> {
+    w.iter()
+        .map(|p| [T::from_rational(&p[0], ctx), T::from_rational(&p[1], ctx)])
+        .collect()
+}
+
+/// What `run gerbs-path` asks for.
+struct PathJob {
+    waypoints: Vec<[BigRational; 2]>,
+    radius: BigRational,
+    theta_o: RealInput,
+    line_length: Option<BigRational>,
+    convention: ArcConvention,
+    params: BasisParams,
+    samples: usize,
+}
+
+impl PathJob {
+    fn out<T: Real, B: Blend<T>>(&self, path: &GerbsPath<T, B>, ctx: &T::Ctx) -> Out<T> {
+        let samples = path.sample(self.samples);
+        let n = self.waypoints.len();
+        let at_knots: Vec<_> = (0..n)
+            .map(|i| {
+                // The knot t_{i+2} of waypoint i + 1 (from the inside at the ends).
+                let t = path.knots.at(i + 2).clone();
+                path.at(&t, if i + 1 == n { Side::Left } else { Side::Right })
+            })
+            .collect();
+        // Mathematical zeros print as 0 (noise_level): coordinates next to the largest
+        // waypoint coordinate, tangents next to the largest tangent, curvature next to 1/R.
+        let coordinates = to_points::<T>(&self.waypoints, ctx);
+        let point_level = largest(coordinates.iter().flatten()).map(|m| noise_level(&m));
+        let tangent_level =
+            largest(at_knots.iter().flat_map(|p| p.d1.iter())).map(|m| noise_level(&m));
+        let curvature_level = noise_level(&(T::one_in(ctx) / &T::from_rational(&self.radius, ctx)));
+        let vector = |v: &[T; 2], level: Option<&T>| {
+            Out::nums(v.iter().map(|x| flush(x.clone(), level)).collect())
+        };
+        let kappa = |k: &T| finite_or_null(flush(k.clone(), Some(&curvature_level)));
+        let at_waypoints = at_knots
+            .iter()
+            .map(|p| {
+                Out::object(vec![
+                    ("t", Out::Num(p.t.clone())),
+                    ("point", vector(&p.point, point_level.as_ref())),
+                    ("tangent", vector(&p.d1, tangent_level.as_ref())),
+                    ("curvature", kappa(&p.curvature)),
+                ])
+            })
+            .collect();
+        Out::object(vec![
+            (
+                "t",
+                Out::nums(samples.iter().map(|p| p.t.clone()).collect()),
+            ),
+            (
+                "points",
+                Out::List(
+                    samples
+                        .iter()
+                        .map(|p| vector(&p.point, point_level.as_ref()))
+                        .collect(),
+                ),
+            ),
+            (
+                "curvature",
+                Out::List(samples.iter().map(|p| kappa(&p.curvature)).collect()),
+            ),
+            (
+                "length",
+                Out::Num(path.length(&default_tolerance::<T>(ctx))),
+            ),
+            ("at_waypoints", Out::List(at_waypoints)),
+            (
+                "turns",
+                Out::List(
+                    path.tangents
+                        .s
+                        .iter()
+                        .map(|&s| Out::Int(s as i64))
+                        .collect(),
+                ),
+            ),
+        ])
+    }
+}
+
+impl Job for PathJob {
+    fn run<T: Real>(&self, ctx: &T::Ctx) -> Result<Out<T>, InputError> {
+        let spec = PathSpec {
+            waypoints: to_points(&self.waypoints, ctx),
+            radius: T::from_rational(&self.radius, ctx),
+            theta_o: self.theta_o.to::<T>(ctx, "theta_o")?,
+            line_length: self.line_length.as_ref().map(|l| T::from_rational(l, ctx)),
+            convention: self.convention,
+        };
+        match &self.params {
+            BasisParams::Bfbs(i) => {
+                let bfbs = Bfbs::new(i.clone()).map_err(gerbs_error)?;
+                Ok(self.out(&GerbsPath::new(&spec, bfbs).map_err(gerbs_error)?, ctx))
+            }
+            BasisParams::Erbs { sets, centre } => {
+                let knots = Knots::uniform(spec.waypoints.len(), ctx).map_err(gerbs_error)?;
+                let erbs = BasisParams::erbs(sets, *centre, &knots, ctx)?;
+                Ok(self.out(&GerbsPath::new(&spec, erbs).map_err(gerbs_error)?, ctx))
+            }
+        }
+    }
+}
+
+/// `run gerbs-path`: Algorithm 2 through the waypoints, sampled, with length and the
+/// values at the waypoints' knots.
+pub fn run_gerbs_path(
+    doc: &Map<String, Value>,
+    scalar: ScalarKind,
+) -> Result<Rendered, InputError> {
+    input::only_fields(
+        doc,
+        &[
+            "waypoints",
+            "radius",
+            "theta_o",
+            "kind",
+            "params",
+            "samples",
+            "line_length",
+            "arcs",
+        ],
+    )?;
+    let waypoints = waypoints(doc)?;
+    check_waypoints(&waypoints).map_err(gerbs_error)?;
+    let radius = positive(doc, "radius", "the arc radius R")?;
+    let theta_o = match doc.get("theta_o") {
+        Some(v) => input::real(v, "theta_o")?,
+        None => return fail("input: missing field \"theta_o\" (the paper uses \"pi/8\")"),
+    };
+    let kind = kind(doc)?;
+    let knots = Knots::<BigRational>::uniform(waypoints.len(), &()).map_err(gerbs_error)?;
+    let params = basis_params(doc, kind, &nonempty_intervals(&knots))?;
+    let samples = match doc.get("samples") {
+        Some(v) => input::count(v, "samples", MAX_POINTS)?,
+        None => DEFAULT_PATH_SAMPLES,
+    };
+    if samples < 2 {
+        return fail("field \"samples\": at least 2 samples (the two ends)");
+    }
+    let line_length = doc
+        .get("line_length")
+        .map(|_| positive(doc, "line_length", "the line length l"))
+        .transpose()?;
+    let convention = match doc.get("arcs") {
+        None => ArcConvention::TurnDirection,
+        Some(Value::String(s)) if s == "turn" => ArcConvention::TurnDirection,
+        Some(Value::String(s)) if s == "printed" => ArcConvention::AsPrinted,
+        Some(other) => {
+            return fail(format!(
+                "field \"arcs\": expected \"turn\" or \"printed\", found {}",
+                describe(other)
+            ))
+        }
+    };
+    let job = PathJob {
+        waypoints,
+        radius,
+        theta_o,
+        line_length,
+        convention,
+        params,
+        samples,
+    };
+    run_real(&job, scalar, "a GERBS path")
+}
+
+/// What `run dubins` asks for.
+struct DubinsJob {
+    waypoints: Vec<[BigRational; 2]>,
+    headings: Option<Vec<RealInput>>,
+    radius: BigRational,
+    samples: usize,
+}
+
+impl Job for DubinsJob {
+    fn run<T: Real>(&self, ctx: &T::Ctx) -> Result<Out<T>, InputError> {
+        let w = to_points::<T>(&self.waypoints, ctx);
+        let radius = T::from_rational(&self.radius, ctx);
+        let headings = match &self.headings {
+            Some(h) => h
+                .iter()
+                .enumerate()
+                .map(|(k, x)| x.to::<T>(ctx, &format!("headings[{k}]")))
+                .collect::<Result<Vec<_>, _>>()?,
+            None => tangents(&w)
+                .map_err(gerbs_error)?
+                .m
+                .iter()
+                .map(|m| m[1].atan2(&m[0]))
+                .collect(),
+        };
+        let pose = |i: usize| [w[i][0].clone(), w[i][1].clone(), headings[i].clone()];
+        let mut legs = Vec::new();
+        for i in 0..w.len() - 1 {
+            legs.push(shortest(&pose(i), &pose(i + 1), &radius).ok_or_else(|| {
+                InputError(format!(
+                    "field \"waypoints\": no Dubins path from waypoint {} to {}",
+                    i + 1,
+                    i + 2
+                ))
+            })?);
+        }
+        let mut total = T::zero_in(ctx);
+        for leg in &legs {
+            total += &leg.total();
+        }
+        // Mathematical zeros print as 0 (noise_level): coordinates next to the largest
+        // waypoint coordinate or R, headings next to π, segment lengths next to the total.
+        let mut scale = radius.clone();
+        if let Some(m) = largest(w.iter().flatten()) {
+            if m > scale {
+                scale = m;
+            }
+        }
+        let (xy_level, angle_level, length_level) = (
+            noise_level(&scale),
+            noise_level(&T::pi(ctx)),
+            noise_level(&total),
+        );
+        let last = (self.samples - 1) as i64;
+        let legs = legs
+            .iter()
+            .enumerate()
+            .map(|(i, leg)| {
+                let length = leg.total();
+                let samples = (0..=last)
+                    .map(|k| {
+                        let [x, y, h] =
+                            leg.pose_at(&(length.clone() * &T::from_ratio(k, last, ctx)));
+                        Out::nums(vec![
+                            flush(x, Some(&xy_level)),
+                            flush(y, Some(&xy_level)),
+                            flush(h, Some(&angle_level)),
+                        ])
+                    })
+                    .collect();
+                Out::object(vec![
+                    ("from", Out::Int(i as i64 + 1)),
+                    ("to", Out::Int(i as i64 + 2)),
+                    ("word", Out::Text(leg.word_name())),
+                    (
+                        "lengths",
+                        Out::nums(
+                            leg.lengths
+                                .iter()
+                                .map(|l| flush(l.clone(), Some(&length_level)))
+                                .collect(),
+                        ),
+                    ),
+                    ("length", Out::Num(length)),
+                    ("samples", Out::List(samples)),
+                ])
+            })
+            .collect();
+        Ok(Out::object(vec![
+            (
+                "headings",
+                Out::nums(
+                    headings
+                        .into_iter()
+                        .map(|h| flush(h, Some(&angle_level)))
+                        .collect(),
+                ),
+            ),
+            ("legs", Out::List(legs)),
+            ("length", Out::Num(total)),
+        ]))
+    }
+}
+
+/// `run dubins`: the shortest Dubins path of radius R between consecutive waypoint poses.
+pub fn run_dubins(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, InputError> {
+    input::only_fields(doc, &["waypoints", "headings", "radius", "samples"])?;
+    let waypoints = waypoints(doc)?;
+    let headings = match doc.get("headings") {
+        None => {
+            // Headings from Algorithm 1: its checks apply.
+            check_waypoints(&waypoints).map_err(gerbs_error)?;
+            None
+        }
+        Some(v) => {
+            let items = input::array(v, "headings")?;
+            if waypoints.len() < 2 {
+                return fail(format!(
+                    "field \"waypoints\": need at least 2 waypoints, got {}",
+                    waypoints.len()
+                ));
+            }
+            if items.len() != waypoints.len() {
+                return fail(format!(
+                    "field \"headings\": expected one heading per waypoint ({}), found {}",
+                    waypoints.len(),
+                    items.len()
+                ));
+            }
+            Some(
+                items
+                    .iter()
+                    .enumerate()
+                    .map(|(k, v)| input::real(v, &format!("headings[{k}]")))
+                    .collect::<Result<Vec<_>, _>>()?,
+            )
+        }
+    };
+    let radius = positive(doc, "radius", "the turn radius R")?;
+    let samples = match doc.get("samples") {
+        Some(v) => input::count(v, "samples", MAX_POINTS)?,
+        None => DEFAULT_LEG_SAMPLES,
+    };
+    if samples < 2 {
+        return fail("field \"samples\": at least 2 samples per leg (its two ends)");
+    }
+    let job = DubinsJob {
+        waypoints,
+        headings,
+        radius,
+        samples,
+    };
+    run_real(&job, scalar, "a Dubins path")
+}
