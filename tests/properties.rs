@@ -307,3 +307,214 @@ mod ph_interpolation {
         }
     }
 }
+
+/// Paper 003: GERBS bases and paths on random knots and waypoints.
+mod gerbs {
+    use proptest::prelude::*;
+    use trajverify::gerbs::bfbs::Bfbs;
+    use trajverify::gerbs::erbs::{CentreReading, Erbs, ErbsParams};
+    use trajverify::gerbs::path::{
+        check_waypoints, local_curves, tangents, ArcConvention, GerbsPath, PathSpec,
+    };
+    use trajverify::gerbs::{basis_derivatives, Blend, Knots, Side};
+    use trajverify::scalar::{BigRational, Real};
+
+    fn q(n: i64, d: i64) -> BigRational {
+        BigRational::new(n.into(), d.into())
+    }
+
+    /// Increasing rational knots from positive steps k/7, the end pairs doubled or not.
+    fn knots() -> impl Strategy<Value = Knots<BigRational>> {
+        (
+            prop::collection::vec(1i64..=20, 2..7),
+            any::<bool>(),
+            any::<bool>(),
+        )
+            .prop_map(|(steps, double_start, double_end)| {
+                let mut t = vec![q(0, 1)];
+                if double_start {
+                    t.push(q(0, 1));
+                }
+                for s in steps {
+                    let last = t[t.len() - 1].clone();
+                    t.push(last + q(s, 7));
+                }
+                if double_end {
+                    t.push(t[t.len() - 1].clone());
+                }
+                Knots::new(t).expect("increasing")
+            })
+            .prop_filter("a non-empty [t_2, t_{n+1}]", |k| k.basis_count() >= 2)
+    }
+
+    /// n = 3…7 waypoints marching in x with random offsets, no collinear triple.
+    fn waypoints() -> impl Strategy<Value = Vec<[i64; 2]>> {
+        prop::collection::vec((-40i64..=40, -150i64..=150), 3..=7)
+            .prop_map(|offsets| {
+                offsets
+                    .iter()
+                    .enumerate()
+                    .map(|(i, (dx, dy))| [300 * i as i64 + dx, *dy])
+                    .collect()
+            })
+            .prop_filter("a defined turn at every waypoint", |w: &Vec<[i64; 2]>| {
+                let r: Vec<[BigRational; 2]> = w.iter().map(|p| [q(p[0], 1), q(p[1], 1)]).collect();
+                check_waypoints(&r).is_ok()
+            })
+    }
+
+    fn spec<T: Real>(w: &[[i64; 2]], radius: i64, ctx: &T::Ctx) -> PathSpec<T> {
+        PathSpec {
+            waypoints: w
+                .iter()
+                .map(|p| [T::from_i64(p[0], ctx), T::from_i64(p[1], ctx)])
+                .collect(),
+            radius: T::from_i64(radius, ctx),
+            theta_o: T::pi(ctx) / &T::from_i64(8, ctx),
+            line_length: None,
+            convention: ArcConvention::TurnDirection,
+        }
+    }
+
+    fn erbs(n: usize, beta: i64, lambda: i64) -> Erbs<f64> {
+        let knots = Knots::<f64>::uniform(n, &()).expect("knots");
+        let p = ErbsParams::new(1.0, beta as f64, 1.0, lambda as f64 / 10.0, 1.0).expect("params");
+        Erbs::new(&knots, vec![p], CentreReading::Cited).expect("erbs")
+    }
+
+    /// p(t_k) = W_{k−1}, p′(t_k) along m (travel direction), κ(t_k) = s/R at the arcs.
+    #[allow(clippy::needless_range_loop)] // i indexes waypoints, knots and tangents together
+    fn check_interpolation<B: Blend<f64>>(path: &GerbsPath<f64, B>, w: &[[i64; 2]], radius: i64) {
+        let n = w.len();
+        for i in 0..n {
+            let t = *path.knots.at(i + 2);
+            let p = path.at(&t, if i + 1 == n { Side::Left } else { Side::Right });
+            let scale = 1e-9 * (1.0 + w[i][0].abs().max(w[i][1].abs()) as f64);
+            assert!(
+                (p.point[0] - w[i][0] as f64).abs() < scale,
+                "W{}: {:?}",
+                i + 1,
+                p.point
+            );
+            assert!(
+                (p.point[1] - w[i][1] as f64).abs() < scale,
+                "W{}: {:?}",
+                i + 1,
+                p.point
+            );
+            let m = path.tangents.m[i];
+            let speed = p.d1[0].hypot(p.d1[1]);
+            let along = (p.d1[0] * m[0] + p.d1[1] * m[1]) / speed;
+            assert!((along - 1.0).abs() < 1e-12, "W{}: cos = {along}", i + 1);
+            if i > 0 && i + 1 < n {
+                let want = path.tangents.s[i] as f64 / radius as f64;
+                assert!(
+                    (p.curvature - want).abs() < 1e-12,
+                    "W{}: κ = {}",
+                    i + 1,
+                    p.curvature
+                );
+            }
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(48))]
+
+        /// Σ B_k = 1 and Σ B_k^(r) = 0 exactly for the BFBS (its falling and rising sides are
+        /// computed separately), on random knots, exponents and points of [t_2, t_{n+1}], from
+        /// both sides.
+        #[test]
+        fn bfbs_partition_of_unity_is_exact(
+            knots in knots(),
+            exponents in prop::collection::vec(1u32..=5, 8),
+            frac in 0i64..=1000,
+        ) {
+            let n = knots.basis_count();
+            let bfbs = Bfbs::new(exponents[..n].to_vec()).expect("exponents");
+            // The partition holds on [t_2, t_{n+1}] (all of [t_1, t_{n+2}] with doubled ends).
+            let (a, b) = (knots.at(2).clone(), knots.at(n + 1).clone());
+            let t = a.clone() + (b - a) * q(frac, 1000);
+            for side in [Side::Left, Side::Right] {
+                let d = basis_derivatives(&knots, &bfbs, &t, 3, side).expect("inside");
+                for r in 0..=3 {
+                    let sum: BigRational = d.iter().map(|x| x[r].clone()).sum();
+                    prop_assert_eq!(sum, q((r == 0) as i64, 1));
+                }
+            }
+        }
+
+        /// The ERBS sums to 1 (f64, random β and λ) and its slopes to 0.
+        #[test]
+        fn erbs_partition_of_unity(n in 3usize..=7, beta in 1i64..=6, lambda in 2i64..=8, frac in 0i64..=1000) {
+            let e = erbs(n, beta, lambda);
+            let knots = Knots::<f64>::uniform(n, &()).expect("knots");
+            let t = frac as f64 / 1000.0;
+            let d = basis_derivatives(&knots, &e, &t, 1, Side::Right).expect("inside");
+            let sum: f64 = d.iter().map(|x| x[0]).sum();
+            let slope: f64 = d.iter().map(|x| x[1]).sum();
+            prop_assert!((sum - 1.0).abs() < 1e-14, "{}", sum);
+            prop_assert!(slope.abs() < 1e-9 * d.iter().map(|x| x[1].abs()).fold(1.0, f64::max));
+        }
+
+        /// Algorithm 2 interpolates every waypoint along m_i with κ = s_i/R, BFBS and ERBS.
+        #[test]
+        fn paths_interpolate_random_waypoints(w in waypoints(), radius in 10i64..=100, beta in 1i64..=6) {
+            let sp = spec::<f64>(&w, radius, &());
+            let bfbs = GerbsPath::new(&sp, Bfbs::uniform(2, w.len()).expect("exponents")).expect("valid");
+            check_interpolation(&bfbs, &w, radius);
+            let erbs = GerbsPath::new(&sp, erbs(w.len(), beta, 5)).expect("valid");
+            check_interpolation(&erbs, &w, radius);
+        }
+
+        /// Locality: moving waypoint k (tangents and turns kept) leaves the path bit for bit
+        /// unchanged outside the support (t_k, t_{k+2}) of its basis function B_{k+1}.
+        #[test]
+        fn moving_a_waypoint_changes_only_its_support(
+            w in waypoints(),
+            pick in 0usize..7,
+            (dx, dy) in (-30i64..=30, -30i64..=30),
+            samples in prop::collection::vec(0i64..=1000, 24),
+        ) {
+            let n = w.len();
+            let k = pick % n;
+            let sp = spec::<f64>(&w, 50, &());
+            let tan = tangents(&sp.waypoints).expect("valid");
+            let mut moved = sp.clone();
+            moved.waypoints[k] = [sp.waypoints[k][0] + dx as f64, sp.waypoints[k][1] + dy as f64];
+            let (curves, _) = local_curves(&moved, Some(&tan)).expect("valid");
+            let base = GerbsPath::new(&sp, Bfbs::uniform(2, n).expect("exponents")).expect("valid");
+            let after = GerbsPath::from_parts(base.knots.clone(), base.blend.clone(), curves.clone(), tan.clone());
+            let base_e = GerbsPath::new(&sp, erbs(n, 3, 5)).expect("valid");
+            let after_e = GerbsPath::from_parts(base_e.knots.clone(), base_e.blend.clone(), curves, tan);
+            // B_{k+2} (paper numbering) carries c_{k+1}: support [t_{k+1}, t_{k+3}].
+            let (lo, hi) = (*base.knots.at(k + 1), *base.knots.at(k + 3));
+            for s in samples {
+                let t = s as f64 / 1000.0;
+                if (lo..=hi).contains(&t) {
+                    continue;
+                }
+                prop_assert_eq!(base.at(&t, Side::Right).point, after.at(&t, Side::Right).point);
+                prop_assert_eq!(base_e.at(&t, Side::Right).point, after_e.at(&t, Side::Right).point);
+            }
+        }
+    }
+
+    /// The moved waypoint does change the path inside its support (the test above can fail).
+    #[test]
+    fn moving_a_waypoint_changes_the_path_inside_its_support() {
+        let w = [[0, 0], [300, 100], [600, -50], [900, 150]];
+        let sp = spec::<f64>(&w, 50, &());
+        let tan = tangents(&sp.waypoints).expect("valid");
+        let mut moved = sp.clone();
+        moved.waypoints[1][1] += 10.0;
+        let (curves, _) = local_curves(&moved, Some(&tan)).expect("valid");
+        let base = GerbsPath::new(&sp, Bfbs::uniform(2, 4).expect("exponents")).expect("valid");
+        let after = GerbsPath::from_parts(base.knots.clone(), base.blend.clone(), curves, tan);
+        let t = *base.knots.at(3);
+        assert_ne!(
+            base.at(&t, Side::Right).point,
+            after.at(&t, Side::Right).point
+        );
+    }
+}
