@@ -72,8 +72,12 @@ fn length(c: &mut Criterion) {
         .warm_up_time(Duration::from_millis(300));
     let tol = default_tolerance::<f64>(&());
     let (b64, e64) = (bfbs_path::<f64>(&()), erbs_path::<f64>(&()));
-    g.bench_function(BenchmarkId::new("f64", "bfbs"), |b| b.iter(|| b64.length(&tol)));
-    g.bench_function(BenchmarkId::new("f64", "erbs"), |b| b.iter(|| e64.length(&tol)));
+    g.bench_function(BenchmarkId::new("f64", "bfbs"), |b| {
+        b.iter(|| b64.length(&tol))
+    });
+    g.bench_function(BenchmarkId::new("f64", "erbs"), |b| {
+        b.iter(|| e64.length(&tol))
+    });
     g.finish();
 }
 

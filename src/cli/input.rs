@@ -121,6 +121,35 @@ pub fn real(v: &Value, path: &str) -> Result<RealInput, InputError> {
     }
 }
 
+/// One of the keywords `options` (name, value) at `path`; `default` when the field is absent
+/// (`None`: the field is required).
+pub fn choice<T: Copy>(
+    obj: &Map<String, Value>,
+    path: &str,
+    options: &[(&str, T)],
+    default: Option<T>,
+) -> Result<T, InputError> {
+    let v = match (obj.get(path), default) {
+        (None, Some(d)) => return Ok(d),
+        (None, None) => return fail(format!("input: missing field \"{path}\"")),
+        (Some(v), _) => v,
+    };
+    if let Value::String(s) = v {
+        if let Some((_, value)) = options.iter().find(|(name, _)| name == s) {
+            return Ok(*value);
+        }
+    }
+    let names: Vec<String> = options.iter().map(|(n, _)| format!("\"{n}\"")).collect();
+    let found = match v {
+        Value::String(s) => format!("{s:?}"),
+        other => kind(other).to_string(),
+    };
+    fail(format!(
+        "field \"{path}\": expected {}, found {found}",
+        names.join(" or ")
+    ))
+}
+
 /// A non-negative whole number at `path`, at most `max`.
 pub fn count(v: &Value, path: &str, max: usize) -> Result<usize, InputError> {
     let q = number(v, path)?;

@@ -83,21 +83,12 @@ enum Kind {
 }
 
 fn kind(doc: &Map<String, Value>) -> Result<Kind, InputError> {
-    match input::field(doc, "kind")? {
-        Value::String(s) if s == "bfbs" => Ok(Kind::Bfbs),
-        Value::String(s) if s == "erbs" => Ok(Kind::Erbs),
-        other => fail(format!(
-            "field \"kind\": expected \"bfbs\" or \"erbs\", found {}",
-            describe(other)
-        )),
-    }
-}
-
-fn describe(v: &Value) -> String {
-    match v {
-        Value::String(s) => format!("{s:?}"),
-        other => input::kind(other).to_string(),
-    }
+    input::choice(
+        doc,
+        "kind",
+        &[("bfbs", Kind::Bfbs), ("erbs", Kind::Erbs)],
+        None,
+    )
 }
 
 /// The basis parameters, already expanded to the knot vector they are used on.
@@ -169,17 +160,16 @@ fn basis_params(
             known.push("centre");
             input::only_fields(params, &known)
                 .map_err(|e| InputError(e.0.replacen("input:", "field \"params\":", 1)))?;
-            let centre = match params.get("centre") {
-                None => CentreReading::Cited,
-                Some(Value::String(s)) if s == "cited" => CentreReading::Cited,
-                Some(Value::String(s)) if s == "printed" => CentreReading::AsPrinted,
-                Some(other) => {
-                    return fail(format!(
-                        "field \"params.centre\": expected \"cited\" or \"printed\", found {}",
-                        describe(other)
-                    ))
-                }
-            };
+            let centre = input::choice(
+                params,
+                "centre",
+                &[
+                    ("cited", CentreReading::Cited),
+                    ("printed", CentreReading::AsPrinted),
+                ],
+                Some(CentreReading::Cited),
+            )
+            .map_err(|e| InputError(e.0.replacen("\"centre\"", "\"params.centre\"", 1)))?;
             let intervals = nonempty.len();
             let filled = nonempty.iter().filter(|&&b| b).count();
             // Each field: one value, or one per interval.
@@ -310,15 +300,12 @@ fn nonempty_intervals<T: Field>(knots: &Knots<T>) -> Vec<bool> {
 }
 
 fn side(doc: &Map<String, Value>) -> Result<Side, InputError> {
-    match doc.get("side") {
-        None => Ok(Side::Right),
-        Some(Value::String(s)) if s == "right" => Ok(Side::Right),
-        Some(Value::String(s)) if s == "left" => Ok(Side::Left),
-        Some(other) => fail(format!(
-            "field \"side\": expected \"left\" or \"right\", found {}",
-            describe(other)
-        )),
-    }
+    input::choice(
+        doc,
+        "side",
+        &[("right", Side::Right), ("left", Side::Left)],
+        Some(Side::Right),
+    )
 }
 
 /// What `run gerbs-basis` asks for.
@@ -630,17 +617,15 @@ pub fn run_gerbs_path(
         .get("line_length")
         .map(|_| positive(doc, "line_length", "the line length l"))
         .transpose()?;
-    let convention = match doc.get("arcs") {
-        None => ArcConvention::TurnDirection,
-        Some(Value::String(s)) if s == "turn" => ArcConvention::TurnDirection,
-        Some(Value::String(s)) if s == "printed" => ArcConvention::AsPrinted,
-        Some(other) => {
-            return fail(format!(
-                "field \"arcs\": expected \"turn\" or \"printed\", found {}",
-                describe(other)
-            ))
-        }
-    };
+    let convention = input::choice(
+        doc,
+        "arcs",
+        &[
+            ("turn", ArcConvention::TurnDirection),
+            ("printed", ArcConvention::AsPrinted),
+        ],
+        Some(ArcConvention::TurnDirection),
+    )?;
     let job = PathJob {
         waypoints,
         radius,

@@ -114,15 +114,15 @@ pub fn run_condition(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Ren
         MAX_CONDITION_DERIVATIVES,
     )?;
     let (t0, t1) = input::interval(input::field(doc, "interval")?, "interval")?;
-    let kind = match input::field(doc, "matrix")? {
-        Value::String(s) if s == "transform" => TransformKind::Transform,
-        Value::String(s) if s == "binomial" => TransformKind::Binomial,
-        other => {
-            return fail(format!(
-                "field \"matrix\": expected \"transform\" or \"binomial\", found {other}"
-            ))
-        }
-    };
+    let kind = input::choice(
+        doc,
+        "matrix",
+        &[
+            ("transform", TransformKind::Transform),
+            ("binomial", TransformKind::Binomial),
+        ],
+        None,
+    )?;
     // JSON has no infinity: null when the f64 matrix overflows or nalgebra's σ_min is 0.
     let raw_reference = condition::f64_reference(m, &t0, &t1, kind);
     let reference = raw_reference.filter(|k| k.is_finite());

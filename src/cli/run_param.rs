@@ -175,16 +175,15 @@ fn read_marin(doc: &Map<String, Value>) -> Result<MarinInput, InputError> {
     {
         return fail(format!("field \"weights[{i}]\": weights must be positive"));
     }
-    let form = match doc.get("objective") {
-        None => Objective::Exact,
-        Some(Value::String(s)) if s == "exact" => Objective::Exact,
-        Some(Value::String(s)) if s == "approx" => Objective::Approximate,
-        Some(other) => {
-            return fail(format!(
-                "field \"objective\": expected \"exact\" or \"approx\", found {other}"
-            ))
-        }
-    };
+    let form = input::choice(
+        doc,
+        "objective",
+        &[
+            ("exact", Objective::Exact),
+            ("approx", Objective::Approximate),
+        ],
+        Some(Objective::Exact),
+    )?;
     let z = (0..k)
         .map(|c| points.iter().map(|p| p[c].clone()).collect())
         .collect();
