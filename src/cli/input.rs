@@ -150,6 +150,29 @@ pub fn choice<T: Copy>(
     ))
 }
 
+/// A point [x_1, …, x_N] of exactly N numbers at `path`.
+pub fn point<const N: usize>(v: &Value, path: &str) -> Result<[BigRational; N], InputError> {
+    let items = array(v, path)?;
+    if items.len() != N {
+        let names = ["x", "y", "z"];
+        let shape = if N <= names.len() {
+            names[..N].join(", ")
+        } else {
+            format!("{N} numbers")
+        };
+        return fail(format!(
+            "field \"{path}\": expected [{shape}], found {} values",
+            items.len()
+        ));
+    }
+    let mut out = Vec::with_capacity(N);
+    for (k, x) in items.iter().enumerate() {
+        out.push(number(x, &format!("{path}[{k}]"))?);
+    }
+    out.try_into()
+        .map_err(|_| InputError(format!("internal: field \"{path}\" has {N} entries")))
+}
+
 /// A non-negative whole number at `path`, at most `max`.
 pub fn count(v: &Value, path: &str, max: usize) -> Result<usize, InputError> {
     let q = number(v, path)?;

@@ -440,20 +440,7 @@ fn waypoints(doc: &Map<String, Value>) -> Result<Vec<[BigRational; 2]>, InputErr
     items
         .iter()
         .enumerate()
-        .map(|(k, v)| {
-            let path = format!("waypoints[{k}]");
-            let xy = input::array(v, &path)?;
-            if xy.len() != 2 {
-                return fail(format!(
-                    "field \"{path}\": expected [x, y], found {} values",
-                    xy.len()
-                ));
-            }
-            Ok([
-                input::number(&xy[0], &format!("{path}[0]"))?,
-                input::number(&xy[1], &format!("{path}[1]"))?,
-            ])
-        })
+        .map(|(k, v)| input::point::<2>(v, &format!("waypoints[{k}]")))
         .collect()
 }
 
@@ -485,7 +472,12 @@ struct PathJob {
 }
 
 impl PathJob {
-    fn out<T: Real, B: Blend<T>>(&self, path: &GerbsPath<T, B>, ctx: &T::Ctx) -> Out<T> {
+    fn out<T: Real, B: Blend<T>>(
+        &self,
+        path: &GerbsPath<T, B>,
+        waypoints: &[[T; 2]],
+        ctx: &T::Ctx,
+    ) -> Out<T> {
         let samples = path.sample(self.samples);
         let n = self.waypoints.len();
         let at_knots: Vec<_> = (0..n)
@@ -497,8 +489,7 @@ impl PathJob {
             .collect();
         // Mathematical zeros print as 0 (noise_level): coordinates next to the largest
         // waypoint coordinate, tangents next to the largest tangent, curvature next to 1/R.
-        let coordinates = to_points::<T>(&self.waypoints, ctx);
-        let point_level = largest(coordinates.iter().flatten()).map(|m| noise_level(&m));
+        let point_level = largest(waypoints.iter().flatten()).map(|m| noise_level(&m));
         let tangent_level =
             largest(at_knots.iter().flat_map(|p| p.d1.iter())).map(|m| noise_level(&m));
         let curvature_level = noise_level(&(T::one_in(ctx) / &T::from_rational(&self.radius, ctx)));
@@ -566,12 +557,20 @@ impl Job for PathJob {
         match &self.params {
             BasisParams::Bfbs(i) => {
                 let bfbs = Bfbs::new(i.clone()).map_err(gerbs_error)?;
-                Ok(self.out(&GerbsPath::new(&spec, bfbs).map_err(gerbs_error)?, ctx))
+                Ok(self.out(
+                    &GerbsPath::new(&spec, bfbs).map_err(gerbs_error)?,
+                    &spec.waypoints,
+                    ctx,
+                ))
             }
             BasisParams::Erbs { sets, centre } => {
                 let knots = Knots::uniform(spec.waypoints.len(), ctx).map_err(gerbs_error)?;
                 let erbs = BasisParams::erbs(sets, *centre, &knots, ctx)?;
-                Ok(self.out(&GerbsPath::new(&spec, erbs).map_err(gerbs_error)?, ctx))
+                Ok(self.out(
+                    &GerbsPath::new(&spec, erbs).map_err(gerbs_error)?,
+                    &spec.waypoints,
+                    ctx,
+                ))
             }
         }
     }

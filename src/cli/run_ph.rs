@@ -23,21 +23,6 @@ const FREE_FIELDS: [&str; 9] = [
     "theta0", "tau1", "tau2", "tau3", "theta4", "tau5", "tau6", "tau7", "theta8",
 ];
 
-fn point(doc: &Map<String, Value>, name: &str) -> Result<[BigRational; 3], InputError> {
-    let items = input::array(input::field(doc, name)?, name)?;
-    if items.len() != 3 {
-        return fail(format!(
-            "field \"{name}\": expected [x, y, z], found {} values",
-            items.len()
-        ));
-    }
-    Ok([
-        input::number(&items[0], &format!("{name}[0]"))?,
-        input::number(&items[1], &format!("{name}[1]"))?,
-        input::number(&items[2], &format!("{name}[2]"))?,
-    ])
-}
-
 /// The optional `free` object: θ0, τ1, τ2, τ3, θ4, τ5, τ6, τ7, θ8 (missing ones are 0).
 fn free_parameters(doc: &Map<String, Value>) -> Result<FreeParameters<BigRational>, InputError> {
     let mut f = FreeParameters::zero(4, &());
@@ -119,7 +104,7 @@ pub fn run_ph_hermite(
     input::only_fields(doc, &known)?;
     let mut vectors = Vec::new();
     for name in DATA_FIELDS {
-        vectors.push(point(doc, name)?);
+        vectors.push(input::point::<3>(input::field(doc, name)?, name)?);
     }
     let free = free_parameters(doc)?;
     needs_real(scalar)?;

@@ -322,15 +322,19 @@ impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
             if b.c.iter().all(Field::is_zero) {
                 continue;
             }
-            let k = i + 2;
-            let (lo, hi) = (self.knots.at(k - 1), self.knots.at(k + 1));
-            let u =
-                (var.clone() - &Taylor::constant(lo.clone())) / &Taylor::constant(hi.clone() - lo);
-            let c = self.curves[i].series(&u);
+            let c = self.local_series(i + 2, &var);
             p[0] += &(c[0].clone() * b);
             p[1] += &(c[1].clone() * b);
         }
         p
+    }
+
+    /// The local curve c_{k−1} blended by B_k, as series in t (`var`): its local parameter
+    /// is u = (t − t_{k−1})/(t_{k+1} − t_{k−1}).
+    fn local_series(&self, k: usize, var: &Taylor<T>) -> [Taylor<T>; 2] {
+        let (lo, hi) = (self.knots.at(k - 1), self.knots.at(k + 1));
+        let u = (var.clone() - &Taylor::constant(lo.clone())) / &Taylor::constant(hi.clone() - lo);
+        self.curves[k - 2].series(&u)
     }
 
     /// Point, derivatives and curvature at t.
@@ -431,10 +435,7 @@ impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
             if !(2..=n + 1).contains(&k) {
                 continue;
             }
-            let (lo, hi) = (self.knots.at(k - 1), self.knots.at(k + 1));
-            let u = (Taylor::variable(t.clone(), 1) - &Taylor::constant(lo.clone()))
-                / &Taylor::constant(hi.clone() - lo);
-            let c = self.curves[k - 2].series(&u);
+            let c = self.local_series(k, &Taylor::variable(t.clone(), 1));
             for (di, ci) in d.iter_mut().zip(&c) {
                 let cd = ci.derivatives();
                 *di += &(cd[1].clone() * &basis + &(cd[0].clone() * &basis_slope));
