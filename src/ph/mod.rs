@@ -29,36 +29,38 @@ use crate::curve::taylor::Taylor;
 use crate::quat::{vec3, Quat};
 use crate::scalar::{Field, Real};
 
-/// C(n, k) for the small degrees of PH curves, from a Pascal triangle built once (n ≤ 60,
-/// every entry fits in i64); the interpolation evaluates hundreds of them per segment.
+/// C(n, k) for the small degrees of PH curves, read from a Pascal triangle built at compile
+/// time (n ≤ 60, every entry fits in i64); the interpolation evaluates dozens of them per
+/// segment, so a lookup must cost no more than an index.
+#[inline]
 pub fn binom(n: usize, k: usize) -> i64 {
-    static TRIANGLE: std::sync::OnceLock<Vec<Vec<i64>>> = std::sync::OnceLock::new();
     if k > n {
         return 0;
     }
-    let rows = TRIANGLE.get_or_init(|| {
-        let mut t: Vec<Vec<i64>> = vec![vec![1]];
-        for r in 1..=2 * MAX_PREIMAGE_DEGREE {
-            let prev = &t[r - 1];
-            let row = (0..=r)
-                .map(|j| {
-                    let left = if j > 0 { prev[j - 1] } else { 0 };
-                    let right = prev.get(j).copied().unwrap_or(0);
-                    left + right
-                })
-                .collect();
-            t.push(row);
+    if n < PASCAL_ROWS {
+        return PASCAL[n][k];
+    }
+    // Beyond the table (not used by the PH code): the multiplicative formula.
+    let k = k.min(n - k);
+    (0..k).fold(1i64, |r, i| r * (n - i) as i64 / (i + 1) as i64)
+}
+
+const PASCAL_ROWS: usize = 2 * MAX_PREIMAGE_DEGREE + 1;
+static PASCAL: [[i64; PASCAL_ROWS]; PASCAL_ROWS] = pascal_triangle();
+
+const fn pascal_triangle() -> [[i64; PASCAL_ROWS]; PASCAL_ROWS] {
+    let mut t = [[0i64; PASCAL_ROWS]; PASCAL_ROWS];
+    let mut r = 0;
+    while r < PASCAL_ROWS {
+        t[r][0] = 1;
+        let mut j = 1;
+        while j <= r {
+            t[r][j] = t[r - 1][j - 1] + t[r - 1][j];
+            j += 1;
         }
-        t
-    });
-    rows.get(n).map_or_else(
-        || {
-            // Beyond the table (not used by the PH code): the multiplicative formula.
-            let k = k.min(n - k);
-            (0..k).fold(1i64, |r, i| r * (n - i) as i64 / (i + 1) as i64)
-        },
-        |row| row[k],
-    )
+        r += 1;
+    }
+    t
 }
 
 /// The largest preimage degree accepted (keeps every binomial product inside i64).
@@ -108,28 +110,35 @@ impl<T: Field> PhCurve<T> {
 
     /// The 2n+1 hodograph control points h_0 … h_2n (Eqs. 15 and 28).
     pub fn hodograph(&self) -> Vec<[T; 3]> {
-        let n = self.preimage_degree();
+        let mut h = vec![vec3::zero::<T>(&self.ctx()); 2 * self.preimage_degree() + 1];
+        self.add_hodograph(&mut h);
+        h
+    }
+
+    /// Add h_k to `h[k]` for k = 0 … 2n.
+    fn add_hodograph(&self, h: &mut [[T; 3]]) {
         let ctx = self.ctx();
         // Each pair (i, j), i ≤ j, contributes A_i ⋆ A_j; (i, j) and (j, i) give the same
         // vector, so the cached weight of i < j holds the factor 2.
-        let mut h = vec![vec3::zero::<T>(&ctx); 2 * n + 1];
-        for term in weights::product_terms(n) {
+        for term in weights::product_terms(self.preimage_degree()) {
             let v = self.preimage[term.i].star(&self.preimage[term.j]);
             vec3::axpy(&mut h[term.i + term.j], &term.weight.to(&ctx), &v);
         }
-        h
     }
 
     /// The 2n+2 control points p_0 … p_{2n+1} (Eq. 10d).
     pub fn control_points(&self) -> Vec<[T; 3]> {
-        let h = self.hodograph();
         let ctx = self.ctx();
-        let inv = T::one_in(&ctx) / &T::from_i64(h.len() as i64, &ctx);
-        let mut points = vec![self.start.clone()];
-        for hk in &h {
-            let mut next = points[points.len() - 1].clone();
-            vec3::axpy(&mut next, &inv, hk);
-            points.push(next);
+        // One buffer: h_k is accumulated in slot k + 1, then the running sum
+        // p_{k+1} = p_k + h_k/(2n+1) overwrites it.
+        let mut points = vec![vec3::zero::<T>(&ctx); 2 * self.preimage_degree() + 2];
+        self.add_hodograph(&mut points[1..]);
+        let inv = T::one_in(&ctx) / &T::from_i64(points.len() as i64 - 1, &ctx);
+        points[0] = self.start.clone();
+        for k in 1..points.len() {
+            let mut next = points[k - 1].clone();
+            vec3::axpy(&mut next, &inv, &points[k]);
+            points[k] = next;
         }
         points
     }
@@ -298,6 +307,20 @@ mod tests {
 
     fn q(v: [i64; 4]) -> Quat<BigRational> {
         Quat::from_components(v.map(|x| BigRational::from_integer(x.into())))
+    }
+
+    #[test]
+    fn the_compile_time_pascal_triangle_holds_every_binomial_to_n_60() {
+        for n in 0..PASCAL_ROWS {
+            let row_sum: i128 = (0..=n).map(|k| i128::from(binom(n, k))).sum();
+            assert_eq!(row_sum, 1i128 << n, "row {n}");
+            for k in 0..=n {
+                assert_eq!(binom(n, k), binom(n, n - k));
+            }
+        }
+        assert_eq!(binom(60, 30), 118_264_581_564_861_424);
+        assert_eq!(binom(17, 5), 6188);
+        assert_eq!(binom(3, 4), 0);
     }
 
     #[test]
