@@ -22,6 +22,12 @@ use super::taylor::Taylor;
 use crate::scalar::parse::{denotes_integer, parse_rational};
 use crate::scalar::{powi, BigRational, Real};
 
+/// The deepest expression accepted: operations nested inside one another (a chain
+/// `t+t+…+t` nests one level per operator) and parentheses inside one another. Parsing,
+/// compiling and evaluating recurse once per level, so a bound keeps any input from
+/// overflowing the stack; real curves nest a few dozen levels at most.
+pub const MAX_DEPTH: usize = 500;
+
 /// A syntax or name error, with the 1-based character position where it was found.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 #[error("at character {position}: {message}")]
@@ -214,6 +220,10 @@ pub fn parse_vector(text: &str) -> Result<Vec<Expr>, ExprError> {
 struct Parser {
     chars: Vec<char>,
     pos: usize,
+    /// The depth of the expression tree the last parse step returned (a leaf is 1).
+    depth: usize,
+    /// Parentheses and function calls open around the current position.
+    open: usize,
 }
 
 impl Parser {
@@ -221,7 +231,28 @@ impl Parser {
         Parser {
             chars: text.chars().collect(),
             pos: 0,
+            depth: 0,
+            open: 0,
         }
+    }
+    /// Record that the tree just built has depth `depth`, refusing one beyond [`MAX_DEPTH`].
+    fn nest(&mut self, depth: usize) -> Result<(), ExprError> {
+        if depth > MAX_DEPTH || self.open > MAX_DEPTH {
+            return Err(self.error(format!(
+                "the expression nests deeper than {MAX_DEPTH} levels"
+            )));
+        }
+        self.depth = depth;
+        Ok(())
+    }
+    /// Parse a nested part (inside parentheses, a call, a sign or an exponent) one level
+    /// further in, refusing to recurse past [`MAX_DEPTH`].
+    fn inner(&mut self, part: fn(&mut Self) -> Result<Expr, ExprError>) -> Result<Expr, ExprError> {
+        self.open += 1;
+        self.nest(self.depth)?;
+        let e = part(self);
+        self.open -= 1;
+        e
     }
     fn error(&self, message: impl Into<String>) -> ExprError {
         ExprError {
@@ -256,35 +287,33 @@ impl Parser {
     fn expr(&mut self) -> Result<Expr, ExprError> {
         let mut left = self.term()?;
         loop {
+            let left_depth = self.depth;
             self.skip_space();
-            match self.peek() {
-                Some('+') => {
-                    self.pos += 1;
-                    left = Expr::Add(Box::new(left), Box::new(self.term()?));
-                }
-                Some('-') => {
-                    self.pos += 1;
-                    left = Expr::Sub(Box::new(left), Box::new(self.term()?));
-                }
+            let op: fn(Box<Expr>, Box<Expr>) -> Expr = match self.peek() {
+                Some('+') => Expr::Add,
+                Some('-') => Expr::Sub,
                 _ => return Ok(left),
-            }
+            };
+            self.pos += 1;
+            let right = self.term()?;
+            self.nest(1 + left_depth.max(self.depth))?;
+            left = op(Box::new(left), Box::new(right));
         }
     }
     fn term(&mut self) -> Result<Expr, ExprError> {
         let mut left = self.unary()?;
         loop {
+            let left_depth = self.depth;
             self.skip_space();
-            match self.peek() {
-                Some('*') => {
-                    self.pos += 1;
-                    left = Expr::Mul(Box::new(left), Box::new(self.unary()?));
-                }
-                Some('/') => {
-                    self.pos += 1;
-                    left = Expr::Div(Box::new(left), Box::new(self.unary()?));
-                }
+            let op: fn(Box<Expr>, Box<Expr>) -> Expr = match self.peek() {
+                Some('*') => Expr::Mul,
+                Some('/') => Expr::Div,
                 _ => return Ok(left),
-            }
+            };
+            self.pos += 1;
+            let right = self.unary()?;
+            self.nest(1 + left_depth.max(self.depth))?;
+            left = op(Box::new(left), Box::new(right));
         }
     }
     fn unary(&mut self) -> Result<Expr, ExprError> {
@@ -292,11 +321,13 @@ impl Parser {
         match self.peek() {
             Some('-') => {
                 self.pos += 1;
-                Ok(Expr::Neg(Box::new(self.unary()?)))
+                let operand = self.inner(Self::unary)?;
+                self.nest(self.depth + 1)?;
+                Ok(Expr::Neg(Box::new(operand)))
             }
             Some('+') => {
                 self.pos += 1;
-                self.unary()
+                self.inner(Self::unary)
             }
             _ => self.power(),
         }
@@ -305,8 +336,10 @@ impl Parser {
         let base = self.atom()?;
         self.skip_space();
         if self.peek() == Some('^') {
+            let base_depth = self.depth;
             self.pos += 1;
-            let exponent = self.unary()?;
+            let exponent = self.inner(Self::unary)?;
+            self.nest(1 + base_depth.max(self.depth))?;
             return Ok(Expr::Pow(Box::new(base), Box::new(exponent)));
         }
         Ok(base)
@@ -318,7 +351,7 @@ impl Parser {
             None => Err(self.error("unexpected end of the expression")),
             Some('(') => {
                 self.pos += 1;
-                let e = self.expr()?;
+                let e = self.inner(Self::expr)?;
                 self.expect(')', "expected ')'")?;
                 Ok(e)
             }
@@ -342,6 +375,7 @@ impl Parser {
                     }
                 }
                 let text: String = self.chars[start..self.pos].iter().collect();
+                self.nest(1)?;
                 parse_rational(&text)
                     .map(Expr::Number)
                     .map_err(|e| ExprError {
@@ -358,8 +392,8 @@ impl Parser {
                 }
                 let name: String = self.chars[start..self.pos].iter().collect();
                 match name.as_str() {
-                    "t" => return Ok(Expr::T),
-                    "pi" => return Ok(Expr::Pi),
+                    "t" => return self.nest(1).map(|_| Expr::T),
+                    "pi" => return self.nest(1).map(|_| Expr::Pi),
                     _ => {}
                 }
                 let Some(&(_, f)) = Func::ALL.iter().find(|(n, _)| *n == name) else {
@@ -371,8 +405,9 @@ impl Parser {
                     });
                 };
                 self.expect('(', &format!("expected '(' after {name}"))?;
-                let arg = self.expr()?;
+                let arg = self.inner(Self::expr)?;
                 self.expect(')', "expected ')'")?;
+                self.nest(self.depth + 1)?;
                 Ok(Expr::Call(f, Box::new(arg)))
             }
             Some(c) => Err(self.error(format!("unexpected {c:?}"))),
@@ -431,5 +466,27 @@ mod tests {
         assert_eq!(parse_expr("(t + 1").unwrap_err().position, 7);
         assert!(parse_vector("sin(t)").is_err());
         assert!(parse_expr("t t").is_err());
+    }
+
+    #[test]
+    fn deep_nesting_is_an_error_not_a_stack_overflow() {
+        let deep =
+            |open: &str, close: &str, n: usize| format!("{}t{}", open.repeat(n), close.repeat(n));
+        for text in [
+            deep("(", ")", 100_000),
+            deep("sin(", ")", 100_000),
+            deep("-", "", 100_000),
+            deep("2^", "", 100_000),
+            format!("t{}", "+t".repeat(100_000)),
+            format!("t{}", "*t".repeat(100_000)),
+        ] {
+            let e = parse_expr(&text).unwrap_err();
+            assert!(e.message.contains("nests deeper than 500"), "{e}");
+        }
+        // Up to the bound every form parses and evaluates.
+        let ok = |text: String| parse_expr(&text).unwrap().eval(&0.5f64);
+        assert_eq!(ok(deep("(", ")", MAX_DEPTH - 1)), 0.5);
+        assert_eq!(ok(deep("-", "", MAX_DEPTH - 2)), 0.5);
+        assert_eq!(ok(format!("t{}", "*1".repeat(MAX_DEPTH - 1))), 0.5);
     }
 }
