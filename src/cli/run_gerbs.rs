@@ -472,7 +472,7 @@ struct PathJob {
 }
 
 impl PathJob {
-    fn out<T: Real, B: Blend<T>>(
+    fn out<T: Real, B: Blend<T> + Sync>(
         &self,
         path: &GerbsPath<T, B>,
         waypoints: &[[T; 2]],

@@ -20,6 +20,7 @@ use super::quadrature::TanhSinh;
 use super::{basis_series, Blend, GerbsError, Knots, Side};
 use crate::curve::taylor::Taylor;
 use crate::scalar::{Field, Real};
+use rayon::prelude::*;
 use std::cell::RefCell;
 
 /// Unit tangents m_i and turn signs s_i of Algorithm 1.
@@ -371,51 +372,68 @@ impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
     /// The arc length ∫|p′| dt, by tanh–sinh on each knot interval (split at the basis's
     /// break points), to relative tolerance `tol`. When F_j is itself a quadrature (ERBS),
     /// F_j is carried from node to node: each node integrates Ψ_j only from the nearest node
-    /// already done, not from the knot.
-    pub fn length(&self, tol: &T) -> T {
+    /// already done, not from the knot. The knot intervals are independent and run in
+    /// parallel; their lengths are added in knot order, so the sum does not depend on the
+    /// number of threads.
+    pub fn length(&self, tol: &T) -> T
+    where
+        B: Sync,
+    {
+        let ctx = tol.ctx();
+        let rule = TanhSinh::new(&ctx, 12);
+        let knots = self.knots.as_slice();
+        let pieces: Vec<T> = (1..knots.len())
+            .into_par_iter()
+            .map(|j| self.interval_length(j, &rule, tol))
+            .collect();
+        let mut total = T::zero_in(&ctx);
+        for piece in &pieces {
+            total += piece;
+        }
+        total
+    }
+
+    /// ∫|p′| dt over knot interval j (zero when it is empty).
+    fn interval_length(&self, j: usize, rule: &TanhSinh<T>, tol: &T) -> T {
         let ctx = tol.ctx();
         let (zero, one) = (T::zero_in(&ctx), T::one_in(&ctx));
-        let rule = TanhSinh::new(&ctx, 12);
         let mut total = zero.clone();
-        let knots = self.knots.as_slice();
-        for j in 1..knots.len() {
-            let (a, b) = (&knots[j - 1], &knots[j]);
-            if a >= b {
-                continue;
+        let (a, b) = (self.knots.at(j), self.knots.at(j + 1));
+        if a >= b {
+            return total;
+        }
+        // (t, F_j(t)) already known on this interval, sorted by t.
+        let known = RefCell::new(vec![(a.clone(), zero.clone()), (b.clone(), one.clone())]);
+        let carried = |t: &T| -> T {
+            let mut known = known.borrow_mut();
+            let i = known.partition_point(|(s, _)| s <= t);
+            let (prev, next) = (&known[i - 1], &known[i.min(known.len() - 1)]);
+            if prev.0 == *t {
+                return prev.1.clone();
             }
-            // (t, F_j(t)) already known on this interval, sorted by t.
-            let known = RefCell::new(vec![(a.clone(), zero.clone()), (b.clone(), one.clone())]);
-            let carried = |t: &T| -> T {
-                let mut known = known.borrow_mut();
-                let i = known.partition_point(|(s, _)| s <= t);
-                let (prev, next) = (&known[i - 1], &known[i.min(known.len() - 1)]);
-                if prev.0 == *t {
-                    return prev.1.clone();
-                }
-                let f = if t.clone() - &prev.0 <= next.0.clone() - t {
-                    prev.1.clone() + &self.blend.increment(&self.knots, j, &prev.0, t)
-                } else {
-                    next.1.clone() - &self.blend.increment(&self.knots, j, t, &next.0)
-                };
-                known.insert(i, (t.clone(), f.clone()));
-                f
+            let f = if t.clone() - &prev.0 <= next.0.clone() - t {
+                prev.1.clone() + &self.blend.increment(&self.knots, j, &prev.0, t)
+            } else {
+                next.1.clone() - &self.blend.increment(&self.knots, j, t, &next.0)
             };
-            let mut cuts = vec![a.clone()];
-            cuts.extend(self.blend.break_points(&self.knots, j));
-            cuts.push(b.clone());
-            for w in cuts.windows(2) {
-                let speed = |l: &T, _: &T| {
-                    let t = w[0].clone() + l;
-                    let d = if self.blend.sweeps() {
-                        self.velocity(j, &t, &carried(&t), &self.blend.slope(&self.knots, j, &t))
-                    } else {
-                        let [x, y] = self.series(&t, 1, Side::Right);
-                        [x.derivatives()[1].clone(), y.derivatives()[1].clone()]
-                    };
-                    (d[0].clone() * &d[0] + &(d[1].clone() * &d[1])).sqrt()
+            known.insert(i, (t.clone(), f.clone()));
+            f
+        };
+        let mut cuts = vec![a.clone()];
+        cuts.extend(self.blend.break_points(&self.knots, j));
+        cuts.push(b.clone());
+        for w in cuts.windows(2) {
+            let speed = |l: &T, _: &T| {
+                let t = w[0].clone() + l;
+                let d = if self.blend.sweeps() {
+                    self.velocity(j, &t, &carried(&t), &self.blend.slope(&self.knots, j, &t))
+                } else {
+                    let [x, y] = self.series(&t, 1, Side::Right);
+                    [x.derivatives()[1].clone(), y.derivatives()[1].clone()]
                 };
-                total += &rule.integrate(&w[0], &w[1], speed, tol, &zero).value;
-            }
+                (d[0].clone() * &d[0] + &(d[1].clone() * &d[1])).sqrt()
+            };
+            total += &rule.integrate(&w[0], &w[1], speed, tol, &zero).value;
         }
         total
     }
