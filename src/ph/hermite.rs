@@ -322,7 +322,8 @@ pub fn end_coefficients<T: Field>(d: &mut [[T; 3]], big: usize, ctx: &T::Ctx) {
 pub fn c_p<T: Field>(weights: &MiddleWeights, a: &[Quat<T>]) -> [T; 3] {
     let ctx = a[0].ctx();
     let mut c = vec3::zero::<T>(&ctx);
-    // The terms come ordered by row i, then column j.
+    // `middle_weights` lists the terms row by row, so each row is one chunk (a row split in
+    // two chunks would still sum correctly, with one more ⋆ product).
     for row in weights.c_p.chunk_by(|s, t| s.i == t.i) {
         let mut combination = Quat::zero(&ctx);
         for term in row {
