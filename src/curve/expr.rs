@@ -237,10 +237,8 @@ impl Parser {
     }
     /// Record that the tree just built has depth `depth`, refusing one beyond [`MAX_DEPTH`].
     fn nest(&mut self, depth: usize) -> Result<(), ExprError> {
-        if depth > MAX_DEPTH || self.open > MAX_DEPTH {
-            return Err(self.error(format!(
-                "the expression nests deeper than {MAX_DEPTH} levels"
-            )));
+        if depth > MAX_DEPTH {
+            return Err(self.too_deep());
         }
         self.depth = depth;
         Ok(())
@@ -248,11 +246,18 @@ impl Parser {
     /// Parse a nested part (inside parentheses, a call, a sign or an exponent) one level
     /// further in, refusing to recurse past [`MAX_DEPTH`].
     fn inner(&mut self, part: fn(&mut Self) -> Result<Expr, ExprError>) -> Result<Expr, ExprError> {
+        if self.open >= MAX_DEPTH {
+            return Err(self.too_deep());
+        }
         self.open += 1;
-        self.nest(self.depth)?;
         let e = part(self);
         self.open -= 1;
         e
+    }
+    fn too_deep(&self) -> ExprError {
+        self.error(format!(
+            "the expression nests deeper than {MAX_DEPTH} levels"
+        ))
     }
     fn error(&self, message: impl Into<String>) -> ExprError {
         ExprError {
