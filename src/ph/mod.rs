@@ -208,13 +208,15 @@ pub fn frame_and_omega<T: Field>(a: &Quat<T>, da: &Quat<T>) -> ([[T; 3]; 3], [T;
     let ctx = a.ctx();
     let n2 = a.norm2();
     let inv = T::one_in(&ctx) / &n2;
-    let (z, o) = (T::zero_in(&ctx), T::one_in(&ctx));
-    let axes = [
-        [o.clone(), z.clone(), z.clone()],
-        [z.clone(), o.clone(), z.clone()],
-        [z.clone(), z.clone(), o],
-    ];
-    let frame = axes.map(|e| vec3::scale(&a.sandwich(&e), &inv));
+    // Column k of the map v ↦ A v A* is A e_k A*: the k-th frame vector times |A|².
+    let turn = a.sandwich_matrix();
+    let frame = [0, 1, 2].map(|k| {
+        [
+            turn[0][k].clone() * &inv,
+            turn[1][k].clone() * &inv,
+            turn[2][k].clone() * &inv,
+        ]
+    });
     let two = T::from_i64(2, &ctx);
     let omega = vec3::scale(&da.mul(&a.conj()).vector(), &(two * &inv));
     (frame, omega)
