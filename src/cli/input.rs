@@ -13,12 +13,41 @@ use serde_json::{Map, Value};
 #[error("{0}")]
 pub struct InputError(pub String);
 
-pub fn fail<T>(message: impl Into<String>) -> Result<T, InputError> {
-    Err(InputError(message.into()))
+/// `Err` with a one-line input error; the error type is whatever the caller returns (an
+/// [`InputError`], or a [`RunError`] at the top of a command).
+pub fn fail<T, E: From<InputError>>(message: impl Into<String>) -> Result<T, E> {
+    Err(InputError(message.into()).into())
 }
 
-/// Parse the whole input document, which must be a JSON object.
+/// Why a `run` command did not produce its output.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum RunError {
+    /// The input (or the chosen scalar) cannot be answered: exit status 2.
+    Input(String),
+    /// The input was accepted but a method did not do its job (an iteration that did not
+    /// converge, an internal consistency check): exit status 3. Not the user's fault.
+    Internal(String),
+}
+
+impl From<InputError> for RunError {
+    fn from(e: InputError) -> Self {
+        RunError::Input(e.0)
+    }
+}
+
+impl RunError {
+    /// An internal failure; the message is prefixed with "internal: ".
+    pub fn internal(message: impl std::fmt::Display) -> Self {
+        RunError::Internal(format!("internal: {message}"))
+    }
+}
+
+/// Parse the whole input document, which must be a JSON object with no key repeated in any
+/// object (serde_json would silently keep the last of two equal keys).
 pub fn parse_document(text: &str) -> Result<Map<String, Value>, InputError> {
+    if let Err(e) = serde_json::from_str::<NoDuplicateKeys>(text) {
+        return fail(format!("input: malformed JSON: {e}"));
+    }
     match serde_json::from_str::<Value>(text) {
         Ok(Value::Object(map)) => Ok(map),
         Ok(other) => fail(format!(
@@ -26,6 +55,61 @@ pub fn parse_document(text: &str) -> Result<Map<String, Value>, InputError> {
             kind(&other)
         )),
         Err(e) => fail(format!("input: malformed JSON: {e}")),
+    }
+}
+
+/// A JSON document walked only to refuse an object that repeats a key.
+struct NoDuplicateKeys;
+
+impl<'de> serde::Deserialize<'de> for NoDuplicateKeys {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        d.deserialize_any(NoDuplicateKeysVisitor)
+    }
+}
+
+struct NoDuplicateKeysVisitor;
+
+impl<'de> serde::de::Visitor<'de> for NoDuplicateKeysVisitor {
+    type Value = NoDuplicateKeys;
+
+    fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        f.write_str("any JSON value")
+    }
+    fn visit_bool<E>(self, _: bool) -> Result<Self::Value, E> {
+        Ok(NoDuplicateKeys)
+    }
+    fn visit_i64<E>(self, _: i64) -> Result<Self::Value, E> {
+        Ok(NoDuplicateKeys)
+    }
+    fn visit_u64<E>(self, _: u64) -> Result<Self::Value, E> {
+        Ok(NoDuplicateKeys)
+    }
+    fn visit_f64<E>(self, _: f64) -> Result<Self::Value, E> {
+        Ok(NoDuplicateKeys)
+    }
+    fn visit_str<E>(self, _: &str) -> Result<Self::Value, E> {
+        Ok(NoDuplicateKeys)
+    }
+    fn visit_unit<E>(self) -> Result<Self::Value, E> {
+        Ok(NoDuplicateKeys)
+    }
+    fn visit_seq<A: serde::de::SeqAccess<'de>>(self, mut seq: A) -> Result<Self::Value, A::Error> {
+        while seq.next_element::<NoDuplicateKeys>()?.is_some() {}
+        Ok(NoDuplicateKeys)
+    }
+    // A JSON number arrives here too (serde_json's arbitrary_precision hands it over as a
+    // one-entry map), which has no duplicate to find.
+    fn visit_map<A: serde::de::MapAccess<'de>>(self, mut map: A) -> Result<Self::Value, A::Error> {
+        let mut seen = std::collections::HashSet::new();
+        while let Some(key) = map.next_key::<String>()? {
+            if !seen.insert(key.clone()) {
+                return Err(serde::de::Error::custom(format!(
+                    "the key \"{key}\" appears twice"
+                )));
+            }
+            map.next_value::<NoDuplicateKeys>()?;
+        }
+        Ok(NoDuplicateKeys)
     }
 }
 
@@ -322,6 +406,9 @@ mod tests {
             .unwrap_err()
             .0
             .contains("malformed JSON"));
+        let e = parse_document(r#"{"a": 1, "b": {"c": 2, "c": 3}}"#).unwrap_err();
+        assert!(e.0.contains("\"c\" appears twice"), "{e}");
+        assert!(parse_document(r#"{"a": [1, {"c": 2}, {"c": 3}], "b": 1.5}"#).is_ok());
         let e = count(&json!(2.5), "derivatives", 10).unwrap_err();
         assert!(e.0.contains("whole number"), "{e}");
     }

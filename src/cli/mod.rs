@@ -4,6 +4,7 @@
 //! called, and JSON or a summary is printed. Every user error becomes one line on stderr and
 //! exit status 2, with nothing on stdout; `verify` exits 1 when a claim failed.
 
+pub mod budget;
 pub mod input;
 pub mod output;
 mod run_bspline;
@@ -16,6 +17,7 @@ use crate::claims::{self, Paper, Verdict};
 use crate::report;
 use crate::scalar::ScalarKind;
 use clap::{Parser, Subcommand, ValueEnum};
+use input::RunError;
 use output::{render_certified, render_plain, Out};
 use serde_json::Value;
 use std::io::Read;
@@ -185,7 +187,7 @@ impl Rendered {
         self
     }
     /// The final JSON value (certified digits resolved, extra fields appended).
-    fn into_value(self) -> Result<Value, String> {
+    fn into_value(self) -> Result<Value, RunError> {
         let mut value = match self.body {
             Body::Json(v) => v,
             Body::Certified(pair) => render_certified(&pair.0, &pair.1, "")?,
@@ -193,6 +195,12 @@ impl Rendered {
         if let Value::Object(map) = &mut value {
             map.extend(self.extra);
         }
+        let scalar = value
+            .get("scalar")
+            .and_then(Value::as_str)
+            .unwrap_or("the chosen number type")
+            .to_string();
+        output::check_finite(&value, "", &scalar)?;
         Ok(value)
     }
 }
@@ -202,8 +210,11 @@ impl Rendered {
 pub enum Failure {
     /// Bad input or usage: exit 2.
     Usage(String),
-    /// A claim failed or a file could not be written: exit 1.
+    /// A claim failed: exit 1.
     Run(String),
+    /// A method did not do its job on accepted input (non-convergence, a broken internal
+    /// check): exit 3.
+    Internal(String),
 }
 
 impl Failure {
@@ -211,11 +222,12 @@ impl Failure {
         match self {
             Failure::Usage(_) => 2,
             Failure::Run(_) => 1,
+            Failure::Internal(_) => 3,
         }
     }
     pub fn message(&self) -> &str {
         match self {
-            Failure::Usage(m) | Failure::Run(m) => m,
+            Failure::Usage(m) | Failure::Run(m) | Failure::Internal(m) => m,
         }
     }
 }
@@ -270,7 +282,22 @@ fn list(papers: &[Paper]) -> Result<String, Failure> {
     Ok(out)
 }
 
+/// Make sure `dir` exists and takes a file, before anything is computed.
+fn check_output_dir(dir: &std::path::Path) -> Result<(), Failure> {
+    let unusable = |e: std::io::Error| {
+        Failure::Usage(format!(
+            "option --out: cannot write to {}: {e}",
+            dir.display()
+        ))
+    };
+    std::fs::create_dir_all(dir).map_err(unusable)?;
+    let probe = dir.join(".trajverify-probe.tmp");
+    std::fs::write(&probe, b"").map_err(unusable)?;
+    std::fs::remove_file(&probe).map_err(unusable)
+}
+
 fn verify(papers: &[Paper], out_dir: &std::path::Path) -> Result<String, Failure> {
+    check_output_dir(out_dir)?;
     let mut all_claims = Vec::new();
     let mut files = Vec::new();
     let mut summary = String::new();
@@ -296,7 +323,7 @@ fn verify(papers: &[Paper], out_dir: &std::path::Path) -> Result<String, Failure
     }
     files.push(("claims.json".to_string(), report::ledger_json(&all_claims)));
     report::write_files(out_dir, &files)
-        .map_err(|e| Failure::Run(format!("writing {}: {e}", out_dir.display())))?;
+        .map_err(|e| Failure::Usage(format!("option --out: writing {}: {e}", out_dir.display())))?;
     summary.push_str(&format!(
         "wrote {} files to {}\n",
         files.len(),
@@ -315,23 +342,35 @@ fn run(
     scalar: Option<ScalarKind>,
     input: Option<PathBuf>,
 ) -> Result<String, Failure> {
-    let text = match &input {
-        Some(path) => std::fs::read_to_string(path).map_err(|e| {
-            Failure::Usage(format!(
-                "option --input: cannot read {}: {e}",
-                path.display()
-            ))
-        })?,
-        None => {
-            let mut s = String::new();
-            std::io::stdin()
-                .read_to_string(&mut s)
-                .map_err(|e| Failure::Usage(format!("input: cannot read stdin: {e}")))?;
-            s
-        }
+    // At most MAX_INPUT_BYTES are read: a larger document is refused, not swallowed.
+    let limit = budget::MAX_INPUT_BYTES as u64;
+    let (source, reader): (String, Box<dyn Read>) = match &input {
+        Some(path) => (
+            format!("option --input: {}", path.display()),
+            Box::new(std::fs::File::open(path).map_err(|e| {
+                Failure::Usage(format!(
+                    "option --input: cannot read {}: {e}",
+                    path.display()
+                ))
+            })?),
+        ),
+        None => ("input: stdin".to_string(), Box::new(std::io::stdin())),
     };
+    let mut bytes = Vec::new();
+    reader
+        .take(limit + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| Failure::Usage(format!("{source}: cannot read: {e}")))?;
+    if bytes.len() as u64 > limit {
+        return Err(Failure::Usage(format!(
+            "{source}: the input is larger than {} MiB",
+            limit >> 20
+        )));
+    }
+    let text = String::from_utf8(bytes)
+        .map_err(|e| Failure::Usage(format!("{source}: not UTF-8 text: {e}")))?;
     let doc = input::parse_document(&text).map_err(|e| Failure::Usage(e.0))?;
-    let rendered = match algorithm {
+    let value = match algorithm {
         Algorithm::Hermite => run_hermite::run_hermite(&doc, scalar.unwrap_or(ScalarKind::F64)),
         Algorithm::HermiteCondition => {
             run_hermite::run_condition(&doc, scalar.unwrap_or(ScalarKind::Mpfr(256)))
@@ -360,10 +399,13 @@ fn run(
         Algorithm::GerbsPath => run_gerbs::run_gerbs_path(&doc, scalar.unwrap_or(ScalarKind::F64)),
         Algorithm::Dubins => run_gerbs::run_dubins(&doc, scalar.unwrap_or(ScalarKind::F64)),
     }
-    .map_err(|e| Failure::Usage(e.0))?;
-    let value = rendered.into_value().map_err(Failure::Usage)?;
+    .and_then(Rendered::into_value)
+    .map_err(|e| match e {
+        RunError::Input(m) => Failure::Usage(m),
+        RunError::Internal(m) => Failure::Internal(m),
+    })?;
     let mut s =
-        serde_json::to_string(&value).map_err(|e| Failure::Run(format!("internal: {e}")))?;
+        serde_json::to_string(&value).map_err(|e| Failure::Internal(format!("internal: {e}")))?;
     s.push('\n');
     Ok(s)
 }

@@ -4,6 +4,7 @@
 //! place the number type matters: exact fractions for rationals, shortest round-trip decimals
 //! for f64, and for MPFR the digits on which two runs at p and 2p bits agree.
 
+use super::input::RunError;
 use crate::scalar::certify::{certify, format_float_digits};
 use crate::scalar::{Field, Float, Real};
 use serde_json::{Map, Value};
@@ -12,6 +13,11 @@ use serde_json::{Map, Value};
 #[derive(Clone, Debug)]
 pub enum Out<T> {
     Num(T),
+    /// A number that may vanish mathematically, with the scale of the quantities it was
+    /// computed from. Printed like [`Out::Num`], except that when two precisions agree on
+    /// no digit and both values lie below [`noise_level`] of their scale, it is printed as
+    /// 0: it is zero to the precision (a straight line's conversion error), not unknown.
+    MaybeZero(T, T),
     List(Vec<Out<T>>),
     Object(Vec<(String, Out<T>)>),
     /// A count or an index: printed as a JSON integer, not a string.
@@ -90,7 +96,7 @@ fn f64_value(x: f64) -> Value {
 /// Render with every number as its plain string (`to_plain_string`).
 pub fn render_plain<T: Field>(out: &Out<T>) -> Value {
     match out {
-        Out::Num(x) => Value::String(x.to_plain_string()),
+        Out::Num(x) | Out::MaybeZero(x, _) => Value::String(x.to_plain_string()),
         Out::List(items) => Value::Array(items.iter().map(render_plain).collect()),
         Out::Object(fields) => Value::Object(
             fields
@@ -106,21 +112,13 @@ pub fn render_plain<T: Field>(out: &Out<T>) -> Value {
 }
 
 /// Render the more precise tree `hi` with the digits it shares with `lo`. Fails (naming the
-/// field) if the trees differ in shape or a number has no certified digit at all.
-pub fn render_certified(lo: &Out<Float>, hi: &Out<Float>, path: &str) -> Result<Value, String> {
+/// field) if a number is not finite or has no certified digit at all (input errors: the
+/// input is beyond the precision), or if the trees differ in shape (an internal error).
+pub fn render_certified(lo: &Out<Float>, hi: &Out<Float>, path: &str) -> Result<Value, RunError> {
     Ok(match (lo, hi) {
-        (Out::Num(a), Out::Num(b)) => {
-            let c = certify(a, b);
-            if c.digits == 0 && !(a.is_zero() && b.is_zero()) {
-                return Err(format!(
-                    "output \"{path}\": no digit agrees between {} and {} bits ({} vs {}); raise the precision",
-                    a.prec(),
-                    b.prec(),
-                    format_float_digits(a, 6),
-                    format_float_digits(b, 6)
-                ));
-            }
-            Value::String(c.text)
+        (Out::Num(a), Out::Num(b)) => certified_number(a, b, None, path)?,
+        (Out::MaybeZero(a, sa), Out::MaybeZero(b, sb)) => {
+            certified_number(a, b, Some((sa, sb)), path)?
         }
         (Out::List(xs), Out::List(ys)) if xs.len() == ys.len() => Value::Array(
             xs.iter()
@@ -143,9 +141,81 @@ pub fn render_certified(lo: &Out<Float>, hi: &Out<Float>, path: &str) -> Result<
         }
         (_, other @ (Out::Int(_) | Out::Text(_) | Out::F64(_) | Out::Null)) => render_plain(other),
         _ => {
-            return Err(format!(
-                "internal: outputs at two precisions differ in shape at \"{path}\""
-            ))
+            return Err(RunError::internal(format!(
+                "outputs at two precisions differ in shape at \"{path}\""
+            )))
         }
     })
+}
+
+/// One number with the digits `lo` and `hi` agree on; with `scales`, a value that is noise
+/// at both precisions is 0 (see [`Out::MaybeZero`]).
+fn certified_number(
+    a: &Float,
+    b: &Float,
+    scales: Option<(&Float, &Float)>,
+    path: &str,
+) -> Result<Value, RunError> {
+    if !a.is_finite() || !b.is_finite() {
+        let bad = if a.is_finite() { b } else { a };
+        return Err(not_finite(
+            path,
+            &bad.to_string(),
+            &format!("mpfr:{}", bad.prec()),
+        ));
+    }
+    let c = certify(a, b);
+    if c.digits > 0 || (a.is_zero() && b.is_zero()) {
+        return Ok(Value::String(c.text));
+    }
+    if let Some((sa, sb)) = scales {
+        if a.clone().abs() < noise_level(sa) && b.clone().abs() < noise_level(sb) {
+            return Ok(Value::String("0".into()));
+        }
+    }
+    Err(RunError::Input(format!(
+        "output \"{path}\": no digit agrees between {} and {} bits ({} vs {}); raise the precision",
+        a.prec(),
+        b.prec(),
+        format_float_digits(a, 6),
+        format_float_digits(b, 6)
+    )))
+}
+
+/// The refusal of a result that is not finite in the chosen number type.
+fn not_finite(path: &str, value: &str, scalar: &str) -> RunError {
+    RunError::Input(format!(
+        "output \"{path}\" is {value} in {scalar}: the input is beyond what this number type can carry (smaller magnitudes, or --scalar mpfr:<bits>)"
+    ))
+}
+
+/// Whether a printed number says NaN or an infinity (as f64, MPFR or our own printing do).
+fn says_not_finite(text: &str) -> bool {
+    let t = text.trim_start_matches(['-', '+']).trim_matches('@');
+    t.eq_ignore_ascii_case("nan")
+        || t.eq_ignore_ascii_case("inf")
+        || t.eq_ignore_ascii_case("infinity")
+}
+
+/// Refuse an output in which any number is NaN or infinite, naming the first such field.
+///
+/// The last check before anything is printed, whatever path built the output (typed
+/// [`Out`] trees or JSON assembled directly): a non-finite result is never printed.
+pub fn check_finite(value: &Value, path: &str, scalar: &str) -> Result<(), RunError> {
+    match value {
+        Value::String(s) if says_not_finite(s) => Err(not_finite(path, s, scalar)),
+        Value::Array(items) => items
+            .iter()
+            .enumerate()
+            .try_for_each(|(i, v)| check_finite(v, &format!("{path}[{i}]"), scalar)),
+        Value::Object(map) => map.iter().try_for_each(|(k, v)| {
+            let p = if path.is_empty() {
+                k.clone()
+            } else {
+                format!("{path}.{k}")
+            };
+            check_finite(v, &p, scalar)
+        }),
+        _ => Ok(()),
+    }
 }

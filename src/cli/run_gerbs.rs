@@ -5,7 +5,8 @@
 //! the rationals), radius, basis parameters. The computation then runs in f64, or in MPFR at
 //! p and 2p bits with the agreeing digits printed; the BFBS basis also runs exactly.
 
-use super::input::{self, fail, InputError, RealInput};
+use super::budget::{self, check_time, Rates};
+use super::input::{self, fail, InputError, RealInput, RunError};
 use super::output::{flush, largest, noise_level, Out};
 use super::Rendered;
 use crate::gerbs::bfbs::{Bfbs, MAX_EXPONENT};
@@ -21,6 +22,9 @@ use serde_json::{Map, Value};
 pub const MAX_DERIVATIVES: usize = 30;
 /// The most evaluation points or samples one command accepts.
 pub const MAX_POINTS: usize = 100_000;
+/// The largest |angle| in radians accepted for a heading or θ_o: beyond it an angle carries
+/// no information at the working precision and its reduction modulo 2π is meaningless.
+pub const MAX_ANGLE: f64 = 1e6;
 /// Samples of a path when `samples` is not given.
 pub const DEFAULT_PATH_SAMPLES: usize = 101;
 /// Samples per Dubins leg when `samples` is not given.
@@ -57,7 +61,7 @@ trait Job {
 }
 
 /// f64, or MPFR at p and 2p bits printed with the digits that agree.
-fn run_real(job: &impl Job, scalar: ScalarKind, what: &str) -> Result<Rendered, InputError> {
+fn run_real(job: &impl Job, scalar: ScalarKind, what: &str) -> Result<Rendered, RunError> {
     let name = scalar.to_string();
     match scalar {
         ScalarKind::Rational => fail(format!(
@@ -370,10 +374,7 @@ impl Job for BasisJob {
 }
 
 /// `run gerbs-basis`: B_2 … B_{n+1} and their derivatives at the given points.
-pub fn run_gerbs_basis(
-    doc: &Map<String, Value>,
-    scalar: ScalarKind,
-) -> Result<Rendered, InputError> {
+pub fn run_gerbs_basis(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, RunError> {
     input::only_fields(
         doc,
         &["knots", "kind", "params", "at", "derivatives", "side"],
@@ -406,6 +407,41 @@ pub fn run_gerbs_basis(
         Some(v) => input::count(v, "derivatives", MAX_DERIVATIVES)?,
         None => 0,
     };
+    let n = knots.as_slice().len() as f64 - 2.0;
+    let points = at.len() as f64;
+    let per_point = 1.0 + derivatives as f64 / 10.0;
+    budget::check_output(points * n * (derivatives as f64 + 1.0), "at", "this run")?;
+    // Measured: BFBS with n = 100, 1000 points, d = 2 in 0.1 s (f64) and 0.36 s (mpfr:128),
+    // d = 10 in 1.9 s (rationals); ERBS in MPFR about 8 ms per point at 128 bits, nearly
+    // independent of n, and growing as p² beyond mpfr_factor (the tanh–sinh level).
+    let seconds = match kind {
+        Kind::Bfbs => Rates {
+            f64: 1e-6,
+            mpfr256: 6e-6,
+            rational: 1.2e-5,
+        }
+        .seconds(points * (n + 10.0) * per_point, scalar),
+        Kind::Erbs => Rates {
+            f64: 1.5e-6,
+            mpfr256: 0.06 * erbs_extra(scalar) * (1.0 + n / 100.0),
+            rational: 0.0,
+        }
+        .seconds(
+            points
+                * per_point
+                * if scalar == ScalarKind::F64 {
+                    n + 10.0
+                } else {
+                    1.0
+                },
+            scalar,
+        ),
+    };
+    check_time(
+        seconds,
+        "at",
+        &format!("{} points on {n} basis functions at {scalar}", at.len()),
+    )?;
     let job = BasisJob {
         knots,
         params,
@@ -578,10 +614,7 @@ impl Job for PathJob {
 
 /// `run gerbs-path`: Algorithm 2 through the waypoints, sampled, with length and the
 /// values at the waypoints' knots.
-pub fn run_gerbs_path(
-    doc: &Map<String, Value>,
-    scalar: ScalarKind,
-) -> Result<Rendered, InputError> {
+pub fn run_gerbs_path(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, RunError> {
     input::only_fields(
         doc,
         &[
@@ -599,7 +632,7 @@ pub fn run_gerbs_path(
     check_waypoints(&waypoints).map_err(gerbs_error)?;
     let radius = positive(doc, "radius", "the arc radius R")?;
     let theta_o = match doc.get("theta_o") {
-        Some(v) => input::real(v, "theta_o")?,
+        Some(v) => angle(v, "theta_o")?,
         None => return fail("input: missing field \"theta_o\" (the paper uses \"pi/8\")"),
     };
     let kind = kind(doc)?;
@@ -625,6 +658,36 @@ pub fn run_gerbs_path(
         ],
         Some(ArcConvention::TurnDirection),
     )?;
+    // A path point blends every local curve (about W operations), the length integrates each
+    // of the W − 1 intervals, and the ERBS in MPFR integrates again at each node. Measured
+    // (seconds): BFBS f64 W = 50, S = 101 in 0.05; mpfr:128 W = 50 in 2.8 and S = 10001 in
+    // 1.4; ERBS mpfr:64 W = 5, S = 10001 in 23 and W = 50, S = 101 in 16.
+    let (w, s) = (waypoints.len() as f64, samples as f64);
+    let seconds = match (kind, scalar) {
+        (Kind::Bfbs, ScalarKind::Mpfr(_)) => Rates {
+            f64: 0.0,
+            mpfr256: 1.0,
+            rational: 0.0,
+        }
+        .seconds(5e-5 * w * s + 2e-3 * w * w, scalar),
+        (Kind::Erbs, ScalarKind::Mpfr(_)) => Rates {
+            f64: 0.0,
+            mpfr256: erbs_extra(scalar),
+            rational: 0.0,
+        }
+        .seconds(0.018 * w * s + 12.0 * w + 0.08 * w * w, scalar),
+        (Kind::Bfbs, _) => 1.2e-6 * w * s + 2e-5 * w * w,
+        (Kind::Erbs, _) => 1.8e-6 * w * s + 3e-5 * w * w,
+    };
+    check_time(
+        seconds,
+        "waypoints",
+        &format!(
+            "a path through {} waypoints with {samples} samples at {scalar}",
+            waypoints.len()
+        ),
+    )?;
+    budget::check_output(4.0 * s + 5.0 * w, "samples", "this run")?;
     let job = PathJob {
         waypoints,
         radius,
@@ -635,6 +698,27 @@ pub fn run_gerbs_path(
         samples,
     };
     run_real(&job, scalar, "a GERBS path")
+}
+
+/// The ERBS quadrature's extra cost in MPFR beyond [`budget::mpfr_factor`]: the tanh–sinh
+/// rule needs more levels (twice the nodes each) as the precision rises, about (p/256)².
+fn erbs_extra(scalar: ScalarKind) -> f64 {
+    match scalar {
+        ScalarKind::Mpfr(bits) => (bits as f64 / 256.0).powi(2),
+        _ => 1.0,
+    }
+}
+
+/// An angle (a number or a constant expression) within ±[`MAX_ANGLE`] rad at `path`.
+fn angle(v: &Value, path: &str) -> Result<RealInput, InputError> {
+    let a = input::real(v, path)?;
+    let value: f64 = a.to(&(), path)?;
+    if value.abs() > MAX_ANGLE {
+        return fail(format!(
+            "field \"{path}\": an angle must lie within ±{MAX_ANGLE:e} rad"
+        ));
+    }
+    Ok(a)
 }
 
 /// What `run dubins` asks for.
@@ -742,7 +826,7 @@ impl Job for DubinsJob {
 }
 
 /// `run dubins`: the shortest Dubins path of radius R between consecutive waypoint poses.
-pub fn run_dubins(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, InputError> {
+pub fn run_dubins(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, RunError> {
     input::only_fields(doc, &["waypoints", "headings", "radius", "samples"])?;
     let waypoints = waypoints(doc)?;
     let headings = match doc.get("headings") {
@@ -759,6 +843,12 @@ pub fn run_dubins(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Render
                     waypoints.len()
                 ));
             }
+            if let Some(i) = (1..waypoints.len()).find(|&i| waypoints[i] == waypoints[i - 1]) {
+                return fail(format!(
+                    "field \"waypoints\": waypoint {} repeats waypoint {i}",
+                    i + 1
+                ));
+            }
             if items.len() != waypoints.len() {
                 return fail(format!(
                     "field \"headings\": expected one heading per waypoint ({}), found {}",
@@ -770,7 +860,7 @@ pub fn run_dubins(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Render
                 items
                     .iter()
                     .enumerate()
-                    .map(|(k, v)| input::real(v, &format!("headings[{k}]")))
+                    .map(|(k, v)| angle(v, &format!("headings[{k}]")))
                     .collect::<Result<Vec<_>, _>>()?,
             )
         }
@@ -783,6 +873,23 @@ pub fn run_dubins(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Render
     if samples < 2 {
         return fail("field \"samples\": at least 2 samples per leg (its two ends)");
     }
+    // Six words per leg and `samples` poses on each (measured: 1000 waypoints with 33 samples
+    // in 0.06 s in f64 and 1.3 s at mpfr:128).
+    let units = waypoints.len() as f64 * samples as f64;
+    let rates = Rates {
+        f64: 3e-6,
+        mpfr256: 1e-4,
+        rational: 0.0,
+    };
+    check_time(
+        rates.seconds(units, scalar),
+        "waypoints",
+        &format!(
+            "{} legs with {samples} samples at {scalar}",
+            waypoints.len().saturating_sub(1)
+        ),
+    )?;
+    budget::check_output(3.0 * units, "samples", "this run")?;
     let job = DubinsJob {
         waypoints,
         headings,

@@ -26,16 +26,29 @@ pub struct DubinsPath<T> {
     pub lengths: [T; 3],
 }
 
+/// x reduced to [0, 2π). The multiple of 2π is found in f64 and the remainder corrected by
+/// at most a few steps of 2π, so the reduction is exact in intent only for |x| well inside
+/// the working precision (callers keep angles within ±1e6 rad); a non-finite x is returned
+/// as it is, and the correction loop is bounded so no input can make it spin.
 fn mod2pi<T: Real>(x: T) -> T {
+    if !x.is_finite() {
+        return x;
+    }
     let two_pi = T::pi(&x.ctx()) * &T::from_i64(2, &x.ctx());
     let k = (x.to_f64() / two_pi.to_f64()).floor();
+    if !k.is_finite() {
+        return x;
+    }
     let mut r = x - &(two_pi.clone() * &T::from_f64(k, &two_pi.ctx()));
     let zero = T::zero_in(&r.ctx());
-    while r < zero {
-        r += &two_pi;
-    }
-    while r >= two_pi {
-        r -= &two_pi;
+    for _ in 0..64 {
+        if r < zero {
+            r += &two_pi;
+        } else if r >= two_pi {
+            r -= &two_pi;
+        } else {
+            break;
+        }
     }
     r
 }

@@ -61,10 +61,12 @@ impl<T: Field> NaturalCubicSpline<T> {
         &self.second
     }
 
-    /// The interval index i with t in [tᵢ₋₁, tᵢ] (clamped to the first and last interval).
+    /// The interval index i with t in [tᵢ₋₁, tᵢ] (clamped to the first and last interval):
+    /// the first i ≥ 1 with t ≤ tᵢ, found by bisection since the knots increase.
     fn interval(&self, t: &T) -> usize {
         let n = self.knots.len() - 1;
-        (1..=n).find(|&i| *t <= self.knots[i]).unwrap_or(n)
+        let first_not_below = 1 + self.knots[1..].partition_point(|k| k < t);
+        first_not_below.min(n)
     }
 
     /// (θ, θ′, θ″)(t); outside [t₀, t_N] the end cubic pieces are extended.

@@ -11,6 +11,9 @@ use num_traits::{Pow, Zero};
 
 /// The largest decimal exponent accepted.
 pub const MAX_EXPONENT: i64 = 10_000;
+/// The most characters a number's digits may have (a guard against megabyte-long digit
+/// strings; 1000 decimal digits carry about 3300 bits).
+pub const MAX_DIGITS: usize = 1000;
 
 /// Why a string is not a number trajverify accepts.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
@@ -21,11 +24,16 @@ pub enum ParseNumberError {
     ZeroDenominator(String),
     #[error("{0:?} has an exponent beyond ±{MAX_EXPONENT}")]
     ExponentTooLarge(String),
+    #[error("a number of {0} characters is longer than the {MAX_DIGITS} accepted")]
+    TooLong(usize),
 }
 
 /// Parse a decimal or a fraction of two decimals exactly.
 pub fn parse_rational(text: &str) -> Result<BigRational, ParseNumberError> {
     let s = text.trim();
+    if s.len() > MAX_DIGITS {
+        return Err(ParseNumberError::TooLong(s.len()));
+    }
     match s.split_once('/') {
         Some((num, den)) => {
             let n = parse_decimal(num.trim(), text)?;
@@ -138,6 +146,11 @@ mod tests {
             parse_rational("1e999999999999999"),
             Err(ParseNumberError::ExponentTooLarge(_))
         ));
+        assert!(parse_rational(&"7".repeat(MAX_DIGITS)).is_ok());
+        assert_eq!(
+            parse_rational(&"7".repeat(MAX_DIGITS + 1)),
+            Err(ParseNumberError::TooLong(MAX_DIGITS + 1))
+        );
     }
 
     #[test]
