@@ -320,6 +320,64 @@ fn list_names_every_claim_with_its_location() {
 }
 
 #[test]
+fn verify_refuses_an_unwritable_out_before_computing() {
+    let file = std::env::temp_dir().join(format!("trajverify-not-a-dir-{}", std::process::id()));
+    std::fs::write(&file, "").unwrap();
+    let start = std::time::Instant::now();
+    let run = trajverify(&["verify", "--out", file.join("sub").to_str().unwrap()], "");
+    std::fs::remove_file(&file).ok();
+    assert_eq!(run.code, 2, "{}", run.stderr);
+    assert_eq!(run.stderr.lines().count(), 1, "{}", run.stderr);
+    assert!(
+        run.stderr.starts_with("error: option --out: cannot write"),
+        "{}",
+        run.stderr
+    );
+    // Refused before the claims are computed (all of them take about 30 s).
+    assert!(start.elapsed().as_secs() < 5, "took {:?}", start.elapsed());
+}
+
+#[test]
+fn budgets_and_non_finite_results_are_refused_naming_the_field() {
+    let over = trajverify(
+        &["run", "phodcos", "--scalar", "mpfr:256"],
+        r#"{"curve": "[sin(t), cos(t), t]", "interval": [0, 1], "segments": 65536}"#,
+    );
+    assert_eq!(over.code, 2);
+    assert!(over.stdout.is_empty());
+    assert!(
+        over.stderr
+            .starts_with("error: field \"segments\": 65536 segments at mpfr:256 would take about"),
+        "{}",
+        over.stderr
+    );
+    let inf = trajverify(
+        &["run", "bang-bang", "--scalar", "f64"],
+        r#"{"xi": "1e10000"}"#,
+    );
+    assert_eq!(inf.code, 2);
+    assert!(inf.stdout.is_empty());
+    assert!(
+        inf.stderr.contains("output \"amplitude\" is inf in f64"),
+        "{}",
+        inf.stderr
+    );
+    // The same input is finite in MPFR.
+    let mpfr = json(&trajverify(
+        &["run", "bang-bang", "--scalar", "mpfr:64"],
+        r#"{"xi": "1e10000"}"#,
+    ));
+    assert!(mpfr["amplitude"].as_str().unwrap().contains("e10000"));
+    // No certified digit at all is not printed as if it were one.
+    let noise = trajverify(
+        &["run", "hermite-condition", "--scalar", "mpfr:16"],
+        r#"{"derivatives": 60, "interval": [0, 1], "matrix": "transform"}"#,
+    );
+    assert_eq!(noise.code, 2, "{}", noise.stdout);
+    assert!(noise.stderr.contains("no digit agrees"), "{}", noise.stderr);
+}
+
+#[test]
 fn verify_writes_the_ledger_and_reports() {
     let dir = std::env::temp_dir().join(format!("trajverify-cli-{}", std::process::id()));
     let run = trajverify(

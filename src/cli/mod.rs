@@ -2,7 +2,9 @@
 //!
 //! No mathematics lives here: arguments and JSON are read, an algorithm of the library is
 //! called, and JSON or a summary is printed. Every user error becomes one line on stderr and
-//! exit status 2, with nothing on stdout; `verify` exits 1 when a claim failed.
+//! exit status 2, with nothing on stdout; an internal failure of a method (non-convergence)
+//! exits 3; `verify` exits 1 when a claim failed. Every `run` checks its work budget
+//! ([`budget`]) before computing.
 
 pub mod budget;
 pub mod input;
@@ -106,7 +108,11 @@ const RUN_HELP: &str = r#"Algorithms and their input:
                      -> {"headings", "legs": [{"from", "to", "word", "lengths", "length", "samples": [[x, y, heading]]}], "length"}
   curves: numbers, t, pi, + - * / ^, sin cos tan exp ln sqrt atan, parentheses
   angles (theta_o, headings, ERBS parameters) may also be constant expressions such as "pi/8"
-Numbers may be JSON numbers or strings ("3/5", "0.6", "1e-3"); both are read exactly."#;
+Numbers may be JSON numbers or strings ("3/5", "0.6", "1e-3"); both are read exactly.
+Every input is answered within 30 s on two cores and 2 GiB, or refused at once: each run
+estimates its work from its sizes and the number type (see the README, "Limits").
+Exit status: 0 success, 2 bad input (one line naming the field, nothing on stdout),
+3 internal failure of a method on accepted input; `verify` exits 1 when a claim failed."#;
 
 /// The algorithms `run` knows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]

@@ -173,6 +173,12 @@ pub fn run_condition(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Ren
             ScalarKind::Mpfr(bits) => {
                 let (c, _): (Certified, Float) =
                     condition::certified(m, &t0, &t1, kind, bits).map_err(jacobi_failed)?;
+                if c.digits == 0 {
+                    return fail(format!(
+                        "output \"condition_number\": no digit agrees between {bits} and {} bits; raise the precision",
+                        2 * bits
+                    ));
+                }
                 (Some(c.text), c.digits, format!("mpfr:{bits}"), None)
             }
             ScalarKind::F64 => {
