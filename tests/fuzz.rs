@@ -16,6 +16,7 @@ use proptest::prelude::*;
 use serde_json::{json, Value};
 use std::io::{Read, Write};
 use std::process::{Command, Stdio};
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 use trajverify::cli::budget::{BUDGET_SECONDS, MEMORY_BOUND_BYTES};
 
@@ -312,7 +313,14 @@ fn mutate(doc: &mut Value, kind: u32, pick: usize, n: usize) {
     paths(doc, &mut Vec::new(), &mut all);
     let path = all[pick % all.len()].clone();
     let node = at_mut(doc, &path);
-    match kind % 5 {
+    match kind % 6 {
+        // A number scaled up: sizes, counts and magnitudes that multiply the work.
+        5 => {
+            if let Some(x) = node.as_f64() {
+                let factor = [3.0, 10.0, 100.0, 1000.0, 30000.0][n % 5];
+                *node = json!((x * factor).round());
+            }
+        }
         // An extreme or malformed value.
         0 | 1 => {
             *node = serde_json::from_str(EXTREMES[n % EXTREMES.len()]).expect("valid JSON");
@@ -401,12 +409,22 @@ fn mutated_inputs_are_answered_or_refused_in_one_line() {
             }
         }
         let outcome = run(algorithm, SCALARS[scalar], &text);
+        let counter = if outcome.code == Some(0) { &ANSWERED } else { &REFUSED };
+        counter.fetch_add(1, Ordering::Relaxed);
         let case = format!("run {algorithm} {:?} on {}", SCALARS[scalar], text.chars().take(200).collect::<String>());
         if let Err(e) = check(&case, &outcome) {
             prop_assert!(false, "{}", e);
         }
     });
+    eprintln!(
+        "fuzz: {} answered, {} refused",
+        ANSWERED.load(Ordering::Relaxed),
+        REFUSED.load(Ordering::Relaxed)
+    );
 }
+
+static ANSWERED: AtomicUsize = AtomicUsize::new(0);
+static REFUSED: AtomicUsize = AtomicUsize::new(0);
 
 /// The inputs of issue 14, each once: all must now end with exit 0 or 2 within the budget.
 #[test]

@@ -25,6 +25,10 @@ pub const MAX_POINTS: usize = 100_000;
 /// The largest |angle| in radians accepted for a heading or θ_o: beyond it an angle carries
 /// no information at the working precision and its reduction modulo 2π is meaningless.
 pub const MAX_ANGLE: f64 = 1e6;
+/// The most waypoints of `run gerbs-path`: every path point blends all local curves and the
+/// length integrates every interval, so the work grows as W²; 1000 waypoints take about 20 s
+/// in f64 (a larger limit would only ever be refused by the budget).
+pub const MAX_PATH_WAYPOINTS: usize = 1000;
 /// Samples of a path when `samples` is not given.
 pub const DEFAULT_PATH_SAMPLES: usize = 101;
 /// Samples per Dubins leg when `samples` is not given.
@@ -629,6 +633,12 @@ pub fn run_gerbs_path(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Re
         ],
     )?;
     let waypoints = waypoints(doc)?;
+    if waypoints.len() > MAX_PATH_WAYPOINTS {
+        return fail(format!(
+            "field \"waypoints\": {} waypoints is more than the supported {MAX_PATH_WAYPOINTS} for a path",
+            waypoints.len()
+        ));
+    }
     check_waypoints(&waypoints).map_err(gerbs_error)?;
     let radius = positive(doc, "radius", "the arc radius R")?;
     let theta_o = match doc.get("theta_o") {
@@ -660,16 +670,17 @@ pub fn run_gerbs_path(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Re
     )?;
     // A path point blends every local curve (about W operations), the length integrates each
     // of the W − 1 intervals, and the ERBS in MPFR integrates again at each node. Measured
-    // (seconds): BFBS f64 W = 50, S = 101 in 0.05; mpfr:128 W = 50 in 2.8 and S = 10001 in
-    // 1.4; ERBS mpfr:64 W = 5, S = 10001 in 23 and W = 50, S = 101 in 16.
+    // (seconds): BFBS f64 W = 50, S = 101 in 0.05 and W = 1000 in 11; mpfr:128 W = 50 in 2.8
+    // and S = 10001 in 1.4; mpfr:256 W = 4 in 0.5; ERBS mpfr:64 W = 5, S = 10001 in 23 and
+    // W = 50, S = 101 in 16.
     let (w, s) = (waypoints.len() as f64, samples as f64);
     let seconds = match (kind, scalar) {
         (Kind::Bfbs, ScalarKind::Mpfr(_)) => Rates {
             f64: 0.0,
-            mpfr256: 1.0,
+            mpfr256: bfbs_extra(scalar),
             rational: 0.0,
         }
-        .seconds(5e-5 * w * s + 2e-3 * w * w, scalar),
+        .seconds(8e-5 * w * s + 0.12 * w + 1e-3 * w * w, scalar),
         (Kind::Erbs, ScalarKind::Mpfr(_)) => Rates {
             f64: 0.0,
             mpfr256: erbs_extra(scalar),
@@ -719,6 +730,16 @@ fn angle(v: &Value, path: &str) -> Result<RealInput, InputError> {
         ));
     }
     Ok(a)
+}
+
+/// The BFBS path length's extra cost in MPFR beyond [`budget::mpfr_factor`]: more tanh–sinh
+/// levels as the precision rises, about (p/256)^0.7 above 256 bits (measured: four waypoints
+/// in 0.5 s at 256 bits, 1.7 s at 512, 8 s at 1024).
+fn bfbs_extra(scalar: ScalarKind) -> f64 {
+    match scalar {
+        ScalarKind::Mpfr(bits) => (bits as f64 / 256.0).max(1.0).powf(0.7),
+        _ => 1.0,
+    }
 }
 
 /// What `run dubins` asks for.
