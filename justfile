@@ -14,7 +14,7 @@ test:
 # The fuzz test for a long run: thousands of mutated inputs of every `run` algorithm, each
 # under the 2 GiB memory bound, asserting exit 0 with finite JSON or a one-line exit 2.
 fuzz cases="3000" seconds="3600":
-    FUZZ_CASES={{cases}} FUZZ_SECONDS={{seconds}} cargo test --release --test fuzz -- --nocapture
+    FUZZ_SEED=random FUZZ_CASES={{cases}} FUZZ_SECONDS={{seconds}} cargo test --release --test fuzz -- --nocapture
 
 # Criterion benches (results under target/criterion).
 bench:
