@@ -5,6 +5,7 @@
 //! figures drawn from values computed in MPFR or by IEEE basic operations only, so the same
 //! bytes come out on every machine and thread count.
 
+pub mod number;
 pub mod plot;
 
 use crate::claims::{Claim, Verdict};

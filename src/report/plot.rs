@@ -26,7 +26,7 @@ pub struct Series {
     pub name: String,
     pub points: Vec<(f64, f64)>,
     pub style: Style,
-    /// Index into the palette (black, blue, red, green, orange, purple).
+    /// Index into the palette (black, blue, red, green, orange, purple, grey for guides).
     pub color: usize,
 }
 
@@ -71,13 +71,14 @@ pub enum Corner {
     LowerRight,
 }
 
-const PALETTE: [RGBColor; 6] = [
+const PALETTE: [RGBColor; 7] = [
     RGBColor(0, 0, 0),
     RGBColor(0, 90, 181),
     RGBColor(220, 50, 32),
     RGBColor(0, 140, 70),
     RGBColor(230, 140, 0),
     RGBColor(120, 50, 160),
+    RGBColor(150, 150, 150),
 ];
 
 /// A figure could not be drawn.
@@ -143,6 +144,7 @@ fn draw_panel<DB: DrawingBackend>(
     panel: &Panel,
     area: &DrawingArea<DB, plotters::coord::Shift>,
 ) -> Result<(), PlotError> {
+    check_distinct(panel)?;
     let data: Vec<Vec<(f64, f64)>> = panel
         .series
         .iter()
@@ -175,13 +177,14 @@ fn draw_panel<DB: DrawingBackend>(
         if log_y {
             format!("1e{}", v.round() as i64)
         } else {
-            tick(*v)
+            tick(*v, y1 - y0)
         }
     };
+    let x_fmt = move |v: &f64| tick(*v, x1 - x0);
     let mut mesh = chart.configure_mesh();
     mesh.x_desc(panel.x_label.as_str())
         .y_desc(panel.y_label.as_str())
-        .x_label_formatter(&|v: &f64| tick(*v))
+        .x_label_formatter(&x_fmt)
         .y_label_formatter(&y_fmt)
         .light_line_style(RGBColor(235, 235, 235));
     if log_y {
@@ -222,8 +225,10 @@ fn draw_panel<DB: DrawingBackend>(
             }
         };
         if !series.name.is_empty() {
+            let style = series.style;
             anno.label(series.name.as_str()).legend(move |(x, y)| {
-                PathElement::new(vec![(x, y), (x + 18, y)], color.stroke_width(2))
+                let ([a, b, c], dot) = legend_sample(style, color);
+                EmptyElement::at((x, y)) + a + b + c + dot
             });
         }
     }
@@ -245,8 +250,67 @@ fn draw_panel<DB: DrawingBackend>(
     Ok(())
 }
 
-/// A short tick label: integers plainly, others with up to 4 significant digits.
-fn tick(v: f64) -> String {
+/// Three segments and a marker, relative to a legend entry's anchor.
+type LegendSample = ([PathElement<(i32, i32)>; 3], Circle<(i32, i32), i32>);
+
+/// The legend's sample of a series, drawn in its own style (line, dashes, dots, marker), so
+/// that two series of one colour are still told apart: always three segments and a marker,
+/// in coordinates relative to the legend entry's anchor; the parts a style does not use are
+/// transparent.
+fn legend_sample(
+    style: Style,
+    color: RGBColor,
+) -> LegendSample {
+    let line = |on: bool| {
+        if on {
+            color.stroke_width(2)
+        } else {
+            color.mix(0.0).stroke_width(0)
+        }
+    };
+    let segments: [(i32, i32); 3] = match style {
+        Style::Dashed => [(0, 7), (11, 18), (18, 18)],
+        Style::Dotted => [(0, 2), (8, 10), (16, 18)],
+        _ => [(0, 6), (6, 12), (12, 18)],
+    };
+    let drawn = !matches!(style, Style::Markers);
+    let marker = matches!(style, Style::Markers | Style::LineMarkers);
+    let lines = segments.map(|(s, e)| PathElement::new(vec![(s, 0), (e, 0)], line(drawn)));
+    let dot = Circle::new(
+        (9, 0),
+        3,
+        if marker {
+            color.filled()
+        } else {
+            color.mix(0.0).filled()
+        },
+    );
+    (lines, dot)
+}
+
+/// Two named series of one panel that look the same (colour and style) cannot be told apart
+/// in the legend: refuse to draw such a panel.
+fn check_distinct(panel: &Panel) -> Result<(), PlotError> {
+    let named: Vec<&Series> = panel.series.iter().filter(|s| !s.name.is_empty()).collect();
+    for (i, a) in named.iter().enumerate() {
+        if let Some(b) = named[i + 1..]
+            .iter()
+            .find(|b| b.color % PALETTE.len() == a.color % PALETTE.len() && b.style == a.style)
+        {
+            return Err(PlotError(format!(
+                "panel \"{}\": series \"{}\" and \"{}\" have the same colour and style",
+                panel.title, a.name, b.name
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// A short tick label: integers plainly, others with up to 4 significant digits; a value
+/// within 1e-9 of the axis span from 0 is 0 (tick positions are sums of steps, and a roundoff
+/// "2.78e-17" would overprint the axis label).
+fn tick(v: f64, span: f64) -> String {
+    let v = if v.abs() <= 1e-9 * span.abs() { 0.0 } else { v };
     if v == 0.0 || (v.abs() >= 1e-3 && v.abs() < 1e5) {
         let s = format!("{:.4}", v);
         let s = s.trim_end_matches('0').trim_end_matches('.');
@@ -290,10 +354,23 @@ mod tests {
     }
 
     #[test]
+    fn series_that_look_alike_are_refused() {
+        let mut p = panel(false);
+        p.series
+            .push(Series::new("b", vec![(0.0, 2.0)], Style::LineMarkers, 1));
+        assert!(render(&[p.clone()], (1, 1), (400, 300)).is_err());
+        p.series[1].style = Style::Dashed;
+        assert!(render(&[p], (1, 1), (400, 300)).is_ok());
+    }
+
+    #[test]
     fn tick_labels() {
-        assert_eq!(tick(2.0), "2");
-        assert_eq!(tick(0.25), "0.25");
-        assert_eq!(tick(-0.0), "0");
-        assert_eq!(tick(123456.0), "1.23e5");
+        assert_eq!(tick(2.0, 10.0), "2");
+        assert_eq!(tick(0.25, 1.0), "0.25");
+        assert_eq!(tick(-0.0, 1.0), "0");
+        assert_eq!(tick(123456.0, 1e6), "1.23e5");
+        // A roundoff zero among ticks 0.1 apart is 0; a genuinely small axis keeps it.
+        assert_eq!(tick(2.78e-17, 0.5), "0");
+        assert_eq!(tick(2.78e-17, 1e-16), "2.78e-17");
     }
 }

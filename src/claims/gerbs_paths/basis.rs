@@ -349,7 +349,7 @@ pub fn centre_reading() -> (Outcome, Vec<Vec<String>>) {
             name.to_string(),
             format!("{centre:.4}"),
             format!("{:.4}", (arg - a) / (b - a)),
-            format!("{asym:.3e}"),
+            crate::report::number::sig(asym, 4),
         ]);
     }
     (

@@ -168,13 +168,7 @@ pub fn verify() -> PaperOutput {
     let mut figures = vec![
         (figure_name(1), figure1()),
         (figure_name(2), figure2()),
-        (
-            figure_name(3),
-            path_figure(&[
-                ("ERBS, arcs swept in the turn direction", &erbs_pts),
-                ("ERBS, Eqs. (21)-(22) as printed", &printed),
-            ]),
-        ),
+        (figure_name(3), figure3(&erbs_pts, &printed)),
         (figure_name(4), figure4(&erbs_pts)),
         (figure_name(5), path_figure(&[("BFBS (i = 2)", &bfbs_pts)])),
         (figure_name(6), figure6(&bfbs_pts, &erbs_pts)),
@@ -189,7 +183,7 @@ pub fn verify() -> PaperOutput {
         ),
         (
             3,
-            "Fig. 3: ERBS path; right: the printed arc angles make left turns run backwards",
+            "Fig. 3: ERBS path; middle: Eqs. (21)–(22) as printed; right: both, zoomed where they differ most (the printed arc angles make left turns run backwards)",
         ),
         (4, "Fig. 4: ERBS path with its local curves"),
         (5, "Fig. 5: BFBS path"),
@@ -233,8 +227,8 @@ fn basis_panel(
     }
     Panel {
         title: title.into(),
-        x_label: "t".into(),
-        y_label: "B_k(t)".into(),
+        x_label: "t (knot parameter)".into(),
+        y_label: "B_k(t) (dimensionless)".into(),
         series,
         legend: Corner::UpperRight,
         ..Panel::default()
@@ -290,8 +284,8 @@ fn plane_panel(title: &str, mut series: Vec<Series>) -> Panel {
     series.push(waypoint_series());
     Panel {
         title: title.into(),
-        x_label: "x".into(),
-        y_label: "y".into(),
+        x_label: "x (length units)".into(),
+        y_label: "y (length units)".into(),
         series,
         equal_aspect: true,
         legend: Corner::LowerLeft,
@@ -306,6 +300,67 @@ fn path_figure(paths: &[(&str, &[PathPoint<f64>])]) -> String {
         .collect();
     let cols = panels.len();
     plot::render_or_note(&panels, (1, cols), (700 * cols as u32, 500))
+}
+
+/// Fig. 3: the path with arcs swept in the turn direction, the path of Eqs. (21)–(22) as
+/// printed, and both overlaid in a window around the printed point farthest from the other
+/// path (the turn the printed angles concern), since at full scale the difference is a few
+/// units on a path of 1200.
+fn figure3(turn: &[PathPoint<f64>], printed: &[PathPoint<f64>]) -> String {
+    let (a, b) = (xy(turn), xy(printed));
+    let distance_to_a = |q: &(f64, f64)| {
+        a.iter()
+            .map(|p| (p.0 - q.0).hypot(p.1 - q.1))
+            .fold(f64::INFINITY, f64::min)
+    };
+    let (far, gap) = b
+        .iter()
+        .enumerate()
+        .map(|(i, q)| (i, distance_to_a(q)))
+        .fold((0, 0.0), |m, x| if x.1 > m.1 { x } else { m });
+    // The window spans the farthest point and the waypoint of the turn nearest to it.
+    let point = b.get(far).copied().unwrap_or((0.0, 0.0));
+    let turn_at = setup::WAYPOINTS
+        .iter()
+        .map(|w| (w[0] as f64, w[1] as f64))
+        .min_by(|p, q| {
+            let d = |w: &(f64, f64)| (w.0 - point.0).hypot(w.1 - point.1);
+            d(p).total_cmp(&d(q))
+        })
+        .unwrap_or(point);
+    let centre = ((point.0 + turn_at.0) / 2.0, (point.1 + turn_at.1) / 2.0);
+    let half =
+        ((point.0 - turn_at.0).abs().max((point.1 - turn_at.1).abs()) / 2.0 + 3.0 * gap).max(40.0);
+    let inside = |p: &(f64, f64)| (p.0 - centre.0).abs() <= half && (p.1 - centre.1).abs() <= half;
+    let clip = |pts: &[(f64, f64)]| pts.iter().copied().filter(inside).collect::<Vec<_>>();
+    let zoom = Panel {
+        title: format!(
+            "zoom: the printed path passes {gap:.1} from the other at t = {:.3}",
+            printed.get(far).map_or(0.0, |p| p.t)
+        ),
+        x_label: "x (length units)".into(),
+        y_label: "y (length units)".into(),
+        series: vec![
+            curve("turn direction", clip(&a), Style::Solid, 1),
+            curve("as printed", clip(&b), Style::Dashed, 2),
+            curve("waypoint", vec![turn_at], Style::Markers, 0),
+        ],
+        equal_aspect: true,
+        legend: Corner::UpperLeft,
+        ..Panel::default()
+    };
+    let panels = vec![
+        plane_panel(
+            "ERBS, arcs swept in the turn direction",
+            vec![curve("turn direction", a.clone(), Style::Solid, 1)],
+        ),
+        plane_panel(
+            "ERBS, Eqs. (21)-(22) as printed",
+            vec![curve("as printed", b.clone(), Style::Dashed, 2)],
+        ),
+        zoom,
+    ];
+    plot::render_or_note(&panels, (1, 3), (2100, 550))
 }
 
 fn figure4(erbs: &[PathPoint<f64>]) -> String {
@@ -400,8 +455,8 @@ fn figure7(erbs: &[PathPoint<f64>], legs: &[crate::gerbs::dubins::DubinsPath<f64
     );
     let b = Panel {
         title: "signed curvature along the path".into(),
-        x_label: "arc length".into(),
-        y_label: "kappa".into(),
+        x_label: "arc length (length units)".into(),
+        y_label: "signed curvature κ (1/length unit)".into(),
         series: vec![
             curve("Dubins", kd, Style::Solid, 2),
             curve("ERBS", ke, Style::Dashed, 1),

@@ -171,7 +171,7 @@ pub fn growth_law(rows: &[KappaRow]) -> String {
 }
 
 fn fmt(x: f64) -> String {
-    format_float_digits(&Float::with_val(53, x), 4)
+    crate::report::number::sig(x, 4)
 }
 
 /// The first m from which nalgebra's f64 κ₂ has no correct digit for every larger m too.

@@ -91,9 +91,7 @@ fn compare(column: &[Float], col: usize) -> (usize, f64) {
     compare_with_printed(column, &printed(col))
 }
 
-fn fmt(x: f64, d: u32) -> String {
-    format_float_digits(&Float::with_val(53, x), d)
-}
+use crate::report::number::sig as fmt;
 
 /// Table III, Figs. 2–5.
 pub fn section(ledger: &mut Ledger, md: &mut String, figures: &mut Vec<(String, String)>) {

@@ -30,9 +30,7 @@ fn printed(col: usize) -> Vec<&'static str> {
     TABLE6.iter().map(|r| r[col]).collect()
 }
 
-fn fmt(x: f64, d: u32) -> String {
-    format_float_digits(&Float::with_val(53, x), d)
-}
+use crate::report::number::sig as fmt;
 
 /// Compare a certified column with a printed one: (agreeing entries, largest difference).
 fn compare(column: &[Float], col: usize) -> (usize, f64) {

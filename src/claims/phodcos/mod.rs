@@ -299,12 +299,7 @@ fn figure_name(tag: &str) -> String {
     format!("{ID}_{tag}.svg")
 }
 
-fn fmt(x: f64, digits: u32) -> String {
-    if x == 0.0 {
-        return "0".into();
-    }
-    format_float_digits(&Float::with_val(64, x), digits)
-}
+use crate::report::number::sig as fmt;
 
 /// Run every check of paper 001 and build its report.
 pub fn verify() -> PaperOutput {
@@ -406,14 +401,7 @@ pub fn verify() -> PaperOutput {
     ledger.record("phodcos.thm1.order6", table1::order_six(&rows));
     let (other, [one, equal, none]) = table1::other_orders();
     md.push_str("### Theorem 1 for φ ≠ 0\n\n");
-    let cell = |r: &table1::Row| {
-        r.error
-            .certified()
-            .text
-            .chars()
-            .take(10)
-            .collect::<String>()
-    };
+    let cell = |r: &table1::Row| crate::report::number::certified(&r.error.certified(), 9);
     let ord = |r: &table1::Row| r.order_certified().map_or("–".into(), |o| fmt(o.approx, 4));
     let other_rows: Vec<Vec<String>> = (0..other.theta.len())
         .map(|i| {
@@ -475,12 +463,7 @@ pub fn verify() -> PaperOutput {
             ("R", &j.corrected[1], &j.uncorrected[1]),
             ("ω", &j.corrected[2], &j.uncorrected[2]),
         ] {
-            let cells = |v: &Vec<f64>| {
-                v.iter()
-                    .map(|x| format!("{x:.1e}"))
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            };
+            let cells = |v: &Vec<f64>| v.iter().map(|x| fmt(*x, 2)).collect::<Vec<_>>().join(", ");
             jrows.push(vec![
                 j.segments.to_string(),
                 name.into(),
@@ -524,10 +507,10 @@ pub fn verify() -> PaperOutput {
         .map(|r| {
             vec![
                 r.0.to_string(),
-                format!("{:.2e}", r.4),
-                format!("{:.2e}", r.1),
-                format!("{:.2e}", r.2),
-                format!("{:.2e}", r.3),
+                fmt(r.4, 3),
+                fmt(r.1, 3),
+                fmt(r.2, 3),
+                fmt(r.3, 3),
             ]
         })
         .collect();
@@ -588,13 +571,16 @@ fn convergence_figure(
         .collect();
     let last = rows.last().map_or(1e-21, |r| r.error.hi.to_f64());
     let guide: Vec<(f64, f64)> = (0..=13)
-        .map(|n| (n as f64, last * 64f64.powi(13 - n)))
+        .map(|n| (n as f64, 100.0 * last * 64f64.powi(13 - n)))
         .collect();
     let panel = Panel {
         title: "Table 1: conversion error of Eq. (23)".into(),
         x_label: "n (2^n segments)".into(),
-        y_label: "max error".into(),
+        y_label: "max ‖γ − p‖ (length units of Eq. 23)".into(),
         series: vec![
+            // First, so that it is drawn beneath the data; two decades above the certified
+            // line so that it does not hide it.
+            Series::new("slope −6 guide (100× above)", guide, Style::Dashed, 6),
             Series::new("C4 PHODCOS, certified", pts(rows), Style::LineMarkers, 1),
             Series::new("published", published, Style::Markers, 2),
             Series::new(
@@ -611,7 +597,6 @@ fn convergence_figure(
                 5,
             ),
             Series::new("tau1 = 1/10 (no convergence)", pts(tau), Style::Dotted, 0),
-            Series::new("slope 6 guide", guide, Style::Solid, 0),
         ],
         log_y: true,
         equal_aspect: false,

@@ -298,7 +298,7 @@ pub fn other_orders() -> (OtherOrders, [Outcome; 3]) {
 }
 
 fn fmt(x: f64) -> String {
-    format_float_digits(&Float::with_val(64, x), 4)
+    crate::report::number::sig(x, 4)
 }
 
 fn fmt_list(v: &[f64]) -> String {

@@ -1,0 +1,75 @@
+//! The one number formatter of every report table and figure label.
+//!
+//! A table cell shows a number to a chosen count of significant digits, rounded (never a
+//! prefix of a longer string, which would drop an exponent: "1.89784150e-7" cut to ten
+//! characters reads as 1.9), in plain notation for moderate exponents and scientific
+//! notation otherwise. A certified value shows at most the digits it has.
+
+use crate::scalar::certify::{format_float_digits, Certified};
+use crate::scalar::Float;
+
+/// `x` to `digits` significant digits ("0" for zero; "NaN", "inf", "-inf" as such).
+pub fn sig(x: f64, digits: u32) -> String {
+    if x.is_nan() {
+        return "NaN".into();
+    }
+    format_float_digits(&Float::with_val(53, x), digits)
+}
+
+/// A certified value with at most `max_digits` of its certified digits, rounded.
+pub fn certified(c: &Certified, max_digits: u32) -> String {
+    if c.digits <= max_digits {
+        return c.text.clone();
+    }
+    // The certified text carries `c.digits` correct digits; rounding it to fewer digits
+    // needs a precision that holds them all (about 3.33 bits a digit).
+    let bits = (c.digits * 4 + 16).max(64);
+    match Float::parse(&c.text) {
+        Ok(parsed) => format_float_digits(&Float::with_val(bits, parsed), max_digits),
+        Err(_) => c.text.clone(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scalar::certify::certify;
+
+    #[test]
+    fn every_magnitude_keeps_its_exponent() {
+        for e in -300..=300 {
+            let x = 1.8978415012345 * 10f64.powi(e);
+            let s = sig(x, 6);
+            let back: f64 = s.parse().unwrap();
+            assert!(((back - x) / x).abs() < 1e-5, "{x:e} printed as {s}");
+            let neg = sig(-x, 3);
+            let back: f64 = neg.parse().unwrap();
+            assert!(((back + x) / x).abs() < 1e-2, "{:e} printed as {neg}", -x);
+        }
+        assert_eq!(sig(0.0, 4), "0");
+        assert_eq!(sig(f64::INFINITY, 4), "inf");
+        assert_eq!(sig(f64::NAN, 4), "NaN");
+        assert_eq!(sig(123.456, 4), "123.5");
+        assert_eq!(sig(1.89784150e-7, 9), "1.89784150e-7");
+    }
+
+    #[test]
+    fn certified_values_are_rounded_not_cut() {
+        for e in [-300, -77, -7, 0, 7, 77, 300] {
+            let x = 1.897841504987 * 10f64.powi(e);
+            let lo = Float::with_val(200, x);
+            let hi = Float::with_val(400, x);
+            let c = certify(&lo, &hi);
+            assert!(c.digits >= 15);
+            let s = certified(&c, 9);
+            let back: f64 = s.parse().unwrap();
+            assert!(((back - x) / x).abs() < 1e-8, "{x:e} printed as {s}");
+            assert!(s.matches(char::is_numeric).count() >= 9, "{s}");
+        }
+        let few = certify(
+            &Float::with_val(64, 0.125),
+            &Float::with_val(128, 0.1250001),
+        );
+        assert_eq!(certified(&few, 9), few.text);
+    }
+}
