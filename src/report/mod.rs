@@ -75,6 +75,35 @@ pub fn table(headers: &[&str], rows: &[Vec<String>]) -> String {
     out
 }
 
+/// The section of a paper report that lists what is *not* checked: each figure, table or
+/// section of the paper with a quantitative statement that no claim covers, and why.
+pub fn not_checked_section(items: &[(&str, &str)]) -> String {
+    let mut md = String::from(
+        "## Not checked
+
+",
+    );
+    if items.is_empty() {
+        md.push_str("Every figure, table and section with a quantitative statement is covered by a claim or drawn above.
+
+");
+        return md;
+    }
+    md.push_str(
+        "Parts of the paper with a quantitative statement that no claim covers, and why:
+
+",
+    );
+    for (place, reason) in items {
+        md.push_str(&format!(
+            "- **{place}**: {reason}
+"
+        ));
+    }
+    md.push('\n');
+    md
+}
+
 /// The ledger section of a paper report: every claim with its verdict and evidence.
 pub fn claims_section(claims: &[Claim]) -> String {
     let rows: Vec<Vec<String>> = claims

@@ -257,10 +257,7 @@ type LegendSample = ([PathElement<(i32, i32)>; 3], Circle<(i32, i32), i32>);
 /// that two series of one colour are still told apart: always three segments and a marker,
 /// in coordinates relative to the legend entry's anchor; the parts a style does not use are
 /// transparent.
-fn legend_sample(
-    style: Style,
-    color: RGBColor,
-) -> LegendSample {
+fn legend_sample(style: Style, color: RGBColor) -> LegendSample {
     let line = |on: bool| {
         if on {
             color.stroke_width(2)

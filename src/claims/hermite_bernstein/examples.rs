@@ -295,8 +295,8 @@ pub fn turn_figure(m: &[TurnMetrics]) -> Vec<Panel> {
     ));
     vec![Panel {
         title: "Fig. 3: same end conditions, durations 0.2, 1 and 3 × π/2".into(),
-        x_label: "x".into(),
-        y_label: "y".into(),
+        x_label: "x (length units)".into(),
+        y_label: "y (length units)".into(),
         series,
         equal_aspect: true,
         legend: Corner::LowerRight,

@@ -57,6 +57,15 @@ pub fn paper() -> Paper {
     }
 }
 
+/// Parts of the paper with a quantitative statement that no claim covers, and why (shown in
+/// the report's "Not checked" section).
+const NOT_CHECKED: &[(&str, &str)] = &[
+    (
+        "Fig. 1",
+        "an illustration of a Bernstein curve and its control points; the paper gives neither the control points nor any value read from the figure",
+    ),
+];
+
 fn figure_name(n: u32) -> String {
     super::figure_file(ID, n)
 }
@@ -223,6 +232,7 @@ pub fn verify() -> PaperOutput {
     ledger.record("hermite.sec4.degree_elevation", exact::degree_elevation());
 
     let claims = ledger.finish();
+    md.push_str(&crate::report::not_checked_section(NOT_CHECKED));
     md.push_str(&claims_section(&claims));
     PaperOutput {
         claims,
@@ -262,8 +272,13 @@ fn fig2_panels(
             };
             Panel {
                 title: format!("Fig. 2: {}", titles[j]),
-                x_label: "t".into(),
-                y_label: titles[j].into(),
+                x_label: "t (time units)".into(),
+                y_label: [
+                    "position (length units)",
+                    "velocity (length/time)",
+                    "acceleration (length/time²)",
+                ][j]
+                    .into(),
                 series: vec![
                     series_for(fast, "duration 1", Style::Solid, 0),
                     series_for(slow, "duration 2", Style::Dotted, 1),
@@ -391,7 +406,7 @@ fn fig5_panels(rows: &[conditioning::KappaRow]) -> Vec<Panel> {
     vec![Panel {
         title: "Fig. 5: κ2 of the Hermite transform".into(),
         x_label: "m (derivatives at each end)".into(),
-        y_label: "κ2".into(),
+        y_label: "κ2 (dimensionless)".into(),
         series,
         log_y: true,
         ..Panel::default()

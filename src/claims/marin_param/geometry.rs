@@ -247,8 +247,8 @@ pub fn corner(ledger: &mut Ledger, md: &mut String, figures: &mut Vec<(String, S
     );
     let panel = Panel {
         title: "Fig. 6: interpolation near a corner".into(),
-        x_label: "x".into(),
-        y_label: "y".into(),
+        x_label: "x (data units)".into(),
+        y_label: "y (data units)".into(),
         series: vec![
             Series::new("polygon", poly.clone(), Style::Solid, 0),
             Series::new("chord length", c_cl, Style::Dashed, 1),

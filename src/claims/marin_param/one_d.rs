@@ -415,7 +415,7 @@ fn figure1(s: &NaturalCubicSpline<Float>) -> String {
         series.extend(extra);
         Panel {
             title: title.into(),
-            x_label: "t".into(),
+            x_label: "t (parameter, dimensionless)".into(),
             y_label: title.into(),
             series,
             legend: Corner::UpperRight,

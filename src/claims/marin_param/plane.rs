@@ -317,7 +317,7 @@ fn component_figure(name: &str, t: &[f64], z: &[Vec<f64>]) -> String {
             };
             panels.push(Panel {
                 title: format!("{comp}{label}(t), {name}"),
-                x_label: "t".into(),
+                x_label: "t (parameter, dimensionless)".into(),
                 y_label: format!("{comp}{label}"),
                 series,
                 legend,
@@ -342,8 +342,8 @@ fn figure2(t: &[f64], z: &[Vec<f64>]) -> String {
     let data: Vec<(f64, f64)> = z[0].iter().copied().zip(z[1].iter().copied()).collect();
     let panel = Panel {
         title: "Fig. 2: parametric natural cubic spline with t^EX".into(),
-        x_label: "x".into(),
-        y_label: "y".into(),
+        x_label: "x (data units)".into(),
+        y_label: "y (data units)".into(),
         series: vec![
             Series::new("spline", curve, Style::Solid, 0),
             Series::new("Table II data", data, Style::Markers, 2),
