@@ -1,12 +1,14 @@
 //! trajverify: the curve and trajectory algorithms of five papers, written once over the
 //! number type and verified in exact rationals, MPFR and f64 side by side.
 //!
-//! Layers, each using only those below it (DESIGN.md):
-//! - [`cli`]: arguments and JSON in, JSON out; no mathematics.
+//! Layers, each using only those below it (DESIGN.md; `tests/layers.rs` checks every
+//! `crate::` reference against this order):
+//! - [`cli`]: arguments and JSON in, JSON out, work budgets; no mathematics.
 //! - [`claims`]: the published claims of each paper, each a check that calls the library.
-//! - [`report`]: the ledger (`claims.json`), Markdown reports, SVG figures.
+//! - [`report`]: Markdown reports, SVG figures, `claims.json`; reads only [`ledger`] values.
+//! - [`ledger`]: claim specs, outcomes, verdicts and the ledger that joins them.
 //! - algorithms: [`hermite`] (paper 000), [`ph`] (paper 001), [`bspline`] (paper 002),
-//!   [`param`] (paper 004).
+//!   [`gerbs`] (paper 003), [`param`] (paper 004); none uses another.
 //! - building blocks: [`poly`] (Bernstein form, differences), [`quat`] (quaternions),
 //!   [`curve`] (expressions, Taylor AD, fitted data), [`linalg`].
 //! - [`scalar`]: the `Field` and `Real` traits over f64, MPFR and rationals.
@@ -32,12 +34,15 @@
 //! assert!((fast[3] - 0.6).abs() < 1e-15);
 //! ```
 
+#![warn(rustdoc::broken_intra_doc_links)]
+
 pub mod bspline;
 pub mod claims;
 pub mod cli;
 pub mod curve;
 pub mod gerbs;
 pub mod hermite;
+pub mod ledger;
 pub mod linalg;
 pub mod param;
 pub mod ph;

@@ -54,8 +54,8 @@ pub enum Command {
     #[command(after_long_help = RUN_HELP)]
     Run {
         algorithm: Algorithm,
-        /// Number type: f64, rational (exact), or mpfr:<bits> (printed with the digits that
-        /// agree between <bits> and 2·<bits>). Default: f64 for hermite, spline-fit,
+        /// Number type: f64, rational (exact), or mpfr:BITS (printed with the digits that
+        /// agree between BITS and 2·BITS bits). Default: f64 for hermite, spline-fit,
         /// natural-spline, ph-hermite, phodcos, gerbs-basis, gerbs-path and dubins; mpfr:128 for
         /// convergence; mpfr:256 for hermite-condition, bang-bang, marin-1d and marin;
         /// bspline-basis and bspline-gram are always exact.

@@ -147,7 +147,7 @@ impl Expr {
 }
 
 impl<X: Real> Compiled<X> {
-    /// The value at `t`; at a [`Taylor`] variable (X = Taylor<T>) it carries the derivatives.
+    /// The value at `t`; at a [`Taylor`] variable (X = `Taylor<T>`) it carries the derivatives.
     pub fn eval(&self, t: &X) -> X {
         match self {
             Compiled::Const(v) => v.clone(),

@@ -18,7 +18,7 @@
 
 use super::{Blend, GerbsError, Knots};
 use crate::curve::taylor::Taylor;
-use crate::ph::binom;
+use crate::poly::binom;
 use crate::scalar::{powi, Field};
 
 /// The BFBS of exponents i_k, one per basis function B_2 … B_{n+1} (the knot t_k); the end

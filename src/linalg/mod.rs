@@ -1,11 +1,11 @@
-//! Dense linear algebra written once over [`Field`] / [`Real`].
+//! Dense linear algebra written once over [`Field`] / [`Real`](crate::scalar::Real).
 //!
 //! - [`Matrix`]: a row-major dense matrix with products and transposes.
 //! - [`gauss`]: Gaussian elimination with partial pivoting: `solve`, `inverse`, `determinant`.
 //!   Exact in rationals (any non-zero pivot is exact; the largest one is chosen anyway so
 //!   the same code is the backward-stable choice in floating point).
 //! - [`svd`]: singular values by one-sided Jacobi at any precision.
-//! - [`reference`]: the same quantities in f64 through nalgebra, the reference our generic
+//! - [`reference`](mod@reference): the same quantities in f64 through nalgebra, the reference our generic
 //!   routines are tested against and the "what f64 gives" column of every report.
 //!
 //! nalgebra's decompositions need `ComplexField`, which neither `rug::Float` nor

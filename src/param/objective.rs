@@ -68,7 +68,7 @@ pub fn objective<T: Field>(
 
 /// Normalized accumulated chord length (Eq. 5) as a spacing h: hᵢ = dᵢ / Σⱼ dⱼ with dᵢ the
 /// Euclidean distance between points i−1 and i, the points given by their `components`
-/// (z[l][i] is coordinate l of point i).
+/// (`z[l][i]` is coordinate l of point i).
 pub fn chord_length_spacing<T: crate::scalar::Real>(components: &[Vec<T>]) -> Vec<T> {
     let ctx = components[0][0].ctx();
     let n = components[0].len();

@@ -1,5 +1,5 @@
 //! PH Hermite interpolation of C^m data by a preimage of degree n = 2m (paper 001, Sec. 5C,
-//! Algorithm 1 for m = 4; Šír & Jüttler 2007, the paper's reference [1], for m = 2).
+//! Algorithm 1 for m = 4; Šír & Jüttler 2007, the paper's reference \[1\], for m = 2).
 //!
 //! Steps (Algorithm 1):
 //! 1. Standard form (Definition 3): rotate the data by the unit quaternion U that takes
@@ -40,7 +40,7 @@ impl<T: Field> HermiteData<T> {
     pub fn order(&self) -> usize {
         self.start.len()
     }
-    /// The data of a curve jet at both ends: jet[k] is the k-th derivative.
+    /// The data of a curve jet at both ends: `jet[k]` is the k-th derivative.
     pub fn from_jets(start: &[[T; 3]], end: &[[T; 3]]) -> Self {
         HermiteData {
             p_b: start[0].clone(),
@@ -295,7 +295,7 @@ pub fn standard_rotation<T: Real>(d: &[T; 3]) -> Result<Quat<T>, PhHermiteError>
     Ok(q.scale(&(T::one_in(&ctx) / &norm)))
 }
 
-/// h_0 … h_{m−1} in place of the derivatives d[k] = h⁽ᵏ⁾(0) of a Bernstein polynomial of
+/// h_0 … h_{m−1} in place of the derivatives `d[k]` = h⁽ᵏ⁾(0) of a Bernstein polynomial of
 /// degree `big`: h^{(k)}(0) = big!/(big−k)! Σ_j (−1)^{k−j} C(k,j) h_j (Eq. 16), solved for h_k
 /// with h_0 … h_{k−1} already in place.
 pub fn end_coefficients<T: Field>(d: &mut [[T; 3]], big: usize, ctx: &T::Ctx) {

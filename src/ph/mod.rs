@@ -29,39 +29,9 @@ use crate::curve::taylor::Taylor;
 use crate::quat::{vec3, Quat};
 use crate::scalar::{Field, Real};
 
-/// C(n, k) for the small degrees of PH curves, read from a Pascal triangle built at compile
-/// time (n ≤ 60, every entry fits in i64); the interpolation evaluates dozens of them per
-/// segment, so a lookup must cost no more than an index.
-#[inline]
-pub fn binom(n: usize, k: usize) -> i64 {
-    if k > n {
-        return 0;
-    }
-    if n < PASCAL_ROWS {
-        return PASCAL[n][k];
-    }
-    // Beyond the table (not used by the PH code): the multiplicative formula.
-    let k = k.min(n - k);
-    (0..k).fold(1i64, |r, i| r * (n - i) as i64 / (i + 1) as i64)
-}
-
-const PASCAL_ROWS: usize = 2 * MAX_PREIMAGE_DEGREE + 1;
-static PASCAL: [[i64; PASCAL_ROWS]; PASCAL_ROWS] = pascal_triangle();
-
-const fn pascal_triangle() -> [[i64; PASCAL_ROWS]; PASCAL_ROWS] {
-    let mut t = [[0i64; PASCAL_ROWS]; PASCAL_ROWS];
-    let mut r = 0;
-    while r < PASCAL_ROWS {
-        t[r][0] = 1;
-        let mut j = 1;
-        while j <= r {
-            t[r][j] = t[r - 1][j - 1] + t[r - 1][j];
-            j += 1;
-        }
-        r += 1;
-    }
-    t
-}
+/// C(n, k) from the compile-time Pascal triangle of [`crate::poly::binom`] (every entry the
+/// PH code needs, n ≤ 2·[`MAX_PREIMAGE_DEGREE`], fits in it).
+pub use crate::poly::binom;
 
 /// The largest preimage degree accepted (keeps every binomial product inside i64).
 pub const MAX_PREIMAGE_DEGREE: usize = 30;
@@ -313,7 +283,7 @@ mod tests {
 
     #[test]
     fn the_compile_time_pascal_triangle_holds_every_binomial_to_n_60() {
-        for n in 0..PASCAL_ROWS {
+        for n in 0..=2 * MAX_PREIMAGE_DEGREE {
             let row_sum: i128 = (0..=n).map(|k| i128::from(binom(n, k))).sum();
             assert_eq!(row_sum, 1i128 << n, "row {n}");
             for k in 0..=n {

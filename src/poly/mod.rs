@@ -5,7 +5,7 @@
 //! - [`bernstein`]: the Bernstein basis on [t₀, t₁] (Eqs. 1–4), de Casteljau evaluation,
 //!   derivatives (Eqs. 5, 12, 13), conversion to the power basis, degree elevation.
 //!
-//! Everything is generic over [`Field`](crate::scalar::Field): exact in rationals.
+//! Everything is generic over [`Field`]: exact in rationals.
 
 pub mod bernstein;
 pub mod differences;
@@ -16,6 +16,41 @@ pub use power::Poly;
 
 use crate::scalar::{BigInt, Field};
 use num_traits::One;
+
+/// C(n, k) as an i64, read from a Pascal triangle built at compile time for n ≤ 60 (every
+/// entry fits in i64): PH interpolation evaluates dozens of them per segment and the BFBS
+/// one per term, so a lookup must cost no more than an index. Beyond the table, the
+/// multiplicative formula (exact while the result fits in i64).
+#[inline]
+pub fn binom(n: usize, k: usize) -> i64 {
+    if k > n {
+        return 0;
+    }
+    if n < PASCAL_ROWS {
+        return PASCAL[n][k];
+    }
+    let k = k.min(n - k);
+    (0..k).fold(1i64, |r, i| r * (n - i) as i64 / (i + 1) as i64)
+}
+
+/// Rows 0…60 of Pascal's triangle (C(60, 30) ≈ 1.2e17 < 2⁶³).
+const PASCAL_ROWS: usize = 61;
+static PASCAL: [[i64; PASCAL_ROWS]; PASCAL_ROWS] = pascal_triangle();
+
+const fn pascal_triangle() -> [[i64; PASCAL_ROWS]; PASCAL_ROWS] {
+    let mut t = [[0i64; PASCAL_ROWS]; PASCAL_ROWS];
+    let mut r = 0;
+    while r < PASCAL_ROWS {
+        t[r][0] = 1;
+        let mut j = 1;
+        while j <= r {
+            t[r][j] = t[r - 1][j - 1] + t[r - 1][j];
+            j += 1;
+        }
+        r += 1;
+    }
+    t
+}
 
 /// The binomial coefficient C(n, k) as an exact integer.
 pub fn binomial(n: usize, k: usize) -> BigInt {

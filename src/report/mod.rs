@@ -8,7 +8,7 @@
 pub mod number;
 pub mod plot;
 
-use crate::claims::{Claim, Verdict};
+use crate::ledger::{Claim, Verdict};
 use serde::Serialize;
 use std::path::Path;
 
