@@ -4,7 +4,7 @@ use super::budget::{check_output, check_time, Rates};
 use super::input::{self, fail, InputError, RunError};
 use super::output::Out;
 use super::Rendered;
-use crate::param::descent::{gradient_projection, newton_polish};
+use crate::param::descent::{descend, polish};
 use crate::param::natural::NaturalCubicSpline;
 use crate::param::objective::{chord_length_spacing, knots_from_spacing, objective, Objective};
 use crate::param::one_d::{
@@ -268,13 +268,12 @@ pub fn run_marin(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendere
         .map(|c| c.iter().map(Field::to_f64).collect())
         .collect();
     let a64: Vec<f64> = data.alpha.iter().map(Field::to_f64).collect();
-    let rough = gradient_projection(
+    let rough = descend(
         chord_length_spacing(&z64),
         &z64,
         &a64,
         data.form,
-        &1e-6,
-        5000,
+        &mut |_, _| {},
     )
     .map_err(spline_error)?;
     let finish = |ctx_bits: Option<u32>| -> Result<Out<Float>, InputError> {
@@ -289,8 +288,7 @@ pub fn run_marin(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendere
             .iter()
             .map(|q| Float::from_rational(q, &bits))
             .collect();
-        let start: Vec<Float> = rough.h.iter().map(|x| Float::with_val(bits, *x)).collect();
-        let h = newton_polish(start, &z, &a, data.form, 60).map_err(spline_error)?;
+        let h = polish(&rough, &z, &a, data.form).map_err(spline_error)?;
         let g = objective(&h, &z, &a, data.form).map_err(spline_error)?;
         let g_chord =
             objective(&chord_length_spacing(&z), &z, &a, data.form).map_err(spline_error)?;

@@ -8,6 +8,13 @@
 //! precision. The iteration stops when ‖π_B(∇G)‖ ≤ `tolerance`·‖π_B(∇G(h⁽⁰⁾))‖ or after
 //! `max_iterations`; both are reported, so a result that stopped on the iteration limit is
 //! visible as such.
+//!
+//! The project minimizes G in two stages, [`descend`] then [`polish`]: gradient projection in
+//! f64 only has to land in Newton's basin (relative tolerance [`DESCENT_TOLERANCE`], at most
+//! [`DESCENT_MAX_ITERATIONS`] iterations), and Newton's method on the optimality system
+//! ([`newton_polish`], at most [`NEWTON_MAX_STEPS`] steps) then converges quadratically at
+//! any precision. Every caller (the `marin` command and the paper-004 claims) uses this one
+//! pipeline.
 
 use super::gradient::{gradient, project};
 use super::natural::SplineError;
@@ -41,6 +48,45 @@ fn step<T: Field>(h: &[T], p: &[T], lambda: &T) -> Vec<T> {
         .zip(p)
         .map(|(x, d)| x.clone() - &(lambda.clone() * d))
         .collect()
+}
+
+/// The f64 descent stops when ‖π_B(∇G)‖ has fallen by this factor from its start…
+pub const DESCENT_TOLERANCE: f64 = 1e-6;
+/// … or after this many iterations.
+pub const DESCENT_MAX_ITERATIONS: usize = 5000;
+/// The most Newton steps [`polish`] takes (it stops earlier when a step no longer changes h).
+pub const NEWTON_MAX_STEPS: usize = 60;
+
+/// Stage one: gradient projection in f64 from `h0`, calling `observe(i, h⁽ⁱ⁾)` after every
+/// iteration (pass `&mut |_, _| {}` when nothing is observed).
+pub fn descend(
+    h0: Vec<f64>,
+    z: &[Vec<f64>],
+    alpha: &[f64],
+    form: Objective,
+    observe: &mut dyn FnMut(usize, &[f64]),
+) -> Result<Descent<f64>, SplineError> {
+    gradient_projection_observed(
+        h0,
+        z,
+        alpha,
+        form,
+        &DESCENT_TOLERANCE,
+        DESCENT_MAX_ITERATIONS,
+        observe,
+    )
+}
+
+/// Stage two: Newton's method in the number type of `z` from the f64 descent's end point.
+pub fn polish<T: Real>(
+    rough: &Descent<f64>,
+    z: &[Vec<T>],
+    alpha: &[T],
+    form: Objective,
+) -> Result<Vec<T>, SplineError> {
+    let ctx = alpha[0].ctx();
+    let start = rough.h.iter().map(|x| T::from_f64(*x, &ctx)).collect();
+    newton_polish(start, z, alpha, form, NEWTON_MAX_STEPS)
 }
 
 /// Minimize G from `h0` (a point of B with all hᵢ > 0).

@@ -4,7 +4,7 @@
 use super::super::{Ledger, Outcome, Verdict};
 use super::data::{TABLE1, TABLE2, TABLE4};
 use super::{num, ID};
-use crate::param::descent::{gradient_projection, newton_polish};
+use crate::param::descent::{descend, polish};
 use crate::param::natural::NaturalCubicSpline;
 use crate::param::objective::{chord_length_spacing, knots_from_spacing, Objective};
 use crate::param::one_d::minimizing_parametrization;
@@ -82,16 +82,9 @@ fn minimizer(z: &[Vec<Float>]) -> Option<Vec<Float>> {
         .map(|w| (w[1].clone() - &w[0]).to_f64())
         .collect();
     let ones64 = vec![1.0; z.len()];
-    let rough = gradient_projection(h0, &z64, &ones64, Objective::Exact, &1e-6, 5000).ok()?;
+    let rough = descend(h0, &z64, &ones64, Objective::Exact, &mut |_, _| {}).ok()?;
     let ones = vec![Float::with_val(BITS, 1); z.len()];
-    let h = newton_polish(
-        rough.h.iter().map(|x| Float::with_val(BITS, *x)).collect(),
-        z,
-        &ones,
-        Objective::Exact,
-        60,
-    )
-    .ok()?;
+    let h = polish(&rough, z, &ones, Objective::Exact).ok()?;
     Some(knots_from_spacing(&h, &BITS))
 }
 

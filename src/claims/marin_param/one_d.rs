@@ -4,7 +4,7 @@ use super::super::sample::SplitMix64;
 use super::super::{Ledger, Outcome, Verdict};
 use super::data::TABLE1;
 use super::{num, ID};
-use crate::param::descent::{gradient_projection, newton_polish};
+use crate::param::descent::{descend, polish};
 use crate::param::natural::NaturalCubicSpline;
 use crate::param::objective::{objective, Objective};
 use crate::param::one_d::{
@@ -262,13 +262,11 @@ fn corollary_two() -> Outcome {
         let one256 = [Float::with_val(256, 1)];
         for h0 in starts {
             runs += 1;
-            let Ok(rough) = gradient_projection(h0, &z64, &one, Objective::Exact, &1e-6, 5000)
-            else {
+            let Ok(rough) = descend(h0, &z64, &one, Objective::Exact, &mut |_, _| {}) else {
                 failures.push(format!("trial {trial}: descent failed"));
                 continue;
             };
-            let start: Vec<Float> = rough.h.iter().map(|x| Float::with_val(256, *x)).collect();
-            let Ok(h) = newton_polish(start, &z256, &one256, Objective::Exact, 60) else {
+            let Ok(h) = polish(&rough, &z256, &one256, Objective::Exact) else {
                 failures.push(format!("trial {trial}: Newton failed"));
                 continue;
             };

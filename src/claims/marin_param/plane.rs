@@ -4,7 +4,7 @@ use super::super::{Ledger, Outcome, Verdict};
 use super::data::{TABLE2, TABLE3};
 use super::one_d::compare_with_printed;
 use super::{num, ID};
-use crate::param::descent::{gradient_projection_observed, newton_polish};
+use crate::param::descent::{descend, polish};
 use crate::param::natural::NaturalCubicSpline;
 use crate::param::objective::{chord_length_spacing, knots_from_spacing, Objective};
 use crate::report::plot::{self, Corner, Panel, Series, Style};
@@ -61,17 +61,14 @@ fn minimize(form: Objective, col: usize, name: &'static str) -> Option<Column> {
             closest = Some((i, dev));
         }
     };
-    let rough =
-        gradient_projection_observed(h0, &z64, &alpha, form, &1e-6, 5000, &mut observe).ok()?;
+    let rough = descend(h0, &z64, &alpha, form, &mut observe).ok()?;
     let polish = |bits: u32| -> Option<Vec<Float>> {
         let z = components::<Float>(&bits);
-        let start: Vec<Float> = rough.h.iter().map(|x| Float::with_val(bits, *x)).collect();
-        let h = newton_polish(
-            start,
+        let h = polish(
+            &rough,
             &z,
             &[Float::with_val(bits, 1), Float::with_val(bits, 1)],
             form,
-            60,
         )
         .ok()?;
         Some(knots_from_spacing(&h, &bits))

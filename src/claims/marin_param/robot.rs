@@ -4,7 +4,7 @@ use super::super::{Ledger, Outcome, Verdict};
 use super::data::{ROBOT_ALPHA, TABLE4, TABLE5, TABLE6, TABLE7};
 use super::num;
 use super::one_d::compare_with_printed;
-use crate::param::descent::{gradient_projection, newton_polish};
+use crate::param::descent::{descend, polish};
 use crate::param::natural::NaturalCubicSpline;
 use crate::param::objective::{chord_length_spacing, knots_from_spacing, Objective};
 use crate::report::table;
@@ -141,7 +141,7 @@ pub fn section(ledger: &mut Ledger, md: &mut String) {
         .windows(2)
         .map(|w| (w[1].clone() - &w[0]).to_f64())
         .collect();
-    let ap = gradient_projection(h0, &z64, &a64, Objective::Approximate, &1e-6, 5000)
+    let ap = descend(h0, &z64, &a64, Objective::Approximate, &mut |_, _| {})
         .ok()
         .and_then(|rough| {
             let bits = 256;
@@ -152,8 +152,7 @@ pub fn section(ledger: &mut Ledger, md: &mut String) {
                 .iter()
                 .map(|&v| Float::with_val(bits, v))
                 .collect();
-            let start: Vec<Float> = rough.h.iter().map(|x| Float::with_val(bits, *x)).collect();
-            newton_polish(start, &z, &a, Objective::Approximate, 60)
+            polish(&rough, &z, &a, Objective::Approximate)
                 .ok()
                 .map(|h| (knots_from_spacing(&h, &bits), rough.iterations))
         });
