@@ -10,9 +10,9 @@ use super::input::{self, fail, InputError, RealInput, RunError};
 use super::output::{flush, largest, noise_level, Out};
 use super::Rendered;
 use crate::gerbs::bfbs::{Bfbs, MAX_EXPONENT};
-use crate::gerbs::dubins::shortest;
+use crate::gerbs::dubins::{algorithm1_headings, through_poses, total_length};
 use crate::gerbs::erbs::{CentreReading, Erbs, ErbsParams};
-use crate::gerbs::path::{check_waypoints, tangents, ArcConvention, GerbsPath, PathSpec};
+use crate::gerbs::path::{check_waypoints, ArcConvention, GerbsPath, PathSpec};
 use crate::gerbs::quadrature::default_tolerance;
 use crate::gerbs::{basis_derivatives, Blend, GerbsError, Knots, Side};
 use crate::scalar::{BigRational, Field, Float, Real, ScalarKind};
@@ -760,28 +760,16 @@ impl Job for DubinsJob {
                 .enumerate()
                 .map(|(k, x)| x.to::<T>(ctx, &format!("headings[{k}]")))
                 .collect::<Result<Vec<_>, _>>()?,
-            None => tangents(&w)
-                .map_err(gerbs_error)?
-                .m
-                .iter()
-                .map(|m| m[1].atan2(&m[0]))
-                .collect(),
+            None => algorithm1_headings(&w).map_err(gerbs_error)?,
         };
-        let pose = |i: usize| [w[i][0].clone(), w[i][1].clone(), headings[i].clone()];
-        let mut legs = Vec::new();
-        for i in 0..w.len() - 1 {
-            legs.push(shortest(&pose(i), &pose(i + 1), &radius).ok_or_else(|| {
-                InputError(format!(
-                    "field \"waypoints\": no Dubins path from waypoint {} to {}",
-                    i + 1,
-                    i + 2
-                ))
-            })?);
-        }
-        let mut total = T::zero_in(ctx);
-        for leg in &legs {
-            total += &leg.total();
-        }
+        let legs = through_poses(&w, &headings, &radius).map_err(|i| {
+            InputError(format!(
+                "field \"waypoints\": no Dubins path from waypoint {} to {}",
+                i + 1,
+                i + 2
+            ))
+        })?;
+        let total = total_length(&legs, ctx);
         // Mathematical zeros print as 0 (noise_level): coordinates next to the largest
         // waypoint coordinate or R, headings next to π, segment lengths next to the total.
         let mut scale = radius.clone();
@@ -795,16 +783,15 @@ impl Job for DubinsJob {
             noise_level(&T::pi(ctx)),
             noise_level(&total),
         );
-        let last = (self.samples - 1) as i64;
         let legs = legs
             .iter()
             .enumerate()
             .map(|(i, leg)| {
                 let length = leg.total();
-                let samples = (0..=last)
-                    .map(|k| {
-                        let [x, y, h] =
-                            leg.pose_at(&(length.clone() * &T::from_ratio(k, last, ctx)));
+                let samples = leg
+                    .samples(self.samples)
+                    .into_iter()
+                    .map(|[x, y, h]| {
                         Out::nums(vec![
                             flush(x, Some(&xy_level)),
                             flush(y, Some(&xy_level)),

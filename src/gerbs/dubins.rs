@@ -6,6 +6,8 @@
 //! shortest feasible one is the Dubins path. Lengths are returned in the original units. The
 //! curvature is ±1/R on arcs and 0 on the straight: it jumps at every arc–line junction.
 
+use super::path::tangents;
+use super::GerbsError;
 use crate::scalar::Real;
 
 /// L (left turn), S (straight) or R (right turn).
@@ -51,6 +53,33 @@ fn mod2pi<T: Real>(x: T) -> T {
         }
     }
     r
+}
+
+/// The headings Algorithm 1 gives the waypoints: atan2 of its tangent directions m_i.
+pub fn algorithm1_headings<T: Real>(w: &[[T; 2]]) -> Result<Vec<T>, GerbsError> {
+    Ok(tangents(w)?.m.iter().map(|m| m[1].atan2(&m[0])).collect())
+}
+
+/// The shortest Dubins path of radius `radius` from each pose (W_i, heading_i) to the next;
+/// `Err(i)` when no word joins pose i to pose i + 1 (0-based).
+pub fn through_poses<T: Real>(
+    w: &[[T; 2]],
+    headings: &[T],
+    radius: &T,
+) -> Result<Vec<DubinsPath<T>>, usize> {
+    let pose = |i: usize| [w[i][0].clone(), w[i][1].clone(), headings[i].clone()];
+    (0..w.len().saturating_sub(1))
+        .map(|i| shortest(&pose(i), &pose(i + 1), radius).ok_or(i))
+        .collect()
+}
+
+/// The summed length of consecutive legs.
+pub fn total_length<T: Real>(legs: &[DubinsPath<T>], ctx: &T::Ctx) -> T {
+    let mut total = T::zero_in(ctx);
+    for leg in legs {
+        total += &leg.total();
+    }
+    total
 }
 
 /// The shortest of the six words from pose `start` = (x, y, heading) to `goal`.
@@ -181,6 +210,16 @@ impl<T: Real> DubinsPath<T> {
     }
 
     /// The signed curvature on each segment (1/R on L, −1/R on R, 0 on S).
+    /// `count` ≥ 2 poses at equal arc-length steps from the start to the end of the path.
+    pub fn samples(&self, count: usize) -> Vec<[T; 3]> {
+        let ctx = self.radius.ctx();
+        let last = count.max(2) as i64 - 1;
+        let length = self.total();
+        (0..=last)
+            .map(|k| self.pose_at(&(length.clone() * &T::from_ratio(k, last, &ctx))))
+            .collect()
+    }
+
     pub fn curvatures(&self) -> [T; 3] {
         let ctx = self.radius.ctx();
         self.word.map(|s| match s {

@@ -4,7 +4,7 @@
 use super::basis::fmt_e;
 use super::setup::{bfbs_path, erbs_path, spec, ErbsSet, HI, LO, RADIUS};
 use crate::claims::{Outcome, Verdict};
-use crate::gerbs::dubins::{shortest, DubinsPath};
+use crate::gerbs::dubins::{through_poses, DubinsPath};
 use crate::gerbs::path::{local_curves, tangents, ArcConvention, GerbsPath, PathPoint};
 use crate::gerbs::{Blend, Side};
 use crate::scalar::certify::certify;
@@ -234,10 +234,10 @@ pub fn bfbs_vs_erbs() -> (Outcome, Vec<PathPoint<f64>>, Vec<PathPoint<f64>>) {
 pub fn dubins_legs() -> Vec<DubinsPath<f64>> {
     let w = super::setup::waypoints::<f64>(&());
     let tan = bfbs_path::<f64>(&(), ArcConvention::TurnDirection).tangents;
-    let pose = |i: usize| [w[i][0], w[i][1], tan.m[i][1].atan2(tan.m[i][0])];
-    (0..w.len() - 1)
-        .filter_map(|i| shortest(&pose(i), &pose(i + 1), &(RADIUS as f64)))
-        .collect()
+    let headings: Vec<f64> = tan.m.iter().map(|m| m[1].atan2(m[0])).collect();
+    // Every leg of the paper's waypoints exists; a missing one would empty the list, which
+    // the Fig. 7 claim would show in its words.
+    through_poses(&w, &headings, &(RADIUS as f64)).unwrap_or_default()
 }
 
 /// Dense points of the Dubins legs.
