@@ -442,6 +442,17 @@ fn mutated_inputs_are_answered_or_refused_in_one_line() {
 static ANSWERED: AtomicUsize = AtomicUsize::new(0);
 static REFUSED: AtomicUsize = AtomicUsize::new(0);
 
+/// An input with an exact expected ending: (what, algorithm, scalar, input, exit status, a
+/// text that stdout (exit 0) or stderr (otherwise) contains).
+type Expected = (
+    &'static str,
+    &'static str,
+    Option<&'static str>,
+    &'static str,
+    i32,
+    &'static str,
+);
+
 /// The inputs of issue 14, each once: all must now end with exit 0 or 2 within the budget.
 #[test]
 fn reported_aborts_hangs_and_non_finite_outputs_are_gone() {
@@ -554,41 +565,46 @@ fn reported_aborts_hangs_and_non_finite_outputs_are_gone() {
             failures.push(e);
         }
     }
-    // A repeated waypoint is refused with headings given too.
-    let repeated = run(
-        "dubins",
-        None,
-        r#"{"waypoints": [[0, 0], [0, 0], [600, -50]], "headings": [0, 0, 0], "radius": 80}"#,
-    );
-    if repeated.code != Some(2) || !repeated.stderr.contains("repeats waypoint 1") {
-        failures.push(format!(
-            "repeated waypoint: exit {:?}, {}",
-            repeated.code, repeated.stderr
-        ));
-    }
-    // A duplicated key is refused, not silently resolved.
-    let dup = run(
-        "hermite",
-        None,
-        r#"{"start": [0, 1], "start": [0, 2], "end": [1, 0], "interval": [0, 1]}"#,
-    );
-    if dup.code != Some(2) || !dup.stderr.contains("appears twice") {
-        failures.push(format!(
-            "duplicate key: exit {:?}, {}",
-            dup.code, dup.stderr
-        ));
-    }
-    // The straight line converts exactly: its certified error is 0, not a refusal.
-    let line = run(
-        "phodcos",
-        Some("mpfr:128"),
-        r#"{"curve": "[t, 0, 0]", "interval": [0, 1], "segments": 4}"#,
-    );
-    if line.code != Some(0) || !line.stdout.contains(r#""max_error":"0""#) {
-        failures.push(format!(
-            "straight line: exit {:?}, {}",
-            line.code, line.stderr
-        ));
+    // Exact expectations: (what, algorithm, scalar, input, exit status, text the output holds).
+    let expected: [Expected; 3] = [
+        (
+            "a repeated waypoint is refused with headings given too",
+            "dubins",
+            None,
+            r#"{"waypoints": [[0, 0], [0, 0], [600, -50]], "headings": [0, 0, 0], "radius": 80}"#,
+            2,
+            "repeats waypoint 1",
+        ),
+        (
+            "a duplicated key is refused, not silently resolved",
+            "hermite",
+            None,
+            r#"{"start": [0, 1], "start": [0, 2], "end": [1, 0], "interval": [0, 1]}"#,
+            2,
+            "appears twice",
+        ),
+        (
+            "a straight line converts exactly: its certified error is 0, not a refusal",
+            "phodcos",
+            Some("mpfr:128"),
+            r#"{"curve": "[t, 0, 0]", "interval": [0, 1], "segments": 4}"#,
+            0,
+            r#""max_error":"0""#,
+        ),
+    ];
+    for (what, algorithm, scalar, input, code, needle) in expected {
+        let outcome = run(algorithm, scalar, input);
+        let text = if code == 0 {
+            &outcome.stdout
+        } else {
+            &outcome.stderr
+        };
+        if outcome.code != Some(code) || !text.contains(needle) {
+            failures.push(format!(
+                "{what}: exit {:?}, {}",
+                outcome.code, outcome.stderr
+            ));
+        }
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }

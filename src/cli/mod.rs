@@ -7,6 +7,7 @@
 //! ([`budget`]) before computing.
 
 pub mod budget;
+pub mod dispatch;
 pub mod input;
 pub mod output;
 mod run_bspline;

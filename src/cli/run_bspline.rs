@@ -1,6 +1,7 @@
 //! `run bspline-basis`, `bspline-gram`, `spline-fit` and `bang-bang`: the JSON shapes of issue 4.
 
 use super::budget::{check_time, Rates};
+use super::dispatch::{run_field, FieldJob};
 use super::input::{self, fail, InputError, RunError};
 use super::output::Out;
 use super::Rendered;
@@ -199,19 +200,13 @@ pub fn run_fit(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered,
             data.times.len()
         ),
     )?;
-    let name = scalar.to_string();
-    Ok(match scalar {
-        ScalarKind::F64 => {
-            Rendered::plain(fit_in::<f64>(&data, &())?.with_field("scalar", Out::Text(name)))
-        }
-        ScalarKind::Rational => Rendered::plain(
-            fit_in::<BigRational>(&data, &())?.with_field("scalar", Out::Text(name)),
-        ),
-        ScalarKind::Mpfr(bits) => Rendered::certified(
-            fit_in::<Float>(&data, &bits)?.with_field("scalar", Out::Text(name.clone())),
-            fit_in::<Float>(&data, &(2 * bits))?.with_field("scalar", Out::Text(name)),
-        ),
-    })
+    run_field(&data, scalar)
+}
+
+impl FieldJob for FitInput {
+    fn run<T: Field>(&self, ctx: &T::Ctx) -> Result<Out<T>, InputError> {
+        fit_in(self, ctx)
+    }
 }
 
 /// `run bang-bang`: switching times and amplitude of the minimum-L∞ control through x(2) = ξ.

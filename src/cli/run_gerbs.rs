@@ -6,6 +6,7 @@
 //! p and 2p bits with the agreeing digits printed; the BFBS basis also runs exactly.
 
 use super::budget::{self, check_time, Rates};
+use super::dispatch::{run_real, RealJob};
 use super::input::{self, fail, InputError, RealInput, RunError};
 use super::output::{flush, largest, noise_level, Out};
 use super::Rendered;
@@ -15,7 +16,7 @@ use crate::gerbs::erbs::{CentreReading, Erbs, ErbsParams};
 use crate::gerbs::path::{check_waypoints, ArcConvention, GerbsPath, PathSpec};
 use crate::gerbs::quadrature::default_tolerance;
 use crate::gerbs::{basis_derivatives, Blend, GerbsError, Knots, Side};
-use crate::scalar::{BigRational, Field, Float, Real, ScalarKind};
+use crate::scalar::{BigRational, Field, Real, ScalarKind};
 use serde_json::{Map, Value};
 
 /// The highest derivative order `run gerbs-basis` accepts.
@@ -59,28 +60,9 @@ fn finite_or_null<T: Field>(x: T) -> Out<T> {
     }
 }
 
-/// A computation run in the number type the user chose.
-trait Job {
-    fn run<T: Real>(&self, ctx: &T::Ctx) -> Result<Out<T>, InputError>;
-}
-
-/// f64, or MPFR at p and 2p bits printed with the digits that agree.
-fn run_real(job: &impl Job, scalar: ScalarKind, what: &str) -> Result<Rendered, RunError> {
-    let name = scalar.to_string();
-    match scalar {
-        ScalarKind::Rational => fail(format!(
-            "option --scalar: {what} needs square roots and trigonometry; use f64 or mpfr:<bits>"
-        )),
-        ScalarKind::Mpfr(bits) => Ok(Rendered::certified(
-            job.run::<Float>(&bits)?
-                .with_field("scalar", Out::Text(name.clone())),
-            job.run::<Float>(&(2 * bits))?
-                .with_field("scalar", Out::Text(name)),
-        )),
-        ScalarKind::F64 => Ok(Rendered::plain(
-            job.run::<f64>(&())?.with_field("scalar", Out::Text(name)),
-        )),
-    }
+/// The refusal of `--scalar rational` for a GERBS computation described as `what`.
+fn needs_real(what: &str) -> String {
+    format!("option --scalar: {what} needs square roots and trigonometry; use f64 or mpfr:<bits>")
 }
 
 /// `"bfbs"` or `"erbs"`.
@@ -362,7 +344,7 @@ impl BasisJob {
     }
 }
 
-impl Job for BasisJob {
+impl RealJob for BasisJob {
     fn run<T: Real>(&self, ctx: &T::Ctx) -> Result<Out<T>, InputError> {
         let knots = self.knots_in::<T>(ctx)?;
         Ok(match &self.params {
@@ -464,7 +446,7 @@ pub fn run_gerbs_basis(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<R
         (BasisParams::Erbs { .. }, ScalarKind::Rational) => fail(
             "option --scalar: the ERBS basis is an integral of exp(…) (quadrature); use f64 or mpfr:<bits>",
         ),
-        _ => run_real(&job, scalar, "the ERBS basis"),
+        _ => run_real(&job, scalar, &needs_real("the ERBS basis")),
     }
 }
 
@@ -585,7 +567,7 @@ impl PathJob {
     }
 }
 
-impl Job for PathJob {
+impl RealJob for PathJob {
     fn run<T: Real>(&self, ctx: &T::Ctx) -> Result<Out<T>, InputError> {
         let spec = PathSpec {
             waypoints: to_points(&self.waypoints, ctx),
@@ -708,7 +690,7 @@ pub fn run_gerbs_path(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Re
         params,
         samples,
     };
-    run_real(&job, scalar, "a GERBS path")
+    run_real(&job, scalar, &needs_real("a GERBS path"))
 }
 
 /// The ERBS quadrature's extra cost in MPFR beyond [`budget::mpfr_factor`]: the tanh–sinh
@@ -750,7 +732,7 @@ struct DubinsJob {
     samples: usize,
 }
 
-impl Job for DubinsJob {
+impl RealJob for DubinsJob {
     fn run<T: Real>(&self, ctx: &T::Ctx) -> Result<Out<T>, InputError> {
         let w = to_points::<T>(&self.waypoints, ctx);
         let radius = T::from_rational(&self.radius, ctx);
@@ -904,5 +886,5 @@ pub fn run_dubins(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Render
         radius,
         samples,
     };
-    run_real(&job, scalar, "a Dubins path")
+    run_real(&job, scalar, &needs_real("a Dubins path"))
 }

@@ -1,6 +1,7 @@
 //! `run hermite` and `run hermite-condition`: the JSON shapes of issue 2.
 
 use super::budget::{check_output, check_time, Rates};
+use super::dispatch::{run_field, FieldJob};
 use super::input::{self, fail, InputError, RunError};
 use super::output::Out;
 use super::Rendered;
@@ -59,6 +60,12 @@ fn read_hermite(doc: &Map<String, Value>) -> Result<HermiteInput, InputError> {
     })
 }
 
+impl FieldJob for HermiteInput {
+    fn run<T: Field>(&self, ctx: &T::Ctx) -> Result<Out<T>, InputError> {
+        hermite_in(self, ctx)
+    }
+}
+
 /// Control points of every coordinate in the number type `T`.
 fn hermite_in<T: Field>(data: &HermiteInput, ctx: &T::Ctx) -> Result<Out<T>, InputError> {
     let conv = |v: &[Vec<BigRational>]| -> Vec<Vec<T>> {
@@ -107,19 +114,7 @@ pub fn run_hermite(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rende
         &format!("{m} derivatives in {dims} coordinates at {scalar}"),
     )?;
     check_output(dims * 2.0 * (m + 1.0), "start", "this run")?;
-    let name = scalar.to_string();
-    Ok(match scalar {
-        ScalarKind::F64 => {
-            Rendered::plain(hermite_in::<f64>(&data, &())?.with_field("scalar", Out::Text(name)))
-        }
-        ScalarKind::Rational => Rendered::plain(
-            hermite_in::<BigRational>(&data, &())?.with_field("scalar", Out::Text(name)),
-        ),
-        ScalarKind::Mpfr(bits) => Rendered::certified(
-            hermite_in::<Float>(&data, &bits)?.with_field("scalar", Out::Text(name.clone())),
-            hermite_in::<Float>(&data, &(2 * bits))?.with_field("scalar", Out::Text(name)),
-        ),
-    })
+    run_field(&data, scalar)
 }
 
 /// `run hermite-condition`: κ₂ of the transform or of its binomial part.

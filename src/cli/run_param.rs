@@ -1,6 +1,7 @@
 //! `run marin-1d`, `run natural-spline` and `run marin`: the JSON shapes of issue 5.
 
 use super::budget::{check_output, check_time, Rates};
+use super::dispatch::{run_field, FieldJob};
 use super::input::{self, fail, InputError, RunError};
 use super::output::Out;
 use super::Rendered;
@@ -121,58 +122,57 @@ pub fn run_natural_spline(
         ),
     )?;
     check_output(3.0 * dims * at.len() as f64, "at", "this run")?;
-    fn eval<T: Field>(
-        t: &[BigRational],
-        z: &[Vec<BigRational>],
-        at: &[BigRational],
-        is_point: bool,
-        ctx: &T::Ctx,
-    ) -> Result<Out<T>, InputError> {
-        let conv = |q: &BigRational| T::from_rational(q, ctx);
-        let knots: Vec<T> = t.iter().map(conv).collect();
-        let splines = (0..z[0].len())
-            .map(|c| {
-                NaturalCubicSpline::new(knots.clone(), z.iter().map(|v| conv(&v[c])).collect())
-            })
-            .collect::<Result<Vec<_>, _>>()
-            .map_err(|e| InputError(format!("field \"t\": {e}")))?;
-        let column = |j: usize| -> Out<T> {
-            Out::List(
-                at.iter()
-                    .map(|x| {
-                        let x = conv(x);
-                        let vals: Vec<T> =
-                            splines.iter().map(|s| s.eval_all(&x)[j].clone()).collect();
-                        if is_point {
-                            Out::nums(vals)
-                        } else {
-                            Out::Num(vals.into_iter().next().unwrap_or_else(|| T::zero_in(ctx)))
-                        }
-                    })
-                    .collect(),
-            )
-        };
-        Ok(Out::object(vec![
-            ("values", column(0)),
-            ("first", column(1)),
-            ("second", column(2)),
-        ]))
+    run_field(&NaturalSplineJob { t, z, at, is_point }, scalar)
+}
+
+/// The knots, values (one list per point) and evaluation points of `natural-spline`.
+struct NaturalSplineJob {
+    t: Vec<BigRational>,
+    z: Vec<Vec<BigRational>>,
+    at: Vec<BigRational>,
+    is_point: bool,
+}
+
+impl FieldJob for NaturalSplineJob {
+    fn run<T: Field>(&self, ctx: &T::Ctx) -> Result<Out<T>, InputError> {
+        eval(&self.t, &self.z, &self.at, self.is_point, ctx)
     }
-    let name = scalar.to_string();
-    Ok(match scalar {
-        ScalarKind::F64 => Rendered::plain(
-            eval::<f64>(&t, &z, &at, is_point, &())?.with_field("scalar", Out::Text(name)),
-        ),
-        ScalarKind::Rational => Rendered::plain(
-            eval::<BigRational>(&t, &z, &at, is_point, &())?.with_field("scalar", Out::Text(name)),
-        ),
-        ScalarKind::Mpfr(bits) => Rendered::certified(
-            eval::<Float>(&t, &z, &at, is_point, &bits)?
-                .with_field("scalar", Out::Text(name.clone())),
-            eval::<Float>(&t, &z, &at, is_point, &(2 * bits))?
-                .with_field("scalar", Out::Text(name)),
-        ),
-    })
+}
+
+/// Values, first and second derivatives of the natural spline of each coordinate at `at`.
+fn eval<T: Field>(
+    t: &[BigRational],
+    z: &[Vec<BigRational>],
+    at: &[BigRational],
+    is_point: bool,
+    ctx: &T::Ctx,
+) -> Result<Out<T>, InputError> {
+    let conv = |q: &BigRational| T::from_rational(q, ctx);
+    let knots: Vec<T> = t.iter().map(conv).collect();
+    let splines = (0..z[0].len())
+        .map(|c| NaturalCubicSpline::new(knots.clone(), z.iter().map(|v| conv(&v[c])).collect()))
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(|e| InputError(format!("field \"t\": {e}")))?;
+    let column = |j: usize| -> Out<T> {
+        Out::List(
+            at.iter()
+                .map(|x| {
+                    let x = conv(x);
+                    let vals: Vec<T> = splines.iter().map(|s| s.eval_all(&x)[j].clone()).collect();
+                    if is_point {
+                        Out::nums(vals)
+                    } else {
+                        Out::Num(vals.into_iter().next().unwrap_or_else(|| T::zero_in(ctx)))
+                    }
+                })
+                .collect(),
+        )
+    };
+    Ok(Out::object(vec![
+        ("values", column(0)),
+        ("first", column(1)),
+        ("second", column(2)),
+    ]))
 }
 
 struct MarinInput {

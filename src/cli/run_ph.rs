@@ -1,6 +1,7 @@
 //! `run ph-hermite`, `run phodcos` and `run convergence`: the JSON shapes of issue 3.
 
 use super::budget::{self, check_time, Rates};
+use super::dispatch::{run_real, RealJob};
 use super::input::{self, fail, InputError, RunError};
 use super::output::{flush, largest, noise_level, Out};
 use super::Rendered;
@@ -61,9 +62,13 @@ fn ph_error(e: PhHermiteError) -> InputError {
     InputError(format!("field \"{field}\": {e}"))
 }
 
+/// The refusal of `--scalar rational` for the PH commands.
+const NEEDS_REAL: &str =
+    "option --scalar: PH interpolation takes square roots (Lemma 2); use f64 or mpfr:<bits>";
+
 fn needs_real(scalar: ScalarKind) -> Result<(), InputError> {
     if scalar == ScalarKind::Rational {
-        return fail("option --scalar: PH interpolation takes square roots (Lemma 2); use f64 or mpfr:<bits>");
+        return fail(NEEDS_REAL);
     }
     Ok(())
 }
@@ -105,18 +110,18 @@ pub fn run_ph_hermite(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Re
         vectors.push(input::point::<3>(input::field(doc, name)?, name)?);
     }
     let free = free_parameters(doc)?;
-    needs_real(scalar)?;
-    let name = scalar.to_string();
-    match scalar {
-        ScalarKind::Mpfr(bits) => Ok(Rendered::certified(
-            ph_hermite_in::<Float>(&vectors, &free, &bits)?
-                .with_field("scalar", Out::Text(name.clone())),
-            ph_hermite_in::<Float>(&vectors, &free, &(2 * bits))?
-                .with_field("scalar", Out::Text(name)),
-        )),
-        _ => Ok(Rendered::plain(
-            ph_hermite_in::<f64>(&vectors, &free, &())?.with_field("scalar", Out::Text(name)),
-        )),
+    run_real(&PhHermiteJob { vectors, free }, scalar, NEEDS_REAL)
+}
+
+/// The ten Hermite vectors (in `DATA_FIELDS` order) and the free parameters of `ph-hermite`.
+struct PhHermiteJob {
+    vectors: Vec<[BigRational; 3]>,
+    free: FreeParameters<BigRational>,
+}
+
+impl RealJob for PhHermiteJob {
+    fn run<T: Real>(&self, ctx: &T::Ctx) -> Result<Out<T>, InputError> {
+        ph_hermite_in(&self.vectors, &self.free, ctx)
     }
 }
 
