@@ -50,3 +50,12 @@ pub mod poly;
 pub mod quat;
 pub mod report;
 pub mod scalar;
+
+// The main types of the algorithm layer at the crate root, for library users.
+pub use bspline::cardinal::CardinalBSpline;
+pub use gerbs::{bfbs::Bfbs, path::GerbsPath, Knots};
+pub use hermite::HermiteData;
+pub use param::natural::NaturalCubicSpline;
+pub use ph::hermite::HermiteData as PhHermiteData;
+pub use ph::PhCurve;
+pub use scalar::{Field, Real, ScalarKind};

@@ -8,6 +8,21 @@
 //!   optimal interpolating (Eq. 14) and smoothing (Eq. 15) control points.
 //! - [`bang_bang`]: the minimum-L∞ control of Sec. 4: switching times and amplitude, and the
 //!   trajectory it drives.
+//!
+//! One algorithm, three number types: the Gram entries of B₃‴ (Sec. 5), exact in rationals,
+//! and the same generic code in f64 and MPFR.
+//!
+//! ```
+//! use trajverify::bspline::gram::gram_entries;
+//! use trajverify::scalar::{BigRational, Float};
+//!
+//! let exact: Vec<BigRational> = gram_entries(3, &());
+//! assert_eq!(exact, [20, -15, 6, -1].map(|v| BigRational::from_integer(v.into())));
+//! let fast: Vec<f64> = gram_entries(3, &());
+//! assert!((fast[1] + 15.0).abs() < 1e-12);
+//! let precise: Vec<Float> = gram_entries(3, &200);
+//! assert!((precise[2].clone() - 6u32).abs() < 1e-50);
+//! ```
 
 pub mod bang_bang;
 pub mod cardinal;

@@ -19,6 +19,24 @@
 //! [`path`] builds the local arcs and lines (Eqs. 19–24), Algorithm 1 (tangents and turn
 //! directions) and Algorithm 2 (the blended path); [`dubins`] is the shortest-path baseline of
 //! Fig. 7. Knots use the paper's numbering t_1 … t_{n+2}, stored from index 0.
+//!
+//! The BFBS basis (i = 2) on the knots of Fig. 1 at t = 3/10, exactly and in f64: a partition
+//! of unity with B₃ = 2944/3125 and B₄ = 181/3125.
+//!
+//! ```
+//! use trajverify::gerbs::{basis_derivatives, bfbs::Bfbs, Knots, Side};
+//! use trajverify::scalar::BigRational;
+//!
+//! let q = |n: i64, d: i64| BigRational::new(n.into(), d.into());
+//! let knots = Knots::new([(0, 1), (0, 1), (1, 4), (1, 2), (3, 4), (1, 1), (1, 1)]
+//!     .map(|(n, d)| q(n, d)).to_vec()).unwrap();
+//! let bfbs = Bfbs::uniform(2, 5).unwrap();
+//! let b = basis_derivatives(&knots, &bfbs, &q(3, 10), 0, Side::Right).unwrap();
+//! assert_eq!((b[1][0].clone(), b[2][0].clone()), (q(2944, 3125), q(181, 3125)));
+//! let knots64 = Knots::new(vec![0.0, 0.0, 0.25, 0.5, 0.75, 1.0, 1.0]).unwrap();
+//! let b64 = basis_derivatives(&knots64, &bfbs, &0.3, 0, Side::Right).unwrap();
+//! assert!((b64.iter().map(|d| d[0]).sum::<f64>() - 1.0).abs() < 1e-15);
+//! ```
 
 pub mod bfbs;
 pub mod dubins;

@@ -19,6 +19,28 @@
 //! [`hermite`] builds PH curves from C² and C⁴ Hermite data (Algorithm 1 and its C²
 //! predecessor), [`piecewise`] converts whole curves (Sec. 5E–F), [`symbolic`] derives the
 //! paper's coefficient tables exactly.
+//!
+//! Algorithm 1 on the Hermite data of a straight segment, in f64 and in MPFR: the degree-17 PH
+//! interpolant is the segment itself, of length 1.
+//!
+//! ```
+//! use trajverify::ph::hermite::{interpolate, FreeParameters, HermiteData};
+//! use trajverify::scalar::{Float, Real};
+//!
+//! fn segment_length<T: Real>(ctx: &T::Ctx) -> T {
+//!     let v = |x: i64, y: i64| [T::from_i64(x, ctx), T::from_i64(y, ctx), T::zero_in(ctx)];
+//!     let data = HermiteData {
+//!         p_b: v(0, 0),
+//!         p_e: v(1, 0),
+//!         start: vec![v(1, 0), v(0, 0), v(0, 0), v(0, 0)],
+//!         end: vec![v(1, 0), v(0, 0), v(0, 0), v(0, 0)],
+//!     };
+//!     interpolate(&data, &FreeParameters::zero(4, ctx)).unwrap().arc_length()
+//! }
+//! assert!((segment_length::<f64>(&()) - 1.0).abs() < 1e-13);
+//! let precise: Float = segment_length(&256);
+//! assert!((precise - 1u32).abs() < 1e-60);
+//! ```
 
 pub mod hermite;
 pub mod piecewise;
