@@ -368,6 +368,39 @@ pub fn run_gerbs_basis(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<R
     let knots = knots(doc)?;
     let kind = kind(doc)?;
     let params = basis_params(doc, kind, &nonempty_intervals(&knots))?;
+    let at = evaluation_points(doc, &knots)?;
+    let derivatives = match doc.get("derivatives") {
+        Some(v) => input::count(v, "derivatives", MAX_DERIVATIVES)?,
+        None => 0,
+    };
+    basis_budget(&knots, at.len(), derivatives, kind, scalar)?;
+    let job = BasisJob {
+        knots,
+        params,
+        at,
+        derivatives,
+        side: side(doc)?,
+    };
+    match (&job.params, scalar) {
+        (BasisParams::Bfbs(i), ScalarKind::Rational) => {
+            let bfbs = Bfbs::new(i.clone()).map_err(gerbs_error)?;
+            Ok(Rendered::plain(
+                job.values(&job.knots, &bfbs)
+                    .with_field("scalar", Out::Text("rational".into())),
+            ))
+        }
+        (BasisParams::Erbs { .. }, ScalarKind::Rational) => fail(
+            "option --scalar: the ERBS basis is an integral of exp(…) (quadrature); use f64 or mpfr:<bits>",
+        ),
+        _ => run_real(&job, scalar, &needs_real("the ERBS basis")),
+    }
+}
+
+/// The points `at`, each inside the knots, read exactly.
+fn evaluation_points(
+    doc: &Map<String, Value>,
+    knots: &Knots<BigRational>,
+) -> Result<Vec<BigRational>, InputError> {
     let items = input::array(input::field(doc, "at")?, "at")?;
     if items.len() > MAX_POINTS {
         return fail(format!(
@@ -389,14 +422,21 @@ pub fn run_gerbs_basis(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<R
         }
         at.push(t);
     }
-    let derivatives = match doc.get("derivatives") {
-        Some(v) => input::count(v, "derivatives", MAX_DERIVATIVES)?,
-        None => 0,
-    };
+    Ok(at)
+}
+
+/// The work budget of `gerbs-basis`: `points` points, every basis function, `derivatives`.
+fn basis_budget(
+    knots: &Knots<BigRational>,
+    points: usize,
+    derivatives: usize,
+    kind: Kind,
+    scalar: ScalarKind,
+) -> Result<(), InputError> {
     let n = knots.as_slice().len() as f64 - 2.0;
-    let points = at.len() as f64;
+    let count = points as f64;
     let per_point = 1.0 + derivatives as f64 / 10.0;
-    budget::check_output(points * n * (derivatives as f64 + 1.0), "at", "this run")?;
+    budget::check_output(count * n * (derivatives as f64 + 1.0), "at", "this run")?;
     // Measured: BFBS with n = 100, 1000 points, d = 2 in 0.1 s (f64) and 0.36 s (mpfr:128),
     // d = 10 in 1.9 s (rationals); ERBS in MPFR about 8 ms per point at 128 bits, nearly
     // independent of n, and growing as p² beyond mpfr_factor (the tanh–sinh level).
@@ -406,48 +446,26 @@ pub fn run_gerbs_basis(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<R
             mpfr256: 6e-6,
             rational: 1.2e-5,
         }
-        .seconds(points * (n + 10.0) * per_point, scalar),
-        Kind::Erbs => Rates {
-            f64: 1.5e-6,
-            mpfr256: 0.06 * erbs_extra(scalar) * (1.0 + n / 100.0),
-            rational: 0.0,
+        .seconds(count * (n + 10.0) * per_point, scalar),
+        Kind::Erbs => {
+            let per_basis = if scalar == ScalarKind::F64 {
+                n + 10.0
+            } else {
+                1.0
+            };
+            Rates {
+                f64: 1.5e-6,
+                mpfr256: 0.06 * erbs_extra(scalar) * (1.0 + n / 100.0),
+                rational: 0.0,
+            }
+            .seconds(count * per_point * per_basis, scalar)
         }
-        .seconds(
-            points
-                * per_point
-                * if scalar == ScalarKind::F64 {
-                    n + 10.0
-                } else {
-                    1.0
-                },
-            scalar,
-        ),
     };
     check_time(
         seconds,
         "at",
-        &format!("{} points on {n} basis functions at {scalar}", at.len()),
-    )?;
-    let job = BasisJob {
-        knots,
-        params,
-        at,
-        derivatives,
-        side: side(doc)?,
-    };
-    match (&job.params, scalar) {
-        (BasisParams::Bfbs(i), ScalarKind::Rational) => {
-            let bfbs = Bfbs::new(i.clone()).map_err(gerbs_error)?;
-            Ok(Rendered::plain(
-                job.values(&job.knots, &bfbs)
-                    .with_field("scalar", Out::Text("rational".into())),
-            ))
-        }
-        (BasisParams::Erbs { .. }, ScalarKind::Rational) => fail(
-            "option --scalar: the ERBS basis is an integral of exp(…) (quadrature); use f64 or mpfr:<bits>",
-        ),
-        _ => run_real(&job, scalar, &needs_real("the ERBS basis")),
-    }
+        &format!("{points} points on {n} basis functions at {scalar}"),
+    )
 }
 
 /// Waypoints [[x, y], …], read exactly and checked for Algorithm 1 (at least `min`).
@@ -650,12 +668,32 @@ pub fn run_gerbs_path(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Re
         ],
         Some(ArcConvention::TurnDirection),
     )?;
+    path_budget(waypoints.len(), samples, kind, scalar)?;
+    let job = PathJob {
+        waypoints,
+        radius,
+        theta_o,
+        line_length,
+        convention,
+        params,
+        samples,
+    };
+    run_real(&job, scalar, &needs_real("a GERBS path"))
+}
+
+/// The work budget of `gerbs-path`: `waypoints` waypoints, `samples` samples.
+fn path_budget(
+    waypoints: usize,
+    samples: usize,
+    kind: Kind,
+    scalar: ScalarKind,
+) -> Result<(), InputError> {
     // A path point blends every local curve (about W operations), the length integrates each
     // of the W − 1 intervals, and the ERBS in MPFR integrates again at each node. Measured
     // (seconds): BFBS f64 W = 50, S = 101 in 0.05 and W = 1000 in 11; mpfr:128 W = 50 in 2.8
     // and S = 10001 in 1.4; mpfr:256 W = 4 in 0.5; ERBS mpfr:64 W = 5, S = 10001 in 23 and
     // W = 50, S = 101 in 16.
-    let (w, s) = (waypoints.len() as f64, samples as f64);
+    let (w, s) = (waypoints as f64, samples as f64);
     let seconds = match (kind, scalar) {
         (Kind::Bfbs, ScalarKind::Mpfr(_)) => Rates {
             f64: 0.0,
@@ -677,20 +715,10 @@ pub fn run_gerbs_path(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Re
         "waypoints",
         &format!(
             "a path through {} waypoints with {samples} samples at {scalar}",
-            waypoints.len()
+            waypoints
         ),
     )?;
-    budget::check_output(4.0 * s + 5.0 * w, "samples", "this run")?;
-    let job = PathJob {
-        waypoints,
-        radius,
-        theta_o,
-        line_length,
-        convention,
-        params,
-        samples,
-    };
-    run_real(&job, scalar, &needs_real("a GERBS path"))
+    budget::check_output(4.0 * s + 5.0 * w, "samples", "this run")
 }
 
 /// The ERBS quadrature's extra cost in MPFR beyond [`budget::mpfr_factor`]: the tanh–sinh

@@ -346,6 +346,70 @@ pub fn run_phodcos(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rende
     }
 }
 
+/// The conversion error of `curve` on `segments` uniform segments, printed (certified digits
+/// in MPFR, shortest decimal in f64), with the values at the two precisions (twice the f64
+/// value in f64) for the ratios; 0 at both when the error is noise at both precisions.
+fn level_error(
+    curve: &ExprCurve,
+    a: &BigRational,
+    b: &BigRational,
+    segments: usize,
+    free: &FreeParameters<BigRational>,
+    scalar: ScalarKind,
+) -> Result<(String, (Float, Float)), InputError> {
+    Ok(match scalar {
+        ScalarKind::Mpfr(bits) => {
+            let c = curve.compile::<Float>(&bits);
+            let scale = check_finite(
+                &c,
+                &Float::from_rational(a, &bits),
+                &Float::from_rational(b, &bits),
+                segments,
+            )?;
+            let e = certified_error(
+                |p| curve.compile::<Float>(&p),
+                a,
+                b,
+                segments,
+                4,
+                free,
+                bits,
+                2 * bits,
+            )
+            .map_err(ph_error)?;
+            let Some((text, zero)) = certified_error_text(&e.lo, &e.hi, &scale) else {
+                return fail(format!("output \"rows\": the error on {segments} segments has no digit that {bits} and {} bits agree on; raise the precision", 2 * bits));
+            };
+            let pair = if zero {
+                (Float::new(bits), Float::new(2 * bits))
+            } else {
+                (e.lo, e.hi)
+            };
+            (text, pair)
+        }
+        _ => {
+            let c = curve.compile::<f64>(&());
+            let (fa, fb) = (f64::from_rational(a, &()), f64::from_rational(b, &()));
+            check_finite(&c, &fa, &fb, segments)?;
+            let pw = convert(
+                &c,
+                &fa,
+                &fb,
+                segments,
+                4,
+                &free.map(|q| f64::from_rational(q, &())),
+                true,
+            )
+            .map_err(ph_error)?;
+            let e = conversion_error(&c, &pw, DEFAULT_SAMPLES).max;
+            (
+                crate::scalar::float_text(e),
+                (Float::with_val(53, e), Float::with_val(53, e)),
+            )
+        }
+    })
+}
+
 /// `run convergence`: the error on 2ⁿ segments for each level, with ratios and orders.
 pub fn run_convergence(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, RunError> {
     input::only_fields(doc, &["curve", "interval", "levels", "free"])?;
@@ -378,57 +442,7 @@ pub fn run_convergence(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<R
     let mut previous: Option<(Float, Float)> = None;
     for &n in &levels {
         let segments = 1usize << n;
-        let (text, pair) = match scalar {
-            ScalarKind::Mpfr(bits) => {
-                let c = curve.curve.compile::<Float>(&bits);
-                let scale = check_finite(
-                    &c,
-                    &Float::from_rational(&a, &bits),
-                    &Float::from_rational(&b, &bits),
-                    segments,
-                )?;
-                let e = certified_error(
-                    |p| curve.curve.compile::<Float>(&p),
-                    &a,
-                    &b,
-                    segments,
-                    4,
-                    &free,
-                    bits,
-                    2 * bits,
-                )
-                .map_err(ph_error)?;
-                let Some((text, zero)) = certified_error_text(&e.lo, &e.hi, &scale) else {
-                    return fail(format!("output \"rows\": the error on {segments} segments has no digit that {bits} and {} bits agree on; raise the precision", 2 * bits));
-                };
-                let pair = if zero {
-                    (Float::new(bits), Float::new(2 * bits))
-                } else {
-                    (e.lo, e.hi)
-                };
-                (text, pair)
-            }
-            _ => {
-                let c = curve.curve.compile::<f64>(&());
-                let (fa, fb) = (f64::from_rational(&a, &()), f64::from_rational(&b, &()));
-                check_finite(&c, &fa, &fb, segments)?;
-                let pw = convert(
-                    &c,
-                    &fa,
-                    &fb,
-                    segments,
-                    4,
-                    &free.map(|q| f64::from_rational(q, &())),
-                    true,
-                )
-                .map_err(ph_error)?;
-                let e = conversion_error(&c, &pw, DEFAULT_SAMPLES).max;
-                (
-                    crate::scalar::float_text(e),
-                    (Float::with_val(53, e), Float::with_val(53, e)),
-                )
-            }
-        };
+        let (text, pair) = level_error(&curve.curve, &a, &b, segments, &free, scalar)?;
         let (ratio, order) = match &previous {
             // A zero error (a curve the method reproduces exactly) has no ratio.
             Some((plo, phi))
