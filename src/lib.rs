@@ -47,6 +47,7 @@ pub mod linalg;
 pub mod param;
 pub mod ph;
 pub mod poly;
+pub mod quadrature;
 pub mod quat;
 pub mod report;
 pub mod scalar;

@@ -42,7 +42,10 @@ pub mod bfbs;
 pub mod dubins;
 pub mod erbs;
 pub mod path;
-pub mod quadrature;
+/// The quadrature rules the ERBS uses (the building block [`crate::quadrature`]).
+pub mod quadrature {
+    pub use crate::quadrature::*;
+}
 
 use crate::curve::taylor::Taylor;
 use crate::scalar::Field;

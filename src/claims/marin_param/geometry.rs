@@ -8,6 +8,7 @@ use crate::param::descent::{descend, polish};
 use crate::param::natural::NaturalCubicSpline;
 use crate::param::objective::{chord_length_spacing, knots_from_spacing, Objective};
 use crate::param::one_d::minimizing_parametrization;
+use crate::quadrature::gauss_legendre4;
 use crate::report::plot::{self, Corner, Panel, Series, Style};
 use crate::report::table;
 use crate::scalar::certify::format_float_digits;
@@ -15,31 +16,12 @@ use crate::scalar::{Field, Float};
 
 const BITS: u32 = 128;
 
-/// 4-point Gauss–Legendre nodes and weights on [0, 1] (exact for polynomials of degree ≤ 7).
-fn gauss4() -> [(Float, Float); 4] {
-    let f = |x: f64| Float::with_val(BITS, x);
-    let six_fifths = (f(6.0) / 5u32).sqrt();
-    let (a, b) = (
-        ((f(3.0) - f(2.0) * &six_fifths) / 7u32).sqrt(),
-        ((f(3.0) + f(2.0) * &six_fifths) / 7u32).sqrt(),
-    );
-    let w30 = f(30.0).sqrt();
-    let (wa, wb) = ((f(18.0) + &w30) / 36u32, (f(18.0) - &w30) / 36u32);
-    let half = f(0.5);
-    [
-        (half.clone() - a.clone() / 2u32, wa.clone() / 2u32),
-        (half.clone() + a / 2u32, wa / 2u32),
-        (half.clone() - b.clone() / 2u32, wb.clone() / 2u32),
-        (half + b / 2u32, wb / 2u32),
-    ]
-}
-
 /// (‖θ − φ‖²_H¹, ∫θ''²) for one component on knots t: φ the piecewise linear interpolant.
 /// On each interval e = θ − φ is a cubic, so e² (degree 6) and e'² (degree 4) integrate exactly
 /// with 4 Gauss points.
 fn h1_and_energy(t: &[Float], z: &[Float]) -> Option<(Float, Float)> {
     let s = NaturalCubicSpline::new(t.to_vec(), z.to_vec()).ok()?;
-    let nodes = gauss4();
+    let nodes = gauss_legendre4::<Float>(&BITS);
     let mut h1 = Float::with_val(BITS, 0);
     for i in 1..t.len() {
         let h = t[i].clone() - &t[i - 1];
