@@ -8,7 +8,8 @@
 //! is exact. On [tᵢ₋₁, tᵢ], θ″ is linear between mᵢ₋₁ and mᵢ, so
 //! ∫θ″² = Σᵢ hᵢ(mᵢ₋₁² + mᵢ₋₁mᵢ + mᵢ²)/3 = zᵀQᵀM⁻¹Qz (Eq. 31 for one component).
 
-use crate::scalar::Field;
+use crate::quadrature::gauss_legendre4;
+use crate::scalar::{Field, Real};
 
 /// Why a spline cannot be built.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
@@ -114,6 +115,31 @@ impl<T: Field> NaturalCubicSpline<T> {
     }
 }
 
+impl<T: Real> NaturalCubicSpline<T> {
+    /// ‖θ − φ‖²_H¹ = ∫ (θ − φ)² + (θ′ − φ′)² over [t₀, t_N], with φ the piecewise-linear
+    /// interpolant of the same data (paper 004, Sec. 1 (i), bounds it by ∫θ″²). On each
+    /// interval θ − φ is a cubic, so both integrands (degrees 6 and 4) are integrated exactly
+    /// by the 4-point Gauss–Legendre rule.
+    pub fn h1_distance_to_polyline_squared(&self) -> T {
+        let (t, z) = (&self.knots, &self.values);
+        let ctx = z[0].ctx();
+        let nodes = gauss_legendre4::<T>(&ctx);
+        let mut h1 = T::zero_in(&ctx);
+        for i in 1..t.len() {
+            let h = t[i].clone() - &t[i - 1];
+            let slope = (z[i].clone() - &z[i - 1]) / &h;
+            for (x, w) in &nodes {
+                let at = t[i - 1].clone() + &(h.clone() * x);
+                let [v, d, _] = self.eval_all(&at);
+                let e = v - &(z[i - 1].clone() + &(slope.clone() * &(at - &t[i - 1])));
+                let de = d - &slope;
+                h1 += &((e.clone() * &e + &(de.clone() * &de)) * w * &h);
+            }
+        }
+        h1
+    }
+}
+
 /// Solve M·m = Q·z for the interior second derivatives (Thomas algorithm); m₀ = m_N = 0.
 fn second_derivatives<T: Field>(t: &[T], z: &[T]) -> Vec<T> {
     let n = t.len() - 1;
@@ -177,6 +203,20 @@ mod tests {
         .unwrap();
         assert_eq!(lin.bending_energy(), q(0, 1));
         assert_eq!(lin.eval_all(&q(1, 2)), [q(1, 1), q(2, 1), q(0, 1)]);
+    }
+
+    #[test]
+    fn h1_distance_vanishes_on_a_line_and_is_bounded_by_the_energy() {
+        use crate::scalar::Float;
+        let line = NaturalCubicSpline::new(vec![0.0, 1.0, 3.0], vec![1.0, 3.0, 7.0]).unwrap();
+        assert!(line.h1_distance_to_polyline_squared().abs() < 1e-28);
+        let f = |x: f64| Float::with_val(128, x);
+        let bent =
+            NaturalCubicSpline::new(vec![f(0.0), f(1.0), f(2.0)], vec![f(0.0), f(1.0), f(0.0)])
+                .unwrap();
+        let h1 = bent.h1_distance_to_polyline_squared();
+        // Positive, and below ∫θ″² = 6 (Sec. 1 (i) of paper 004 on knots of spacing ≤ 1).
+        assert!(h1 > 0 && h1 < bent.bending_energy(), "{h1}");
     }
 
     #[test]

@@ -8,7 +8,6 @@ use crate::param::descent::{descend, polish};
 use crate::param::natural::NaturalCubicSpline;
 use crate::param::objective::{chord_length_spacing, knots_from_spacing, Objective};
 use crate::param::one_d::minimizing_parametrization;
-use crate::quadrature::gauss_legendre4;
 use crate::report::plot::{self, Corner, Panel, Series, Style};
 use crate::report::table;
 use crate::scalar::certify::format_float_digits;
@@ -17,24 +16,9 @@ use crate::scalar::{Field, Float};
 const BITS: u32 = 128;
 
 /// (‖θ − φ‖²_H¹, ∫θ''²) for one component on knots t: φ the piecewise linear interpolant.
-/// On each interval e = θ − φ is a cubic, so e² (degree 6) and e'² (degree 4) integrate exactly
-/// with 4 Gauss points.
 fn h1_and_energy(t: &[Float], z: &[Float]) -> Option<(Float, Float)> {
     let s = NaturalCubicSpline::new(t.to_vec(), z.to_vec()).ok()?;
-    let nodes = gauss_legendre4::<Float>(&BITS);
-    let mut h1 = Float::with_val(BITS, 0);
-    for i in 1..t.len() {
-        let h = t[i].clone() - &t[i - 1];
-        let slope = (z[i].clone() - &z[i - 1]) / &h;
-        for (x, w) in &nodes {
-            let at = t[i - 1].clone() + h.clone() * x;
-            let [v, d, _] = s.eval_all(&at);
-            let e = v - (z[i - 1].clone() + slope.clone() * (at - &t[i - 1]));
-            let de = d - &slope;
-            h1 += (e.square() + de.square()) * w * &h;
-        }
-    }
-    Some((h1, s.bending_energy()))
+    Some((s.h1_distance_to_polyline_squared(), s.bending_energy()))
 }
 
 fn floats(v: &[f64]) -> Vec<Float> {
