@@ -157,61 +157,12 @@ pub fn run_condition(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Ren
         Some(k) if k.is_infinite() => "nalgebra's f64 SVD returns σmin = 0",
         Some(_) => "nalgebra's f64 SVD of the correctly rounded matrix",
     };
-    let jacobi_failed = RunError::internal;
-    // `note` says why an f64 value is absent: f64 itself cannot resolve the matrix, which is
-    // a finding about f64 (like nalgebra's null above), not a failure of the run.
-    let (value, digits, scalar_name, note): (Option<String>, u32, String, Option<String>) =
-        match scalar {
-            ScalarKind::Rational => {
-                return fail("option --scalar: rational cannot take the square roots of an SVD; use f64 or mpfr:<bits>");
-            }
-            ScalarKind::Mpfr(bits) => {
-                let (c, _): (Certified, Float) =
-                    condition::certified(m, &t0, &t1, kind, bits).map_err(jacobi_failed)?;
-                if c.digits == 0 {
-                    return fail(format!(
-                        "output \"condition_number\": no digit agrees between {bits} and {} bits; raise the precision",
-                        2 * bits
-                    ));
-                }
-                (Some(c.text), c.digits, format!("mpfr:{bits}"), None)
-            }
-            ScalarKind::F64 => {
-                let Some(k) = f64_matrix_condition(m, &t0, &t1, kind) else {
-                    return fail(format!(
-                        "field \"derivatives\": the factorials n!/(n−j)! of {m} derivatives overflow f64; use --scalar mpfr:<bits>"
-                    ));
-                };
-                match k {
-                    Ok(k) if k.is_finite() => {
-                        // Digits of the f64 result that a certified MPFR value confirms.
-                        let (exact, reference_value) =
-                            condition::certified(m, &t0, &t1, kind, 256).map_err(jacobi_failed)?;
-                        let confirmed = correct_digits(k, &reference_value).min(exact.digits);
-                        (
-                            Some(crate::scalar::float_text(k)),
-                            confirmed,
-                            "f64".into(),
-                            None,
-                        )
-                    }
-                    Ok(_) => (
-                        None,
-                        0,
-                        "f64".into(),
-                        Some("our f64 Jacobi finds σmin = 0".to_string()),
-                    ),
-                    Err(e) => (
-                        None,
-                        0,
-                        "f64".into(),
-                        Some(format!(
-                            "our f64 Jacobi: {e}: f64 cannot resolve this matrix"
-                        )),
-                    ),
-                }
-            }
-        };
+    let ConditionValue {
+        value,
+        digits,
+        scalar_name,
+        note,
+    } = condition_value(m, &t0, &t1, kind, scalar)?;
     let mut out: Out<f64> = Out::object(vec![
         ("condition_number", value.map_or(Out::Null, Out::Text)),
         ("certified_digits", Out::Int(digits as i64)),
@@ -224,6 +175,86 @@ pub fn run_condition(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Ren
         out = out.with_field("note", Out::Text(note));
     }
     Ok(Rendered::plain(out))
+}
+
+/// κ₂ as `run hermite-condition` prints it in the chosen number type.
+struct ConditionValue {
+    /// The value (its certified digits in MPFR), or `None` when f64 cannot resolve the matrix.
+    value: Option<String>,
+    /// Digits certified by two MPFR precisions (in f64: confirmed by mpfr:256).
+    digits: u32,
+    scalar_name: String,
+    /// Why an f64 value is absent: f64 itself cannot resolve the matrix, which is a finding
+    /// about f64 (like nalgebra's null), not a failure of the run.
+    note: Option<String>,
+}
+
+/// κ₂ of the transform for m derivatives on [t0, t1] in `scalar`.
+fn condition_value(
+    m: usize,
+    t0: &BigRational,
+    t1: &BigRational,
+    kind: TransformKind,
+    scalar: ScalarKind,
+) -> Result<ConditionValue, RunError> {
+    let jacobi_failed = RunError::internal;
+    let (value, digits, scalar_name, note) = match scalar {
+        ScalarKind::Rational => {
+            return fail("option --scalar: rational cannot take the square roots of an SVD; use f64 or mpfr:<bits>");
+        }
+        ScalarKind::Mpfr(bits) => {
+            let (c, _): (Certified, Float) =
+                condition::certified(m, t0, t1, kind, bits).map_err(jacobi_failed)?;
+            if c.digits == 0 {
+                return fail(format!(
+                        "output \"condition_number\": no digit agrees between {bits} and {} bits; raise the precision",
+                        2 * bits
+                    ));
+            }
+            (Some(c.text), c.digits, format!("mpfr:{bits}"), None)
+        }
+        ScalarKind::F64 => {
+            let Some(k) = f64_matrix_condition(m, t0, t1, kind) else {
+                return fail(format!(
+                        "field \"derivatives\": the factorials n!/(n−j)! of {m} derivatives overflow f64; use --scalar mpfr:<bits>"
+                    ));
+            };
+            match k {
+                Ok(k) if k.is_finite() => {
+                    // Digits of the f64 result that a certified MPFR value confirms.
+                    let (exact, reference_value) =
+                        condition::certified(m, t0, t1, kind, 256).map_err(jacobi_failed)?;
+                    let confirmed = correct_digits(k, &reference_value).min(exact.digits);
+                    (
+                        Some(crate::scalar::float_text(k)),
+                        confirmed,
+                        "f64".into(),
+                        None,
+                    )
+                }
+                Ok(_) => (
+                    None,
+                    0,
+                    "f64".into(),
+                    Some("our f64 Jacobi finds σmin = 0".to_string()),
+                ),
+                Err(e) => (
+                    None,
+                    0,
+                    "f64".into(),
+                    Some(format!(
+                        "our f64 Jacobi: {e}: f64 cannot resolve this matrix"
+                    )),
+                ),
+            }
+        }
+    };
+    Ok(ConditionValue {
+        value,
+        digits,
+        scalar_name,
+        note,
+    })
 }
 
 /// Our generic Jacobi in f64 on the f64 matrix, or `None` when an entry is not finite.
