@@ -57,6 +57,19 @@ impl Rates {
     }
 }
 
+impl Rates {
+    /// [`check_time`] of `units` of work in `scalar`.
+    pub fn check(
+        &self,
+        units: f64,
+        scalar: ScalarKind,
+        field: &str,
+        what: &str,
+    ) -> Result<(), InputError> {
+        check_time(self.seconds(units, scalar), field, what)
+    }
+}
+
 /// Refuse a run whose estimate exceeds the budget, naming `field` (the size that drives the
 /// cost) and describing the run as `what` ("4096 segments at mpfr:1024").
 pub fn check_time(seconds: f64, field: &str, what: &str) -> Result<(), InputError> {

@@ -148,6 +148,24 @@ pub fn render_certified(lo: &Out<Float>, hi: &Out<Float>, path: &str) -> Result<
     })
 }
 
+/// The digits `a` (at p bits) and `b` (at 2p bits) agree on; with `scales` (the scales of
+/// the quantities each was computed from), "0" when they agree on none but both lie below
+/// [`noise_level`] of their scale (see [`Out::MaybeZero`]); the flag says which. `None`: no
+/// digit is certified.
+pub fn agreed_text(
+    a: &Float,
+    b: &Float,
+    scales: Option<(&Float, &Float)>,
+) -> Option<(String, bool)> {
+    let c = certify(a, b);
+    if c.digits > 0 || (a.is_zero() && b.is_zero()) {
+        return Some((c.text, false));
+    }
+    let (sa, sb) = scales?;
+    let noise = a.clone().abs() < noise_level(sa) && b.clone().abs() < noise_level(sb);
+    noise.then(|| ("0".to_string(), true))
+}
+
 /// One number with the digits `lo` and `hi` agree on; with `scales`, a value that is noise
 /// at both precisions is 0 (see [`Out::MaybeZero`]).
 fn certified_number(
@@ -164,14 +182,8 @@ fn certified_number(
             &format!("mpfr:{}", bad.prec()),
         ));
     }
-    let c = certify(a, b);
-    if c.digits > 0 || (a.is_zero() && b.is_zero()) {
-        return Ok(Value::String(c.text));
-    }
-    if let Some((sa, sb)) = scales {
-        if a.clone().abs() < noise_level(sa) && b.clone().abs() < noise_level(sb) {
-            return Ok(Value::String("0".into()));
-        }
+    if let Some((text, _)) = agreed_text(a, b, scales) {
+        return Ok(Value::String(text));
     }
     Err(RunError::Input(format!(
         "output \"{path}\": no digit agrees between {} and {} bits ({} vs {}); raise the precision",

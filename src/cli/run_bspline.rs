@@ -1,6 +1,6 @@
 //! `run bspline-basis`, `bspline-gram`, `spline-fit` and `bang-bang`: the JSON shapes of issue 4.
 
-use super::budget::{check_time, Rates};
+use super::budget::Rates;
 use super::dispatch::{run_field, FieldJob};
 use super::input::{self, fail, InputError, RunError};
 use super::output::Out;
@@ -191,8 +191,9 @@ pub fn run_fit(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered,
     };
     let power = if scalar == ScalarKind::Rational { 4 } else { 3 };
     let units = dims * size.powi(power);
-    check_time(
-        rates.seconds(units, scalar),
+    rates.check(
+        units,
+        scalar,
         "controls",
         &format!(
             "a fit with {} controls and {} data in {dims} coordinates at {scalar}",

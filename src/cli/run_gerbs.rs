@@ -899,8 +899,9 @@ pub fn run_dubins(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Render
         mpfr256: 1e-4,
         rational: 0.0,
     };
-    check_time(
-        rates.seconds(units, scalar),
+    rates.check(
+        units,
+        scalar,
         "waypoints",
         &format!(
             "{} legs with {samples} samples at {scalar}",

@@ -1,6 +1,6 @@
 //! `run hermite` and `run hermite-condition`: the JSON shapes of issue 2.
 
-use super::budget::{check_output, check_time, Rates};
+use super::budget::{check_output, Rates};
 use super::dispatch::{run_field, FieldJob};
 use super::input::{self, fail, InputError, RunError};
 use super::output::Out;
@@ -108,8 +108,9 @@ pub fn run_hermite(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rende
         rational: 7e-9,
     };
     let units = dims * (m + 1.0).powf(3.5);
-    check_time(
-        rates.seconds(units, scalar),
+    rates.check(
+        units,
+        scalar,
         "start",
         &format!("{m} derivatives in {dims} coordinates at {scalar}"),
     )?;
@@ -135,8 +136,9 @@ pub fn run_condition(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Ren
         mpfr256: 5e-7,
         rational: 0.0,
     };
-    check_time(
-        rates.seconds(units, scalar),
+    rates.check(
+        units,
+        scalar,
         "derivatives",
         &format!("κ₂ for {m} derivatives at {scalar}"),
     )?;

@@ -1,6 +1,6 @@
 //! `run marin-1d`, `run natural-spline` and `run marin`: the JSON shapes of issue 5.
 
-use super::budget::{check_output, check_time, Rates};
+use super::budget::{check_output, Rates};
 use super::dispatch::{run_field, FieldJob};
 use super::input::{self, fail, InputError, RunError};
 use super::output::Out;
@@ -47,8 +47,9 @@ pub fn run_marin_1d(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rend
         mpfr256: 2e-3 * extra_bits,
         rational: 1e-6,
     };
-    check_time(
-        rates.seconds(n.powf(1.2), scalar),
+    rates.check(
+        n.powf(1.2),
+        scalar,
         "z",
         &format!("{} ordinates at {scalar}", z.len()),
     )?;
@@ -112,8 +113,9 @@ pub fn run_natural_spline(
         mpfr256: 4e-5,
         rational: 4.5e-6 * knots_n,
     };
-    check_time(
-        rates.seconds(units, scalar),
+    rates.check(
+        units,
+        scalar,
         "t",
         &format!(
             "a spline on {} knots evaluated at {} points at {scalar}",
@@ -250,8 +252,9 @@ pub fn run_marin(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendere
             rational: 0.0,
         },
     };
-    check_time(
-        rates.seconds(units, scalar),
+    rates.check(
+        units,
+        scalar,
         "points",
         &format!(
             "{} points in {} components at {scalar}",

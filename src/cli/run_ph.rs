@@ -1,9 +1,9 @@
 //! `run ph-hermite`, `run phodcos` and `run convergence`: the JSON shapes of issue 3.
 
-use super::budget::{self, check_time, Rates};
+use super::budget::{self, Rates};
 use super::dispatch::{run_real, RealJob};
 use super::input::{self, fail, InputError, RunError};
-use super::output::{flush, largest, noise_level, Out};
+use super::output::{agreed_text, flush, largest, noise_level, Out};
 use super::Rendered;
 use crate::curve::{Curve, ExprCurve};
 use crate::ph::hermite::{interpolate, FreeParameters, HermiteData, PhHermiteError};
@@ -196,20 +196,6 @@ fn check_finite<T: Real, C: Curve<T>>(
     Ok(scale)
 }
 
-/// Two values of a conversion error at p and 2p bits, certified; when they agree on no
-/// digit but both are below [`noise_level`] of the curve's scale, the error is 0 to the
-/// precision (a straight line is converted exactly, and its computed error is noise of
-/// about 2^-p), as [`Out::MaybeZero`] prints it. `None`: no digit is certified.
-fn certified_error_text(lo: &Float, hi: &Float, scale: &Float) -> Option<(String, bool)> {
-    let c = crate::scalar::certify::certify(lo, hi);
-    if c.digits > 0 || (lo.is_zero() && hi.is_zero()) {
-        return Some((c.text, false));
-    }
-    let hi_scale = Float::with_val(hi.prec(), scale);
-    let noise = lo.clone().abs() < noise_level(scale) && hi.clone().abs() < noise_level(&hi_scale);
-    noise.then(|| ("0".to_string(), true))
-}
-
 /// What `run phodcos` asks for.
 struct PhodcosInput {
     curve: ExprCurve,
@@ -313,8 +299,9 @@ pub fn run_phodcos(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rende
         mpfr256: 1.6e-3,
         rational: 0.0,
     };
-    check_time(
-        rates.seconds(units, scalar),
+    rates.check(
+        units,
+        scalar,
         field,
         &format!("{worst} segments at {scalar}"),
     )?;
@@ -377,7 +364,10 @@ fn level_error(
                 2 * bits,
             )
             .map_err(ph_error)?;
-            let Some((text, zero)) = certified_error_text(&e.lo, &e.hi, &scale) else {
+            // A straight line is converted exactly: its computed error is noise of about 2^-p,
+            // printed as 0 (Out::MaybeZero's rule) rather than refused.
+            let hi_scale = Float::with_val(2 * bits, &scale);
+            let Some((text, zero)) = agreed_text(&e.lo, &e.hi, Some((&scale, &hi_scale))) else {
                 return fail(format!("output \"rows\": the error on {segments} segments has no digit that {bits} and {} bits agree on; raise the precision", 2 * bits));
             };
             let pair = if zero {
@@ -433,8 +423,9 @@ pub fn run_convergence(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<R
         mpfr256: 5e-4,
         rational: 0.0,
     };
-    check_time(
-        rates.seconds(units, scalar),
+    rates.check(
+        units,
+        scalar,
         "levels",
         &format!("{segments} segments over the levels at {scalar}"),
     )?;
