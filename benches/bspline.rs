@@ -4,8 +4,8 @@
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use std::hint::black_box;
 use std::time::Duration;
-use trajverify::bspline::fit::SplineSpace;
-use trajverify::bspline::gram::gram_entries;
+use trajverify::algo::bspline::fit::SplineSpace;
+use trajverify::algo::bspline::gram::gram_entries;
 use trajverify::scalar::{BigRational, Field, Float};
 
 fn gram(c: &mut Criterion) {

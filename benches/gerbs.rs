@@ -6,11 +6,11 @@
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use std::hint::black_box;
 use std::time::Duration;
-use trajverify::gerbs::bfbs::Bfbs;
-use trajverify::gerbs::erbs::{CentreReading, Erbs, ErbsParams};
-use trajverify::gerbs::path::{ArcConvention, GerbsPath, PathSpec};
-use trajverify::gerbs::quadrature::default_tolerance;
-use trajverify::gerbs::{Knots, Side};
+use trajverify::algo::gerbs::bfbs::Bfbs;
+use trajverify::algo::gerbs::erbs::{CentreReading, Erbs, ErbsParams};
+use trajverify::algo::gerbs::path::{ArcConvention, GerbsPath, PathSpec};
+use trajverify::algo::gerbs::quadrature::default_tolerance;
+use trajverify::algo::gerbs::{Knots, Side};
 use trajverify::scalar::{Float, Real};
 
 /// The report's waypoints, R = 80, θ_o = π/8.

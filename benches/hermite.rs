@@ -5,8 +5,8 @@
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use std::hint::black_box;
 use std::time::Duration;
-use trajverify::hermite::{condition, HermiteData, TransformKind};
-use trajverify::linalg::reference;
+use trajverify::algo::hermite::{condition, HermiteData, TransformKind};
+use trajverify::numeric::linalg::reference;
 use trajverify::scalar::{BigRational, Field, Float};
 
 /// Data with m derivatives on [0, 1]: x₀⁽ʲ⁾ = j + 1, x₁⁽ʲ⁾ = −(j + 2)/3 (exact in every type).
@@ -55,7 +55,7 @@ fn condition_number(c: &mut Criterion) {
             BigRational::from_integer(0.into()),
             BigRational::from_integer(1.into()),
         );
-        let a = trajverify::hermite::transform_matrix(m, &t0, &t1, TransformKind::Transform)
+        let a = trajverify::algo::hermite::transform_matrix(m, &t0, &t1, TransformKind::Transform)
             .map(|q| q.to_f64());
         g.bench_function(BenchmarkId::new("f64_nalgebra_full", m), |b| {
             b.iter(|| reference::condition_number(black_box(&a)))

@@ -4,9 +4,9 @@
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use std::hint::black_box;
 use std::time::Duration;
-use trajverify::param::gradient::gradient;
-use trajverify::param::objective::{objective, Objective};
-use trajverify::param::one_d::minimizing_parametrization;
+use trajverify::algo::param::gradient::gradient;
+use trajverify::algo::param::objective::{objective, Objective};
+use trajverify::algo::param::one_d::minimizing_parametrization;
 use trajverify::scalar::{Field, Float};
 
 /// A wiggly plane curve sampled at N+1 points, uniform spacing.

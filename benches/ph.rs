@@ -6,9 +6,9 @@
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use std::hint::black_box;
 use std::time::Duration;
+use trajverify::algo::ph::hermite::{interpolate, FreeParameters, HermiteData};
+use trajverify::algo::ph::piecewise::segment_jet;
 use trajverify::curve::{Curve, ExprCurve};
-use trajverify::ph::hermite::{interpolate, FreeParameters, HermiteData};
-use trajverify::ph::piecewise::segment_jet;
 use trajverify::scalar::{Field, Float, Real};
 
 const CURVE: &str = "[1.5*sin(7.2*t), cos(9*t), exp(cos(1.8*t))]";

@@ -2,7 +2,7 @@
 //! result of a check ([`Outcome`]), a checked claim in the schema of `reports/claims.json`
 //! ([`Claim`]) with its [`Verdict`], and the [`Ledger`] that joins outcomes with specs.
 //!
-//! This module sits below both the paper checks (`claims/`) and the renderers (`report/`):
+//! This module sits below both the paper checks (`papers/`) and the renderers (`report/`):
 //! checks produce these values, renderers read them, and neither imports the other's
 //! internals through it (DESIGN.md, "Layers").
 //!

@@ -1,23 +1,26 @@
 //! trajverify: the curve and trajectory algorithms of five papers, written once over the
 //! number type and verified in exact rationals, MPFR and f64 side by side.
 //!
-//! Layers, each using only those below it (DESIGN.md; `tests/layers.rs` checks every
+//! Layers, each using only those below it (README, Design; `tests/layers.rs` checks every
 //! `crate::` reference against this order):
-//! - [`cli`]: arguments and JSON in, JSON out, work budgets; no mathematics.
-//! - [`claims`]: the published claims of each paper, each a check that calls the library.
+//! - [`cli`]: arguments and JSON in, JSON out, work budgets; parse, one algorithm call, print.
+//! - [`papers`]: the published claims of each paper, each a check that calls the library.
 //! - [`report`]: Markdown reports, SVG figures, `claims.json`; reads only [`ledger`] values.
 //! - [`ledger`]: claim specs, outcomes, verdicts and the ledger that joins them.
-//! - algorithms: [`hermite`] (paper 000), [`ph`] (paper 001), [`bspline`] (paper 002),
-//!   [`gerbs`] (paper 003), [`param`] (paper 004); none uses another.
-//! - building blocks: [`poly`] (Bernstein form, differences), [`quat`] (quaternions),
-//!   [`curve`] (expressions, Taylor AD, fitted data), [`linalg`].
+//! - [`algo`]: [`hermite`](algo::hermite) (paper 000), [`ph`](algo::ph) (paper 001),
+//!   [`bspline`](algo::bspline) (paper 002), [`gerbs`](algo::gerbs) (paper 003),
+//!   [`param`](algo::param) (paper 004); none uses another.
+//! - [`curve`]: expressions, Taylor AD, curves fitted to data.
+//! - [`numeric`]: [`linalg`](numeric::linalg), [`poly`](numeric::poly) (Bernstein form,
+//!   differences, binomials), [`quat`](numeric::quat) (quaternions),
+//!   [`quadrature`](numeric::quadrature).
 //! - [`scalar`]: the `Field` and `Real` traits over f64, MPFR and rationals.
 //!
 //! One algorithm, three number types: the Hermite data of the paper's Fig. 2 mapped to
 //! Bernstein control points exactly, in MPFR and in f64.
 //!
 //! ```
-//! use trajverify::hermite::HermiteData;
+//! use trajverify::algo::hermite::HermiteData;
 //! use trajverify::scalar::{BigRational, Field, Float};
 //!
 //! fn control_points<T: Field>(ctx: &T::Ctx) -> Vec<T> {
@@ -36,27 +39,20 @@
 
 #![warn(rustdoc::broken_intra_doc_links)]
 
-pub mod bspline;
-pub mod claims;
+pub mod algo;
 pub mod cli;
 pub mod curve;
-pub mod gerbs;
-pub mod hermite;
 pub mod ledger;
-pub mod linalg;
-pub mod param;
-pub mod ph;
-pub mod poly;
-pub mod quadrature;
-pub mod quat;
+pub mod numeric;
+pub mod papers;
 pub mod report;
 pub mod scalar;
 
 // The main types of the algorithm layer at the crate root, for library users.
-pub use bspline::cardinal::CardinalBSpline;
-pub use gerbs::{bfbs::Bfbs, path::GerbsPath, Knots};
-pub use hermite::HermiteData;
-pub use param::natural::NaturalCubicSpline;
-pub use ph::hermite::HermiteData as PhHermiteData;
-pub use ph::PhCurve;
+pub use algo::bspline::cardinal::CardinalBSpline;
+pub use algo::gerbs::{bfbs::Bfbs, path::GerbsPath, Knots};
+pub use algo::hermite::HermiteData;
+pub use algo::param::natural::NaturalCubicSpline;
+pub use algo::ph::hermite::HermiteData as PhHermiteData;
+pub use algo::ph::PhCurve;
 pub use scalar::{Field, Real, ScalarKind};

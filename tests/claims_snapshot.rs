@@ -1,10 +1,10 @@
 //! Every claim's id, verdict and reproduced value, pinned by an insta snapshot per paper in
 //! `snapshots/`: any drift in any digit shows up in review.
 
-use trajverify::claims::{self, Verdict};
+use trajverify::papers::{self, Verdict};
 
 fn snapshot_paper(short: &str) {
-    let paper = claims::papers()
+    let paper = papers::all()
         .into_iter()
         .find(|p| p.short == short)
         .expect("the paper is registered");

@@ -1,10 +1,10 @@
 //! Property tests of the mathematics on random data (proptest).
 
 use proptest::prelude::*;
-use trajverify::hermite::HermiteData;
-use trajverify::linalg::{self, reference, Matrix};
-use trajverify::poly::bernstein::{basis, power_basis_derivative};
-use trajverify::poly::Bernstein;
+use trajverify::algo::hermite::HermiteData;
+use trajverify::numeric::linalg::{self, reference, Matrix};
+use trajverify::numeric::poly::bernstein::{basis, power_basis_derivative};
+use trajverify::numeric::poly::Bernstein;
 use trajverify::scalar::parse::parse_rational;
 use trajverify::scalar::{BigRational, Field, Float};
 
@@ -127,8 +127,8 @@ proptest! {
 
 mod bspline {
     use super::*;
-    use trajverify::bspline::fit::SplineSpace;
-    use trajverify::bspline::CardinalBSpline;
+    use trajverify::algo::bspline::fit::SplineSpace;
+    use trajverify::algo::bspline::CardinalBSpline;
 
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(32))]
@@ -163,8 +163,8 @@ mod bspline {
 
 mod parametrization {
     use super::*;
-    use trajverify::param::objective::{objective, Objective};
-    use trajverify::param::one_d::minimizing_parametrization;
+    use trajverify::algo::param::objective::{objective, Objective};
+    use trajverify::algo::param::one_d::minimizing_parametrization;
 
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(32))]
@@ -196,9 +196,9 @@ mod parametrization {
 /// Paper 001: Algorithm 1 on random C⁴ data, in f64 and MPFR, and Theorems 3–4.
 mod ph_interpolation {
     use proptest::prelude::*;
-    use trajverify::ph::bernstein_jet;
-    use trajverify::ph::hermite::{interpolate, FreeParameters, HermiteData};
-    use trajverify::quat::vec3;
+    use trajverify::algo::ph::bernstein_jet;
+    use trajverify::algo::ph::hermite::{interpolate, FreeParameters, HermiteData};
+    use trajverify::numeric::quat::vec3;
     use trajverify::scalar::{Field, Float};
 
     fn vector() -> impl Strategy<Value = [i64; 3]> {
@@ -311,12 +311,12 @@ mod ph_interpolation {
 /// Paper 003: GERBS bases and paths on random knots and waypoints.
 mod gerbs {
     use proptest::prelude::*;
-    use trajverify::gerbs::bfbs::Bfbs;
-    use trajverify::gerbs::erbs::{CentreReading, Erbs, ErbsParams};
-    use trajverify::gerbs::path::{
+    use trajverify::algo::gerbs::bfbs::Bfbs;
+    use trajverify::algo::gerbs::erbs::{CentreReading, Erbs, ErbsParams};
+    use trajverify::algo::gerbs::path::{
         check_waypoints, local_curves, tangents, ArcConvention, GerbsPath, PathSpec,
     };
-    use trajverify::gerbs::{basis_derivatives, Blend, Knots, Side};
+    use trajverify::algo::gerbs::{basis_derivatives, Blend, Knots, Side};
     use trajverify::scalar::{BigRational, Real};
 
     fn q(n: i64, d: i64) -> BigRational {

@@ -16,7 +16,7 @@ mod run_hermite;
 mod run_param;
 mod run_ph;
 
-use crate::claims::{self, Paper, Verdict};
+use crate::papers::{self, Paper, Verdict};
 use crate::report;
 use crate::scalar::ScalarKind;
 use clap::{Parser, Subcommand, ValueEnum};
@@ -253,7 +253,7 @@ pub fn execute(cli: Cli) -> Result<String, Failure> {
 }
 
 fn select(names: &[String]) -> Result<Vec<Paper>, Failure> {
-    let all = claims::papers();
+    let all = papers::all();
     if names.is_empty() {
         return Ok(all);
     }

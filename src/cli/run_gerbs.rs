@@ -10,12 +10,12 @@ use super::dispatch::{run_real, RealJob};
 use super::input::{self, fail, InputError, RealInput, RunError};
 use super::output::{flush, largest, noise_level, Out};
 use super::Rendered;
-use crate::gerbs::bfbs::{Bfbs, MAX_EXPONENT};
-use crate::gerbs::dubins::{algorithm1_headings, through_poses, total_length};
-use crate::gerbs::erbs::{CentreReading, Erbs, ErbsParams};
-use crate::gerbs::path::{check_waypoints, ArcConvention, GerbsPath, PathSpec};
-use crate::gerbs::quadrature::default_tolerance;
-use crate::gerbs::{basis_derivatives, Blend, GerbsError, Knots, Side};
+use crate::algo::gerbs::bfbs::{Bfbs, MAX_EXPONENT};
+use crate::algo::gerbs::dubins::{algorithm1_headings, through_poses, total_length};
+use crate::algo::gerbs::erbs::{CentreReading, Erbs, ErbsParams};
+use crate::algo::gerbs::path::{check_waypoints, ArcConvention, GerbsPath, PathSpec};
+use crate::algo::gerbs::quadrature::default_tolerance;
+use crate::algo::gerbs::{basis_derivatives, Blend, GerbsError, Knots, Side};
 use crate::scalar::{BigRational, Field, Real, ScalarKind};
 use serde_json::{Map, Value};
 

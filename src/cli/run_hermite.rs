@@ -5,7 +5,7 @@ use super::dispatch::{run_field, FieldJob};
 use super::input::{self, fail, InputError, RunError};
 use super::output::Out;
 use super::Rendered;
-use crate::hermite::{self, condition, TransformKind};
+use crate::algo::hermite::{self, condition, TransformKind};
 use crate::scalar::certify::{correct_digits, Certified};
 use crate::scalar::{BigRational, Field, Float, ScalarKind};
 use serde_json::{Map, Value};
@@ -265,10 +265,10 @@ fn f64_matrix_condition(
     t0: &BigRational,
     t1: &BigRational,
     kind: TransformKind,
-) -> Option<Result<f64, crate::linalg::svd::NoConvergence>> {
-    let a = crate::hermite::transform_matrix(m, t0, t1, kind).map(|q| q.to_f64());
+) -> Option<Result<f64, crate::numeric::linalg::svd::NoConvergence>> {
+    let a = crate::algo::hermite::transform_matrix(m, t0, t1, kind).map(|q| q.to_f64());
     if a.entries().iter().any(|x| !x.is_finite()) {
         return None;
     }
-    Some(crate::linalg::condition_number(&a))
+    Some(crate::numeric::linalg::condition_number(&a))
 }

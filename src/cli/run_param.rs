@@ -5,10 +5,12 @@ use super::dispatch::{run_field, FieldJob};
 use super::input::{self, fail, InputError, RunError};
 use super::output::Out;
 use super::Rendered;
-use crate::param::descent::{descend, polish};
-use crate::param::natural::NaturalCubicSpline;
-use crate::param::objective::{chord_length_spacing, knots_from_spacing, objective, Objective};
-use crate::param::one_d::{
+use crate::algo::param::descent::{descend, polish};
+use crate::algo::param::natural::NaturalCubicSpline;
+use crate::algo::param::objective::{
+    chord_length_spacing, knots_from_spacing, objective, Objective,
+};
+use crate::algo::param::one_d::{
     chord_length_1d, classify, minimizing_parametrization, Case, ParamError,
 };
 use crate::scalar::{BigRational, Field, Float, Real, ScalarKind};
@@ -263,7 +265,7 @@ pub fn run_marin(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendere
         ),
     )?;
     let spline_error =
-        |e: crate::param::natural::SplineError| InputError(format!("field \"points\": {e}"));
+        |e: crate::algo::param::natural::SplineError| InputError(format!("field \"points\": {e}"));
     // The descent runs in f64: it only has to land in Newton's basin.
     let z64: Vec<Vec<f64>> = data
         .z
@@ -295,8 +297,8 @@ pub fn run_marin(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendere
         let g = objective(&h, &z, &a, data.form).map_err(spline_error)?;
         let g_chord =
             objective(&chord_length_spacing(&z), &z, &a, data.form).map_err(spline_error)?;
-        let p = crate::param::gradient::project(
-            &crate::param::gradient::gradient(&h, &z, &a, data.form).map_err(spline_error)?,
+        let p = crate::algo::param::gradient::project(
+            &crate::algo::param::gradient::gradient(&h, &z, &a, data.form).map_err(spline_error)?,
         );
         let norm = p
             .iter()
@@ -359,7 +361,7 @@ fn to_f64_tree(o: &Out<Float>) -> Out<f64> {
 
 fn extra_f64(
     out: Out<f64>,
-    rough: &crate::param::descent::Descent<f64>,
+    rough: &crate::algo::param::descent::Descent<f64>,
     form: Objective,
 ) -> Out<f64> {
     out.with_field("iterations", Out::Int(rough.iterations as i64))

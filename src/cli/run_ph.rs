@@ -5,10 +5,12 @@ use super::dispatch::{run_real, RealJob};
 use super::input::{self, fail, InputError, RunError};
 use super::output::{agreed_text, flush, largest, noise_level, Out};
 use super::Rendered;
+use crate::algo::ph::hermite::{interpolate, FreeParameters, HermiteData, PhHermiteError};
+use crate::algo::ph::piecewise::{
+    certified_error, conversion_error, convert, phodcos, DEFAULT_SAMPLES,
+};
+use crate::algo::ph::PhCurve;
 use crate::curve::{Curve, ExprCurve};
-use crate::ph::hermite::{interpolate, FreeParameters, HermiteData, PhHermiteError};
-use crate::ph::piecewise::{certified_error, conversion_error, convert, phodcos, DEFAULT_SAMPLES};
-use crate::ph::PhCurve;
 use crate::scalar::certify::format_float_digits;
 use crate::scalar::{BigRational, Field, Float, Real, ScalarKind};
 use serde_json::{json, Map, Value};
@@ -179,7 +181,7 @@ fn check_finite<T: Real, C: Curve<T>>(
 ) -> Result<T, InputError> {
     let mut scale = T::zero_in(&a.ctx());
     for k in 0..=segments {
-        let t = crate::ph::piecewise::knot(a, b, segments, k);
+        let t = crate::algo::ph::piecewise::knot(a, b, segments, k);
         let jet = c.jet(&t, 4);
         if jet.iter().flatten().any(|x| !x.is_finite()) {
             return fail(format!(

@@ -14,7 +14,7 @@
 //! Algorithm A2.3), so an MPFR evaluation is the same curve as the f64 one, not a refit.
 
 use super::Curve;
-use crate::linalg::{gauss, Matrix};
+use crate::numeric::linalg::{gauss, Matrix};
 use crate::scalar::{Field, Real};
 
 /// A periodic spline curve in ℝ³.

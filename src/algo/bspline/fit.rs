@@ -1,0 +1,251 @@
+//! Splines from shifted B-splines and their optimal control points (paper 002, Secs. 5–6).
+//!
+//! x(t) = Σᵢ τᵢ B_k(t − i + 1), i = 1…M (Eqs. 2, 16); the basis function i is supported on
+//! [i−1, i+k], so the spline lives on [0, M+k]. For data (tⱼ, αⱼ), B is the N×M collocation
+//! matrix Bⱼᵢ = B_k(tⱼ − i + 1) and G the Gram matrix of k-th derivatives ([`super::gram`]):
+//! - interpolation (Problem 4, Eq. 13): min τᵀGτ subject to Bτ = α, solved by
+//!   τ* = G⁻¹Bᵀ(BG⁻¹Bᵀ)⁻¹α (Eq. 14), which needs B of full row rank;
+//! - smoothing (Problem 5): min τᵀGτ + (Bτ−α)ᵀW(Bτ−α), solved by
+//!   τ̂* = (G + BᵀWB)⁻¹BᵀWα (Eq. 15), W = diag(w) with wⱼ ≥ 0;
+//! - [`interpolate_kkt`] solves the same interpolation problem from its optimality system
+//!   [[2G, Bᵀ], [B, 0]]·[τ; λ] = [0; α], independently of Eq. 14.
+//!
+//! Exact in rationals; Gaussian elimination with partial pivoting in floating point.
+
+use super::gram::{gram_entries, gram_matrix};
+use super::CardinalBSpline;
+use crate::numeric::linalg::{inverse, solve, Matrix};
+use crate::scalar::Field;
+
+/// Why a fit cannot be made.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum FitError {
+    #[error("degree {0} is below 1: the Gram matrix of k-th derivatives needs k ≥ 1")]
+    DegreeTooLow(usize),
+    #[error("no data")]
+    NoData,
+    #[error("{times} times but {values} values")]
+    LengthMismatch { times: usize, values: usize },
+    #[error("{controls} control points cannot interpolate {data} data: M must be at least N")]
+    TooFewControls { controls: usize, data: usize },
+    #[error("time #{index} lies outside the open support (0, M+k) of the spline, where every basis function vanishes")]
+    OutsideSupport { index: usize },
+    #[error("the collocation matrix B is not of full row rank (repeated times, or too many data on too few basis functions)")]
+    RankDeficient,
+    #[error("weight #{index} is negative")]
+    NegativeWeight { index: usize },
+    #[error("{weights} weights for {data} data")]
+    WeightsLength { weights: usize, data: usize },
+}
+
+/// The spline space S_k with M control points: basis, Gram matrix, collocation.
+pub struct SplineSpace<T: Field> {
+    pub basis: CardinalBSpline<T>,
+    pub controls: usize,
+    gram_entries: Vec<T>,
+}
+
+impl<T: Field> SplineSpace<T> {
+    pub fn new(degree: usize, controls: usize, ctx: &T::Ctx) -> Result<Self, FitError> {
+        if degree < 1 {
+            return Err(FitError::DegreeTooLow(degree));
+        }
+        Ok(SplineSpace {
+            basis: CardinalBSpline::from_algorithm1(degree, ctx),
+            controls,
+            gram_entries: gram_entries(degree, ctx),
+        })
+    }
+
+    pub fn degree(&self) -> usize {
+        self.basis.degree()
+    }
+
+    /// The M×M Gram matrix.
+    pub fn gram(&self, ctx: &T::Ctx) -> Matrix<T> {
+        gram_matrix(&self.gram_entries, self.controls, ctx)
+    }
+
+    /// The N×M collocation matrix for the data times (checked to lie inside the support).
+    pub fn collocation(&self, times: &[T]) -> Result<Matrix<T>, FitError> {
+        let Some(first) = times.first() else {
+            return Err(FitError::NoData);
+        };
+        let ctx = first.ctx();
+        let end = T::from_i64((self.controls + self.degree()) as i64, &ctx);
+        if let Some(index) = times
+            .iter()
+            .position(|t| *t <= T::zero_in(&ctx) || *t >= end)
+        {
+            return Err(FitError::OutsideSupport { index });
+        }
+        Ok(Matrix::from_fn(times.len(), self.controls, |j, i| {
+            self.basis
+                .eval(&(times[j].clone() - &T::from_i64(i as i64, &ctx)))
+        }))
+    }
+
+    /// The d-th derivative of x(t) = Σ τᵢ B_k(t − i + 1) at t.
+    pub fn eval_derivative(&self, tau: &[T], t: &T, d: usize) -> T {
+        let ctx = t.ctx();
+        let mut acc = T::zero_in(&ctx);
+        for (i, c) in tau.iter().enumerate() {
+            acc.mul_add_assign(
+                c,
+                &self
+                    .basis
+                    .eval_derivative(&(t.clone() - &T::from_i64(i as i64, &ctx)), d),
+            );
+        }
+        acc
+    }
+
+    pub fn eval(&self, tau: &[T], t: &T) -> T {
+        self.eval_derivative(tau, t, 0)
+    }
+
+    fn check(&self, times: &[T], values: &[T]) -> Result<Matrix<T>, FitError> {
+        if times.len() != values.len() {
+            return Err(FitError::LengthMismatch {
+                times: times.len(),
+                values: values.len(),
+            });
+        }
+        self.collocation(times)
+    }
+
+    /// τ* of Eq. 14.
+    pub fn interpolate(&self, times: &[T], values: &[T]) -> Result<Vec<T>, FitError> {
+        let b = self.check(times, values)?;
+        if times.len() > self.controls {
+            return Err(FitError::TooFewControls {
+                controls: self.controls,
+                data: times.len(),
+            });
+        }
+        let ctx = times[0].ctx();
+        let g_inv = inverse(&self.gram(&ctx)).map_err(|_| FitError::RankDeficient)?;
+        let g_inv_bt = g_inv.mul(&b.transpose());
+        let schur = b.mul(&g_inv_bt);
+        let y = solve(&schur, values).map_err(|_| FitError::RankDeficient)?;
+        Ok(g_inv_bt.mul_vec(&y))
+    }
+
+    /// τ̂* of Eq. 15 for weights wⱼ ≥ 0.
+    pub fn smooth(&self, times: &[T], values: &[T], weights: &[T]) -> Result<Vec<T>, FitError> {
+        let b = self.check(times, values)?;
+        if weights.len() != times.len() {
+            return Err(FitError::WeightsLength {
+                weights: weights.len(),
+                data: times.len(),
+            });
+        }
+        let ctx = times[0].ctx();
+        if let Some(index) = weights.iter().position(|w| *w < T::zero_in(&ctx)) {
+            return Err(FitError::NegativeWeight { index });
+        }
+        let wb = Matrix::from_fn(b.rows(), b.cols(), |j, i| weights[j].clone() * &b[(j, i)]);
+        let bt = b.transpose();
+        let gram = self.gram(&ctx);
+        let lhs = Matrix::from_fn(self.controls, self.controls, |r, c| {
+            let mut acc = gram[(r, c)].clone();
+            for j in 0..b.rows() {
+                acc.mul_add_assign(&bt[(r, j)], &wb[(j, c)]);
+            }
+            acc
+        });
+        let rhs: Vec<T> = (0..self.controls)
+            .map(|r| {
+                let mut acc = T::zero_in(&ctx);
+                for j in 0..b.rows() {
+                    acc.mul_add_assign(&wb[(j, r)], &values[j]);
+                }
+                acc
+            })
+            .collect();
+        solve(&lhs, &rhs).map_err(|_| FitError::RankDeficient)
+    }
+}
+
+/// The interpolating τ* from the KKT system of Problem 4, independently of Eq. 14.
+pub fn interpolate_kkt<T: Field>(
+    space: &SplineSpace<T>,
+    times: &[T],
+    values: &[T],
+) -> Result<Vec<T>, FitError> {
+    let b = space.check(times, values)?;
+    let ctx = times[0].ctx();
+    let (m, n) = (space.controls, times.len());
+    let g = space.gram(&ctx);
+    let two = T::from_i64(2, &ctx);
+    let kkt = Matrix::from_fn(m + n, m + n, |r, c| match (r < m, c < m) {
+        (true, true) => two.clone() * &g[(r, c)],
+        (true, false) => b[(c - m, r)].clone(),
+        (false, true) => b[(r - m, c)].clone(),
+        (false, false) => T::zero_in(&ctx),
+    });
+    let rhs: Vec<T> = (0..m + n)
+        .map(|r| {
+            if r < m {
+                T::zero_in(&ctx)
+            } else {
+                values[r - m].clone()
+            }
+        })
+        .collect();
+    let sol = solve(&kkt, &rhs).map_err(|_| FitError::RankDeficient)?;
+    Ok(sol[..m].to_vec())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scalar::BigRational;
+
+    fn q(n: i64, d: i64) -> BigRational {
+        BigRational::new(n.into(), d.into())
+    }
+
+    #[test]
+    fn interpolation_meets_data_and_matches_kkt() {
+        let space = SplineSpace::<BigRational>::new(3, 8, &()).unwrap();
+        let times = vec![q(3, 2), q(3, 1), q(9, 2), q(6, 1), q(15, 2)];
+        let values = vec![q(1, 1), q(-2, 1), q(0, 1), q(5, 3), q(1, 2)];
+        let tau = space.interpolate(&times, &values).unwrap();
+        for (t, v) in times.iter().zip(&values) {
+            assert_eq!(&space.eval(&tau, t), v);
+        }
+        assert_eq!(interpolate_kkt(&space, &times, &values).unwrap(), tau);
+    }
+
+    #[test]
+    fn errors() {
+        let space = SplineSpace::<BigRational>::new(3, 4, &()).unwrap();
+        assert_eq!(
+            space.collocation(&[q(0, 1)]).unwrap_err(),
+            FitError::OutsideSupport { index: 0 }
+        );
+        assert_eq!(
+            space.collocation(&[q(1, 1), q(7, 1)]).unwrap_err(),
+            FitError::OutsideSupport { index: 1 }
+        );
+        let twice = [q(2, 1), q(2, 1)];
+        assert_eq!(
+            space.interpolate(&twice, &[q(0, 1), q(1, 1)]).unwrap_err(),
+            FitError::RankDeficient
+        );
+        assert!(matches!(
+            SplineSpace::<BigRational>::new(0, 4, &()),
+            Err(FitError::DegreeTooLow(0))
+        ));
+        let five: Vec<_> = (1..=5).map(|i| q(i, 1)).collect();
+        assert!(matches!(
+            space.interpolate(&five, &five),
+            Err(FitError::TooFewControls { .. })
+        ));
+        assert!(matches!(
+            space.smooth(&[q(1, 1)], &[q(1, 1)], &[q(-1, 1)]),
+            Err(FitError::NegativeWeight { index: 0 })
+        ));
+    }
+}

@@ -1,0 +1,273 @@
+//! Generalized expo-rational B-splines (GERBS) for curvature-continuous paths (paper 003,
+//! Andersen, Bouzidi, Kristiansen).
+//!
+//! A GERBS curve blends local curves, p(t) = Σ_{k=2}^{n+1} c_{k−1}(t) B_k(t) (Eqs. 1, 25), with
+//! basis functions of support [t_{k−1}, t_{k+1}] built from one rising function per knot
+//! interval (Eq. 6): on (t_j, t_{j+1}) the function F_j rises from 0 to 1 and
+//!
+//! B_k = F_{k−1} on (t_{k−1}, t_k],  B_k = 1 − F_k on (t_k, t_{k+1}),  0 elsewhere,
+//!
+//! so the B_k are a partition of unity and B_k(t_k) = 1: the curve passes through c_{k−1}(t_k).
+//! Two kinds of F (the [`Blend`] trait):
+//! - [`bfbs`]: Beta-function B-splines (Eqs. 7–9), F_j(t) = S_j ∫_{t_j}^t Ψ_j with the
+//!   polynomial kernel Ψ_j ∝ (t−t_j)^{i_j}(t_{j+1}−t)^{i_{j+1}}, a regularized incomplete beta
+//!   function, evaluated exactly in its Bernstein form; Eqs. 10–18 are its i = 2 case.
+//! - [`erbs`]: expo-rational B-splines (Eqs. 3–5), F_j = ∫_{t_j}^t Ψ_j / S_j with
+//!   Ψ_j = exp(−β|t − c|^{2σ}/((t−t_j)(t_{j+1}−t)^γ)^α), by tanh–sinh [`quadrature`] and
+//!   derivatives B′ = ±Ψ/S from Ψ itself (Taylor AD, no differencing).
+//!
+//! [`path`] builds the local arcs and lines (Eqs. 19–24), Algorithm 1 (tangents and turn
+//! directions) and Algorithm 2 (the blended path); [`dubins`] is the shortest-path baseline of
+//! Fig. 7. Knots use the paper's numbering t_1 … t_{n+2}, stored from index 0.
+//!
+//! The BFBS basis (i = 2) on the knots of Fig. 1 at t = 3/10, exactly and in f64: a partition
+//! of unity with B₃ = 2944/3125 and B₄ = 181/3125.
+//!
+//! ```
+//! use trajverify::algo::gerbs::{basis_derivatives, bfbs::Bfbs, Knots, Side};
+//! use trajverify::scalar::BigRational;
+//!
+//! let q = |n: i64, d: i64| BigRational::new(n.into(), d.into());
+//! let knots = Knots::new([(0, 1), (0, 1), (1, 4), (1, 2), (3, 4), (1, 1), (1, 1)]
+//!     .map(|(n, d)| q(n, d)).to_vec()).unwrap();
+//! let bfbs = Bfbs::uniform(2, 5).unwrap();
+//! let b = basis_derivatives(&knots, &bfbs, &q(3, 10), 0, Side::Right).unwrap();
+//! assert_eq!((b[1][0].clone(), b[2][0].clone()), (q(2944, 3125), q(181, 3125)));
+//! let knots64 = Knots::new(vec![0.0, 0.0, 0.25, 0.5, 0.75, 1.0, 1.0]).unwrap();
+//! let b64 = basis_derivatives(&knots64, &bfbs, &0.3, 0, Side::Right).unwrap();
+//! assert!((b64.iter().map(|d| d[0]).sum::<f64>() - 1.0).abs() < 1e-15);
+//! ```
+
+pub mod bfbs;
+pub mod dubins;
+pub mod erbs;
+pub mod path;
+/// The quadrature rules the ERBS uses (the building block [`crate::numeric::quadrature`]).
+pub mod quadrature {
+    pub use crate::numeric::quadrature::*;
+}
+
+use crate::curve::taylor::Taylor;
+use crate::scalar::Field;
+
+/// Bad input to the GERBS constructions, named by field.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum GerbsError {
+    #[error("knots: {0}")]
+    Knots(String),
+    #[error("waypoints: {0}")]
+    Waypoints(String),
+    #[error("{field}: {message}")]
+    Parameter {
+        field: &'static str,
+        message: String,
+    },
+}
+
+/// The knot vector t_1 ≤ t_2 < t_3 < … < t_{n+1} ≤ t_{n+2} (the end knots may be double,
+/// Section III) of n basis functions B_2 … B_{n+1}.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Knots<T> {
+    t: Vec<T>,
+}
+
+impl<T: Field> Knots<T> {
+    pub fn new(t: Vec<T>) -> Result<Self, GerbsError> {
+        if t.len() < 3 {
+            return Err(GerbsError::Knots(format!(
+                "need at least 3 knots (one basis function), got {}",
+                t.len()
+            )));
+        }
+        if !t.iter().all(Field::is_finite) {
+            return Err(GerbsError::Knots("every knot must be finite".into()));
+        }
+        let last = t.len() - 1;
+        for j in 1..=last {
+            // Only the two end pairs may repeat.
+            let strict = j != 1 && j != last;
+            let bad = if strict {
+                t[j] <= t[j - 1]
+            } else {
+                t[j] < t[j - 1]
+            };
+            if bad {
+                return Err(GerbsError::Knots(format!(
+                    "knots must increase (t_{} = {} after t_{} = {})",
+                    j + 1,
+                    t[j].to_f64(),
+                    j,
+                    t[j - 1].to_f64()
+                )));
+            }
+        }
+        Ok(Knots { t })
+    }
+
+    /// The knot vector of Algorithm 2 for n waypoints: t_1 = t_2 = 0, t_{n+1} = t_{n+2} = 1,
+    /// uniform steps 1/(n−1) in between (Fig. 1 for n = 5: {0, 0, 1/4, 2/4, 3/4, 1, 1}).
+    pub fn uniform(n: usize, ctx: &T::Ctx) -> Result<Self, GerbsError> {
+        if n < 2 {
+            return Err(GerbsError::Waypoints(format!(
+                "need at least 2 waypoints for a knot vector, got {n}"
+            )));
+        }
+        let mut t = vec![T::zero_in(ctx)];
+        for j in 0..n {
+            t.push(T::from_ratio(j as i64, (n - 1) as i64, ctx));
+        }
+        t.push(T::one_in(ctx));
+        Knots::new(t)
+    }
+
+    /// Knot t_j in the paper's numbering (1-based).
+    pub fn at(&self, j: usize) -> &T {
+        &self.t[j - 1]
+    }
+
+    /// The number n of basis functions (knots t_1 … t_{n+2}).
+    pub fn basis_count(&self) -> usize {
+        self.t.len() - 2
+    }
+
+    pub fn as_slice(&self) -> &[T] {
+        &self.t
+    }
+
+    /// The non-empty interval (t_j, t_{j+1}) holding t, with t_j ≤ t < t_{j+1} from the
+    /// right or t_j < t ≤ t_{j+1} from the left; `None` outside [t_1, t_{n+2}].
+    pub fn interval(&self, t: &T, side: Side) -> Option<usize> {
+        let m = self.t.len();
+        (1..m)
+            .filter(|&j| self.t[j - 1] < self.t[j])
+            .find(|&j| match side {
+                Side::Right => self.t[j - 1] <= *t && *t < self.t[j],
+                Side::Left => self.t[j - 1] < *t && *t <= self.t[j],
+            })
+            .or_else(|| {
+                // The end points: the only interval that reaches them.
+                let first = (1..m).find(|&j| self.t[j - 1] < self.t[j])?;
+                let last = (1..m).rev().find(|&j| self.t[j - 1] < self.t[j])?;
+                if *t == self.t[0] {
+                    Some(first)
+                } else if *t == self.t[m - 1] {
+                    Some(last)
+                } else {
+                    None
+                }
+            })
+    }
+}
+
+/// Which one-sided limit to take at a knot.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Side {
+    Left,
+    Right,
+}
+
+/// The rising function F_j of one kind of GERBS on each knot interval (Eq. 6).
+pub trait Blend<T: Field> {
+    /// The Taylor series of F_j at t ∈ [t_j, t_{j+1}] to `order` (interval j in the paper's
+    /// 1-based numbering).
+    fn rising(&self, knots: &Knots<T>, j: usize, t: &T, order: usize) -> Taylor<T>;
+
+    /// The series of 1 − F_j at t. Kinds override it to compute the complement directly:
+    /// near t_{j+1}, where 1 − F_j is tiny, subtracting from 1 would leave only absolute
+    /// accuracy.
+    fn falling(&self, knots: &Knots<T>, j: usize, t: &T, order: usize) -> Taylor<T> {
+        Taylor::constant(T::one_in(&t.ctx())).with_order(order) - &self.rising(knots, j, t, order)
+    }
+
+    /// Both 1 − F_j and F_j at t (kinds whose F_j is a quadrature compute it once).
+    fn pair(&self, knots: &Knots<T>, j: usize, t: &T, order: usize) -> (Taylor<T>, Taylor<T>) {
+        (
+            self.falling(knots, j, t, order),
+            self.rising(knots, j, t, order),
+        )
+    }
+
+    /// F_j′(t).
+    fn slope(&self, knots: &Knots<T>, j: usize, t: &T) -> T {
+        self.rising(knots, j, t, 1).derivatives()[1].clone()
+    }
+
+    /// Whether F_j is a quadrature, so that a sweep over many points (a path length) should
+    /// carry F_j from one point to the next with [`Blend::increment`] instead of integrating
+    /// from a knot every time.
+    fn sweeps(&self) -> bool {
+        false
+    }
+
+    /// F_j(to) − F_j(from).
+    fn increment(&self, knots: &Knots<T>, j: usize, from: &T, to: &T) -> T {
+        self.rising(knots, j, to, 0).value().clone() - self.rising(knots, j, from, 0).value()
+    }
+
+    /// Points inside interval j where F_j is less smooth (quadrature splits there).
+    fn break_points(&self, knots: &Knots<T>, j: usize) -> Vec<T> {
+        let _ = (knots, j);
+        Vec::new()
+    }
+}
+
+/// The series of B_2 … B_{n+1} at t to `order`, from the side `side` at a knot; every basis
+/// function outside its support is the zero series. `None` outside [t_1, t_{n+2}].
+pub fn basis_series<T: Field, B: Blend<T> + ?Sized>(
+    knots: &Knots<T>,
+    blend: &B,
+    t: &T,
+    order: usize,
+    side: Side,
+) -> Option<Vec<Taylor<T>>> {
+    let n = knots.basis_count();
+    let j = knots.interval(t, side)?;
+    let ctx = t.ctx();
+    let zero = Taylor::constant(T::zero_in(&ctx)).with_order(order);
+    let mut out = vec![zero; n];
+    // On (t_j, t_{j+1}): B_j = 1 − F_j falls, B_{j+1} = F_j rises (B_k is index k − 2).
+    // Each is computed on its own, so Σ B_k = 1 is a property, not a construction.
+    match ((2..=n + 1).contains(&j), (2..=n + 1).contains(&(j + 1))) {
+        (true, true) => {
+            let (falling, rising) = blend.pair(knots, j, t, order);
+            out[j - 2] = falling;
+            out[j - 1] = rising;
+        }
+        (true, false) => out[j - 2] = blend.falling(knots, j, t, order),
+        (false, true) => out[j - 1] = blend.rising(knots, j, t, order),
+        (false, false) => {}
+    }
+    Some(out)
+}
+
+/// The derivatives B_k, B_k′, …, B_k^(order) of every basis function at t (k = 2 … n+1).
+pub fn basis_derivatives<T: Field, B: Blend<T> + ?Sized>(
+    knots: &Knots<T>,
+    blend: &B,
+    t: &T,
+    order: usize,
+    side: Side,
+) -> Option<Vec<Vec<T>>> {
+    basis_series(knots, blend, t, order, side).map(|s| s.iter().map(|b| b.derivatives()).collect())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scalar::BigRational;
+
+    #[test]
+    fn knot_vectors_are_checked() {
+        let k = Knots::<BigRational>::uniform(5, &()).expect("knots");
+        let r = |n: i64, d: i64| BigRational::new(n.into(), d.into());
+        assert_eq!(k.at(3), &r(1, 4));
+        assert_eq!(k.basis_count(), 5);
+        assert_eq!(k.interval(&r(1, 4), Side::Right), Some(3));
+        assert_eq!(k.interval(&r(1, 4), Side::Left), Some(2));
+        assert_eq!(k.interval(&r(0, 1), Side::Left), Some(2));
+        assert_eq!(k.interval(&r(1, 1), Side::Right), Some(5));
+        assert!(Knots::new(vec![0.0, 0.5, 0.5, 1.0]).is_err());
+        assert!(Knots::new(vec![0.0, 0.0, 0.5, 1.0, 1.0]).is_ok());
+        assert!(Knots::new(vec![0.0, 0.0, 0.0, 1.0]).is_err());
+    }
+}

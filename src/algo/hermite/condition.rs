@@ -1,0 +1,171 @@
+//! The condition number of the Hermite transform (paper 000, Sec. 2.3 and Fig. 5).
+//!
+//! κ₂(A) = σ_max(A)/σ_min(A) (Eq. 10) of the matrix A of [`transform_matrix`].
+//!
+//! **Block structure.** Row j ≤ m of A (Δʲp₀) involves only p₀…pⱼ and row m+1+j (∇ʲpₙ) only
+//! pₙ₋ⱼ…pₙ, so A is block diagonal up to a permutation: the start block B (rows and columns
+//! 0…m) and the end block, whose entry (j, k) on pₙ₋ₖ is (−1)ᵏC(j,k)f_j = (−1)ʲ·B_{jk}. With
+//! D = diag((−1)ʲ) and the column order reversed, A = P₁·diag(B, D·B)·P₂ for permutations P₁, P₂;
+//! all these factors are orthogonal, so σ(A) is σ(B) with every value twice and κ₂(A) = κ₂(B).
+//! [`condition`] therefore runs the SVD on B, of order m+1 instead of 2m+2 (8× less work), after
+//! [`has_block_structure`] confirms the structure exactly in rationals;
+//! [`condition_full`] keeps the direct computation for cross-checks.
+//!
+//! The SVD is one-sided Jacobi over rows ([`crate::numeric::linalg::svd`]), which keeps full relative
+//! accuracy on these row-scaled matrices. [`certified`] runs it at p and 2p bits of MPFR and
+//! keeps the digits that agree; [`f64_reference`] is what nalgebra's SVD gives in double
+//! precision for the full matrix, as a user of a standard library would compute it.
+
+use super::{transform_matrix, TransformKind};
+use crate::numeric::linalg::{condition_number, reference, svd::NoConvergence, Matrix};
+use crate::scalar::certify::{at_two_precisions, Certified};
+use crate::scalar::{BigRational, Field, Float, Real};
+
+/// The start block B: rows and columns 0…m of the transform matrix.
+pub fn start_block<T: Field>(m: usize, t0: &T, t1: &T, kind: TransformKind) -> Matrix<T> {
+    let a = transform_matrix(m, t0, t1, kind);
+    Matrix::from_fn(m + 1, m + 1, |j, k| a[(j, k)].clone())
+}
+
+/// Exact check of the structure stated in the module doc: A vanishes outside the two blocks
+/// and the end block equals D·B with its columns in reverse order.
+pub fn has_block_structure(
+    m: usize,
+    t0: &BigRational,
+    t1: &BigRational,
+    kind: TransformKind,
+) -> bool {
+    let a = transform_matrix(m, t0, t1, kind);
+    let n = 2 * m + 1;
+    (0..=n).all(|r| {
+        (0..=n).all(|c| {
+            let (r_start, c_start) = (r <= m, c <= m);
+            if r_start != c_start {
+                return a[(r, c)].is_zero();
+            }
+            if r_start {
+                return true;
+            }
+            // End block: row m+1+j, column n−k holds (−1)ʲ·B_{jk}.
+            let (j, k) = (r - m - 1, n - c);
+            let b = a[(j, k)].clone();
+            a[(r, c)] == if j % 2 == 1 { -b } else { b }
+        })
+    })
+}
+
+/// κ₂ of the transform for m derivatives on [t₀, t₁], in the number type of t₀, computed on
+/// the start block (see the module doc for why that is exact).
+pub fn condition<T: Real>(
+    m: usize,
+    t0: &T,
+    t1: &T,
+    kind: TransformKind,
+) -> Result<T, NoConvergence> {
+    condition_number(&start_block(m, t0, t1, kind))
+}
+
+/// κ₂ of the whole (2m+2)×(2m+2) matrix, without using its block structure.
+pub fn condition_full<T: Real>(
+    m: usize,
+    t0: &T,
+    t1: &T,
+    kind: TransformKind,
+) -> Result<T, NoConvergence> {
+    condition_number(&transform_matrix(m, t0, t1, kind))
+}
+
+/// κ₂ in MPFR at `bits` and `2·bits`, certified by their agreement; also the 2·bits value.
+pub fn certified(
+    m: usize,
+    t0: &BigRational,
+    t1: &BigRational,
+    kind: TransformKind,
+    bits: u32,
+) -> Result<(Certified, Float), NoConvergence> {
+    at_two_precisions(bits, |p| {
+        condition::<Float>(
+            m,
+            &Float::from_rational(t0, &p),
+            &Float::from_rational(t1, &p),
+            kind,
+        )
+    })
+    .map(|(c, _, hi)| (c, hi))
+}
+
+/// κ₂ by nalgebra's f64 SVD of the full f64 matrix (entries correctly rounded from the exact
+/// ones); `None` when an entry overflows f64. It is +∞ when nalgebra's σ_min comes out as 0.
+pub fn f64_reference(
+    m: usize,
+    t0: &BigRational,
+    t1: &BigRational,
+    kind: TransformKind,
+) -> Option<f64> {
+    let exact = transform_matrix(m, t0, t1, kind);
+    let a = exact.map(|q| q.to_f64());
+    if a.entries().iter().any(|x| !x.is_finite()) {
+        return None;
+    }
+    Some(reference::condition_number(&a))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn block_structure_holds_and_gives_the_full_kappa() {
+        let (t0, t1) = (
+            BigRational::new((-1).into(), 3.into()),
+            BigRational::new(7.into(), 2.into()),
+        );
+        for m in 0..=8 {
+            for kind in [TransformKind::Transform, TransformKind::Binomial] {
+                assert!(has_block_structure(m, &t0, &t1, kind), "m = {m}");
+                let (a, b) = (
+                    Float::from_rational(&t0, &256),
+                    Float::from_rational(&t1, &256),
+                );
+                let block = condition(m, &a, &b, kind).unwrap();
+                let full = condition_full(m, &a, &b, kind).unwrap();
+                let agree = crate::scalar::certify::agreeing_digits(&block, &full);
+                assert!(agree >= 60, "m = {m}: {agree} digits");
+            }
+        }
+    }
+
+    fn unit_interval() -> (BigRational, BigRational) {
+        (
+            BigRational::from_integer(0.into()),
+            BigRational::from_integer(1.into()),
+        )
+    }
+
+    #[test]
+    fn m0_transform_is_identity() {
+        let (t0, t1) = unit_interval();
+        let (c, _) = certified(0, &t0, &t1, TransformKind::Transform, 64).unwrap();
+        assert_eq!(c.text, "1.000000000000000000");
+        assert_eq!(
+            f64_reference(0, &t0, &t1, TransformKind::Transform),
+            Some(1.0)
+        );
+    }
+
+    #[test]
+    fn m1_unit_interval_closed_form() {
+        // A is two copies of [[1,0],[-3,3]] (up to column order), whose squared singular
+        // values are (19 ± √325)/2, so κ = √((19+√325)/(19−√325)).
+        let (t0, t1) = unit_interval();
+        let (c, _) = certified(1, &t0, &t1, TransformKind::Transform, 128).unwrap();
+        let root = (325f64).sqrt();
+        let expected = ((19.0 + root) / (19.0 - root)).sqrt();
+        assert!(
+            (c.approx - expected).abs() < 1e-12 * expected,
+            "{} vs {expected}",
+            c.approx
+        );
+        assert!(c.digits >= 35);
+    }
+}

@@ -1,0 +1,322 @@
+//! Two-point Hermite interpolation in Bernstein form (paper 000, Sec. 3).
+//!
+//! Given the values and first m derivatives at both ends of [t₀, t₁],
+//! H = [x₀, x₀′, …, x₀⁽ᵐ⁾ | x₁, x₁′, …, x₁⁽ᵐ⁾] (Eq. 11), find the control points p₀…pₙ,
+//! n = 2m + 1, of the unique polynomial of degree n meeting all 2(m+1) conditions.
+//!
+//! With T = t₁ − t₀, Eqs. 14–15 say Δʲp₀ = qʲ₀ and ∇ʲpₙ = qʲ₁ with
+//! qʲ = Tʲ (n−j)!/n! x⁽ʲ⁾. Both systems are triangular:
+//! - p₀…pₘ = binomial transform of (q⁰₀…qᵐ₀) (Eq. 16 via A2);
+//! - pₙ₋ₖ = Σⱼ (−1)ʲ C(k, j) qʲ₁ for k = 0…m (Eq. 17 via the self-inverse A3).
+//!
+//! The start data fix exactly m+1 control points, p₀…pₘ, and the end data the other m+1,
+//! pₘ₊₁…p₂ₘ₊₁. Eqs. 16–17 as printed assign p₀…pₘ₊₁ (m+2 points) to the m+1 start values
+//! and p_{m+2}…p_{2m+1} (m points) to the m+1 end values; Eq. 18 read as one vector is the
+//! map implemented here. The claims ledger records that finding.
+//!
+//! Exact in rationals. In floating point each control point is a short signed sum of the
+//! scaled data, so the map is as accurate as its condition number allows (see
+//! [`transform_matrix`] and the Fig. 5 claims).
+//!
+//! Fig. 2's data on [0, 2] (the slower of its two durations), exactly and in f64: the control
+//! points are 0, 0, 0, 1/5, 3/5, 1.
+//!
+//! ```
+//! use trajverify::algo::hermite::HermiteData;
+//! use trajverify::scalar::BigRational;
+//!
+//! let q = |n: i64, d: i64| BigRational::new(n.into(), d.into());
+//! let exact = HermiteData::new(vec![q(0, 1); 3], vec![q(1, 1), q(1, 1), q(0, 1)], q(0, 1), q(2, 1))
+//!     .unwrap()
+//!     .solve()
+//!     .unwrap();
+//! assert_eq!(exact.control_points[3..], [q(1, 5), q(3, 5), q(1, 1)]);
+//! let fast = HermiteData::new(vec![0.0; 3], vec![1.0, 1.0, 0.0], 0.0, 2.0).unwrap().solve().unwrap();
+//! assert!((fast.control_points[3] - 0.2).abs() < 1e-15);
+//! ```
+
+pub mod condition;
+
+use crate::numeric::linalg::Matrix;
+use crate::numeric::poly::differences::{anti_difference, backward_anti_difference};
+use crate::numeric::poly::{binomial, falling_factorial, falling_factorial_in, int_in, Bernstein};
+use crate::scalar::{powi, Field};
+
+/// Why Hermite data cannot be mapped.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum HermiteError {
+    #[error("no boundary data: start and end need at least the position")]
+    Empty,
+    #[error(
+        "start has {start} values and end has {end}: both ends need the same number of derivatives"
+    )]
+    LengthMismatch { start: usize, end: usize },
+    #[error("every point must have the same dimension d ≥ 1")]
+    DimensionMismatch,
+    #[error("the interval [t0, t1] must have t1 > t0")]
+    EmptyInterval,
+    #[error("the scale factor (t1−t0)^{j}·({n}−{j})!/{n}! is not representable in {scalar} (overflow or underflow)")]
+    ScaleNotRepresentable { j: usize, n: usize, scalar: String },
+}
+
+/// The boundary data of Eq. 11 on an interval.
+#[derive(Clone, Debug, PartialEq)]
+pub struct HermiteData<T> {
+    /// x₀, x₀′, …, x₀⁽ᵐ⁾ at t₀.
+    pub start: Vec<T>,
+    /// x₁, x₁′, …, x₁⁽ᵐ⁾ at t₁.
+    pub end: Vec<T>,
+    pub t0: T,
+    pub t1: T,
+}
+
+impl<T: Field> HermiteData<T> {
+    /// Check the shape: non-empty, equal lengths, t₁ > t₀.
+    pub fn new(start: Vec<T>, end: Vec<T>, t0: T, t1: T) -> Result<Self, HermiteError> {
+        if start.is_empty() || end.is_empty() {
+            return Err(HermiteError::Empty);
+        }
+        if start.len() != end.len() {
+            return Err(HermiteError::LengthMismatch {
+                start: start.len(),
+                end: end.len(),
+            });
+        }
+        if t1 <= t0 {
+            return Err(HermiteError::EmptyInterval);
+        }
+        Ok(HermiteData { start, end, t0, t1 })
+    }
+
+    /// m, the highest derivative constrained at each end.
+    pub fn derivatives(&self) -> usize {
+        self.start.len() - 1
+    }
+
+    /// The vector H of Eq. 11.
+    pub fn boundary_vector(&self) -> Vec<T> {
+        self.start.iter().chain(&self.end).cloned().collect()
+    }
+
+    /// The control points of the interpolating polynomial of degree 2m+1 (Eq. 18).
+    pub fn solve(&self) -> Result<Bernstein<T>, HermiteError> {
+        let m = self.derivatives();
+        let scales = derivative_scales(m, &self.t0, &self.t1)?;
+        let scaled =
+            |x: &[T]| -> Vec<T> { x.iter().zip(&scales).map(|(v, s)| v.clone() * s).collect() };
+        let head = anti_difference(&scaled(&self.start)); // p₀…pₘ
+        let tail = backward_anti_difference(&scaled(&self.end)); // pₘ₊₁…pₙ
+        let points = head.into_iter().chain(tail).collect();
+        Ok(Bernstein::new(points, self.t0.clone(), self.t1.clone()))
+    }
+}
+
+/// The Hermite map for points in Rᵈ: `start[j]` and `end[j]` are the j-th derivative vectors
+/// (all of one dimension d ≥ 1). The map acts on each coordinate separately, so the result is
+/// the control polygon as points: `result[k][c]` is coordinate c of p_k.
+pub fn solve_points<T: Field>(
+    start: &[Vec<T>],
+    end: &[Vec<T>],
+    t0: &T,
+    t1: &T,
+) -> Result<Vec<Vec<T>>, HermiteError> {
+    let dims = start.first().map_or(0, Vec::len);
+    if dims == 0 || start.iter().chain(end).any(|v| v.len() != dims) {
+        return Err(HermiteError::DimensionMismatch);
+    }
+    let coordinate = |v: &[Vec<T>], c: usize| v.iter().map(|p| p[c].clone()).collect();
+    let per_coordinate = (0..dims)
+        .map(|c| {
+            HermiteData::new(
+                coordinate(start, c),
+                coordinate(end, c),
+                t0.clone(),
+                t1.clone(),
+            )?
+            .solve()
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    let count = per_coordinate[0].control_points.len();
+    Ok((0..count)
+        .map(|k| {
+            per_coordinate
+                .iter()
+                .map(|b| b.control_points[k].clone())
+                .collect()
+        })
+        .collect())
+}
+
+/// The scales Tʲ(n−j)!/n!, j = 0…m, n = 2m+1, that turn derivatives into differences.
+pub fn derivative_scales<T: Field>(m: usize, t0: &T, t1: &T) -> Result<Vec<T>, HermiteError> {
+    let ctx = t0.ctx();
+    let n = 2 * m + 1;
+    let width = t1.clone() - t0;
+    (0..=m)
+        .map(|j| {
+            let ff: T = falling_factorial_in(n, j, &ctx);
+            let s = powi(&width, j as u32) / &ff;
+            if !s.is_finite() || s.is_zero() || !ff.is_finite() {
+                Err(HermiteError::ScaleNotRepresentable {
+                    j,
+                    n,
+                    scalar: T::scalar_name(&ctx),
+                })
+            } else {
+                Ok(s)
+            }
+        })
+        .collect()
+}
+
+/// Which matrix of the map to build (see [`transform_matrix`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TransformKind {
+    /// With the factors n!/(n−j)!/(t₁−t₀)ʲ: control points → derivatives (Eqs. 14–15).
+    Transform,
+    /// Without them: control points → differences (the rows of A1 and A3).
+    Binomial,
+}
+
+/// The (2m+2)×(2m+2) matrix taking (p₀…pₙ) to H (Eqs. 14–15): row j is
+/// n!/(n−j)!/Tʲ times row j of A1 (on p₀…pⱼ); row m+1+j is the same factor times
+/// ∇ʲpₙ = Σₖ (−1)ᵏ C(j,k) pₙ₋ₖ. [`TransformKind::Binomial`] omits the factors.
+pub fn transform_matrix<T: Field>(m: usize, t0: &T, t1: &T, kind: TransformKind) -> Matrix<T> {
+    let ctx = t0.ctx();
+    let n = 2 * m + 1;
+    let width = t1.clone() - t0;
+    let mut a = Matrix::zeros(n + 1, n + 1, &ctx);
+    for j in 0..=m {
+        let factor = match kind {
+            TransformKind::Transform => {
+                int_in::<T>(&falling_factorial(n, j), &ctx) / &powi(&width, j as u32)
+            }
+            TransformKind::Binomial => T::one_in(&ctx),
+        };
+        for k in 0..=j {
+            let c = int_in::<T>(&binomial(j, k), &ctx) * &factor;
+            // Δʲp₀ = Σₖ (−1)^(j−k) C(j,k) pₖ ; ∇ʲpₙ = Σₖ (−1)ᵏ C(j,k) pₙ₋ₖ
+            a[(j, k)] = if (j - k) % 2 == 1 {
+                -c.clone()
+            } else {
+                c.clone()
+            };
+            a[(m + 1 + j, n - k)] = if k % 2 == 1 { -c } else { c };
+        }
+    }
+    a
+}
+
+/// The matrix of the Hermite map H → P itself, column by column (the map applied to unit
+/// boundary vectors). It is the inverse of [`transform_matrix`] with `Transform`.
+pub fn hermite_matrix<T: Field>(m: usize, t0: &T, t1: &T) -> Result<Matrix<T>, HermiteError> {
+    let ctx = t0.ctx();
+    let size = 2 * m + 2;
+    let mut columns = Vec::with_capacity(size);
+    for c in 0..size {
+        let unit: Vec<T> = (0..size)
+            .map(|i| {
+                if i == c {
+                    T::one_in(&ctx)
+                } else {
+                    T::zero_in(&ctx)
+                }
+            })
+            .collect();
+        let data = HermiteData::new(
+            unit[..=m].to_vec(),
+            unit[m + 1..].to_vec(),
+            t0.clone(),
+            t1.clone(),
+        )?;
+        columns.push(data.solve()?.control_points);
+    }
+    Ok(Matrix::from_fn(size, size, |i, j| columns[j][i].clone()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scalar::BigRational;
+
+    fn q(n: i64, d: i64) -> BigRational {
+        BigRational::new(n.into(), d.into())
+    }
+
+    fn ints(v: &[i64]) -> Vec<BigRational> {
+        v.iter().map(|&x| q(x, 1)).collect()
+    }
+
+    #[test]
+    fn figure_two_control_points() {
+        let fast = HermiteData::new(ints(&[0, 0, 0]), ints(&[1, 1, 0]), q(0, 1), q(1, 1)).unwrap();
+        let p = fast.solve().unwrap().control_points;
+        assert_eq!(
+            p,
+            vec![q(0, 1), q(0, 1), q(0, 1), q(3, 5), q(4, 5), q(1, 1)]
+        );
+        let slow = HermiteData::new(ints(&[0, 0, 0]), ints(&[1, 1, 0]), q(0, 1), q(2, 1)).unwrap();
+        let p = slow.solve().unwrap().control_points;
+        assert_eq!(
+            p,
+            vec![q(0, 1), q(0, 1), q(0, 1), q(1, 5), q(3, 5), q(1, 1)]
+        );
+    }
+
+    #[test]
+    fn matrices_are_mutually_inverse() {
+        for m in 0..6 {
+            let (t0, t1) = (q(-1, 3), q(5, 2));
+            let a = transform_matrix(m, &t0, &t1, TransformKind::Transform);
+            let h = hermite_matrix(m, &t0, &t1).unwrap();
+            assert_eq!(a.mul(&h), Matrix::identity(2 * m + 2, &()));
+        }
+    }
+
+    #[test]
+    fn points_are_solved_coordinate_by_coordinate() {
+        let start = vec![vec![q(0, 1), q(0, 1)], vec![q(1, 1), q(0, 1)]];
+        let end = vec![vec![q(1, 1), q(1, 1)], vec![q(0, 1), q(1, 1)]];
+        let p = solve_points(&start, &end, &q(0, 1), &q(3, 2)).unwrap();
+        assert_eq!(
+            p,
+            vec![
+                vec![q(0, 1), q(0, 1)],
+                vec![q(1, 2), q(0, 1)],
+                vec![q(1, 1), q(1, 2)],
+                vec![q(1, 1), q(1, 1)]
+            ]
+        );
+        let ragged = vec![vec![q(0, 1)], vec![q(1, 1), q(2, 1)]];
+        assert_eq!(
+            solve_points(&ragged, &ragged, &q(0, 1), &q(1, 1)),
+            Err(HermiteError::DimensionMismatch)
+        );
+    }
+
+    #[test]
+    fn shape_errors() {
+        assert_eq!(
+            HermiteData::new(ints(&[0]), ints(&[1, 2]), q(0, 1), q(1, 1)),
+            Err(HermiteError::LengthMismatch { start: 1, end: 2 })
+        );
+        assert_eq!(
+            HermiteData::new(ints(&[0]), ints(&[1]), q(1, 1), q(1, 1)),
+            Err(HermiteError::EmptyInterval)
+        );
+        assert_eq!(
+            HermiteData::<BigRational>::new(vec![], vec![], q(0, 1), q(1, 1)),
+            Err(HermiteError::Empty)
+        );
+    }
+
+    #[test]
+    fn f64_scale_overflow_is_an_error() {
+        // m = 200: 401!/201! ≈ 1e496 overflows f64 (m = 119 still fits: 239!/120! ≈ 1e267).
+        let data = HermiteData::new(vec![0.0; 201], vec![0.0; 201], 0.0, 1.0).unwrap();
+        assert!(matches!(
+            data.solve(),
+            Err(HermiteError::ScaleNotRepresentable { .. })
+        ));
+    }
+}

@@ -1,0 +1,14 @@
+//! The algorithms of the five papers, each written once over [`Field`](crate::scalar::Field)
+//! or [`Real`](crate::scalar::Real); none uses another.
+//!
+//! - [`hermite`]: two-point Hermite data → Bernstein control points (paper 000).
+//! - [`ph`]: Pythagorean-hodograph curves, moving frames, PHODCOS conversion (paper 001).
+//! - [`bspline`]: cardinal B-splines, optimal interpolating/smoothing splines, bang-bang control (paper 002).
+//! - [`gerbs`]: GERBS blending, BFBS/ERBS bases, curvature-continuous UAV paths, Dubins (paper 003).
+//! - [`param`]: natural cubic splines and the optimal knot parametrization of Marin (paper 004).
+
+pub mod bspline;
+pub mod gerbs;
+pub mod hermite;
+pub mod param;
+pub mod ph;

@@ -1,0 +1,282 @@
+//! Gradient projection for min G(h) over the simplex B = {h ≥ 0, Σhᵢ = 1} (paper 004, Eq. 30).
+//!
+//! h⁽ⁱ⁾ = h⁽ⁱ⁻¹⁾ − λ·π_B(∇G), with λ minimizing f(λ) = G(h − λp) on [0, λ_max] (λ_max: the largest
+//! step keeping every hᵢ ≥ 0). The line search is exact in the sense of the paper: it solves
+//! f′(λ) = −∇G(h − λp)·p = 0, which has f′(0) = −‖p‖² < 0 and f′ → +∞ towards λ_max (G is
+//! infinite where a spacing vanishes for data with zᵢ ≠ zᵢ₊₁), by the Illinois variant of
+//! regula falsi on a bracket inside (0, λ_max) until the bracket or f′ is at the working
+//! precision. The iteration stops when ‖π_B(∇G)‖ ≤ `tolerance`·‖π_B(∇G(h⁽⁰⁾))‖ or after
+//! `max_iterations`; both are reported, so a result that stopped on the iteration limit is
+//! visible as such.
+//!
+//! The project minimizes G in two stages, [`descend`] then [`polish`]: gradient projection in
+//! f64 only has to land in Newton's basin (relative tolerance [`DESCENT_TOLERANCE`], at most
+//! [`DESCENT_MAX_ITERATIONS`] iterations), and Newton's method on the optimality system
+//! ([`newton_polish`], at most [`NEWTON_MAX_STEPS`] steps) then converges quadratically at
+//! any precision. Every caller (the `marin` command and the paper-004 claims) uses this one
+//! pipeline.
+
+use super::gradient::{gradient, project};
+use super::natural::SplineError;
+use super::objective::{objective, Objective};
+use crate::scalar::{Field, Real};
+
+/// Where and how the iteration stopped.
+#[derive(Clone, Debug)]
+pub struct Descent<T> {
+    pub h: Vec<T>,
+    pub objective: T,
+    pub iterations: usize,
+    /// ‖π_B(∇G)‖ at the final h.
+    pub projected_gradient_norm: T,
+    /// ‖π_B(∇G)‖ at the start, for the relative stopping rule.
+    pub initial_gradient_norm: T,
+    /// Whether the relative tolerance was met (otherwise the iteration limit stopped it).
+    pub converged: bool,
+}
+
+fn dot<T: Field>(a: &[T], b: &[T]) -> T {
+    let mut acc = T::zero_in(&a[0].ctx());
+    for (x, y) in a.iter().zip(b) {
+        acc.mul_add_assign(x, y);
+    }
+    acc
+}
+
+fn step<T: Field>(h: &[T], p: &[T], lambda: &T) -> Vec<T> {
+    h.iter()
+        .zip(p)
+        .map(|(x, d)| x.clone() - &(lambda.clone() * d))
+        .collect()
+}
+
+/// The f64 descent stops when ‖π_B(∇G)‖ has fallen by this factor from its start…
+pub const DESCENT_TOLERANCE: f64 = 1e-6;
+/// … or after this many iterations.
+pub const DESCENT_MAX_ITERATIONS: usize = 5000;
+/// The most Newton steps [`polish`] takes (it stops earlier when a step no longer changes h).
+pub const NEWTON_MAX_STEPS: usize = 60;
+
+/// Stage one: gradient projection in f64 from `h0`, calling `observe(i, h⁽ⁱ⁾)` after every
+/// iteration (pass `&mut |_, _| {}` when nothing is observed).
+pub fn descend(
+    h0: Vec<f64>,
+    z: &[Vec<f64>],
+    alpha: &[f64],
+    form: Objective,
+    observe: &mut dyn FnMut(usize, &[f64]),
+) -> Result<Descent<f64>, SplineError> {
+    gradient_projection_observed(
+        h0,
+        z,
+        alpha,
+        form,
+        &DESCENT_TOLERANCE,
+        DESCENT_MAX_ITERATIONS,
+        observe,
+    )
+}
+
+/// Stage two: Newton's method in the number type of `z` from the f64 descent's end point.
+pub fn polish<T: Real>(
+    rough: &Descent<f64>,
+    z: &[Vec<T>],
+    alpha: &[T],
+    form: Objective,
+) -> Result<Vec<T>, SplineError> {
+    let ctx = alpha[0].ctx();
+    let start = rough.h.iter().map(|x| T::from_f64(*x, &ctx)).collect();
+    newton_polish(start, z, alpha, form, NEWTON_MAX_STEPS)
+}
+
+/// Minimize G from `h0` (a point of B with all hᵢ > 0).
+pub fn gradient_projection<T: Real>(
+    h0: Vec<T>,
+    z: &[Vec<T>],
+    alpha: &[T],
+    form: Objective,
+    tolerance: &T,
+    max_iterations: usize,
+) -> Result<Descent<T>, SplineError> {
+    gradient_projection_observed(
+        h0,
+        z,
+        alpha,
+        form,
+        tolerance,
+        max_iterations,
+        &mut |_, _| {},
+    )
+}
+
+/// [`gradient_projection`], calling `observe(i, h⁽ⁱ⁾)` after every iteration.
+pub fn gradient_projection_observed<T: Real>(
+    h0: Vec<T>,
+    z: &[Vec<T>],
+    alpha: &[T],
+    form: Objective,
+    tolerance: &T,
+    max_iterations: usize,
+    observe: &mut dyn FnMut(usize, &[T]),
+) -> Result<Descent<T>, SplineError> {
+    let ctx = h0[0].ctx();
+    let zero = T::zero_in(&ctx);
+    let mut h = h0;
+    let mut p = project(&gradient(&h, z, alpha, form)?);
+    let initial = dot(&p, &p).sqrt();
+    let mut norm = initial.clone();
+    let mut iterations = 0;
+    let target = tolerance.clone() * &initial;
+    while iterations < max_iterations && norm > target && !norm.is_zero() {
+        // λ_max: the first spacing to reach zero along −p.
+        let lambda_max = h
+            .iter()
+            .zip(&p)
+            .filter(|(_, d)| **d > zero)
+            .map(|(x, d)| x.clone() / d)
+            .fold(None, |m: Option<T>, v| match m {
+                Some(m) if m <= v => Some(m),
+                _ => Some(v),
+            });
+        let Some(lambda_max) = lambda_max else { break };
+        let slope = |lambda: &T| -> Result<T, SplineError> {
+            Ok(-dot(&gradient(&step(&h, &p, lambda), z, alpha, form)?, &p))
+        };
+        // Bracket: f′(0) < 0; move the upper end towards λ_max until f′ > 0.
+        let two = T::from_i64(2, &ctx);
+        let (mut lo, mut f_lo) = (zero.clone(), -dot(&p, &p));
+        let mut hi = lambda_max.clone() / &two;
+        let mut f_hi = slope(&hi)?;
+        let mut gap = lambda_max.clone() / &two;
+        let mut guard = 0;
+        while f_hi < zero && guard < 200 {
+            lo = hi.clone();
+            f_lo = f_hi;
+            gap /= &two;
+            hi = lambda_max.clone() - &gap;
+            f_hi = slope(&hi)?;
+            guard += 1;
+        }
+        let lambda = if f_hi < zero {
+            hi
+        } else {
+            illinois(&slope, lo, f_lo, hi, f_hi, T::epsilon(&ctx))?
+        };
+        h = step(&h, &p, &lambda);
+        p = project(&gradient(&h, z, alpha, form)?);
+        norm = dot(&p, &p).sqrt();
+        iterations += 1;
+        observe(iterations, &h);
+    }
+    let value = objective(&h, z, alpha, form)?;
+    Ok(Descent {
+        converged: norm <= target,
+        h,
+        objective: value,
+        iterations,
+        projected_gradient_norm: norm,
+        initial_gradient_norm: initial,
+    })
+}
+
+/// A root of `f` in [lo, hi] with f(lo) < 0 < f(hi), by regula falsi with the Illinois
+/// modification (superlinear, always bracketed).
+fn illinois<T: Real>(
+    f: &dyn Fn(&T) -> Result<T, SplineError>,
+    mut lo: T,
+    mut f_lo: T,
+    mut hi: T,
+    mut f_hi: T,
+    eps: T,
+) -> Result<T, SplineError> {
+    let ctx = lo.ctx();
+    let zero = T::zero_in(&ctx);
+    let half = T::from_ratio(1, 2, &ctx);
+    let mut last_side = 0i8;
+    for _ in 0..(4 * T::precision_bits(&ctx) as usize) {
+        let width = hi.clone() - &lo;
+        if width <= eps.clone() * &hi.abs() {
+            break;
+        }
+        let x = lo.clone() - &(f_lo.clone() * &width / &(f_hi.clone() - &f_lo));
+        // Guard against a point on the bracket's edge (no progress): bisect instead.
+        let x = if x <= lo || x >= hi {
+            (lo.clone() + &hi) * &half
+        } else {
+            x
+        };
+        let fx = f(&x)?;
+        if fx.is_zero() {
+            return Ok(x);
+        }
+        if fx < zero {
+            lo = x;
+            f_lo = fx;
+            if last_side == -1 {
+                f_hi *= &half;
+            }
+            last_side = -1;
+        } else {
+            hi = x;
+            f_hi = fx;
+            if last_side == 1 {
+                f_lo *= &half;
+            }
+            last_side = 1;
+        }
+    }
+    Ok((lo + &hi) * &half)
+}
+
+/// Newton's method on the optimality system ∇G(h) − μ·1 = 0, Σhᵢ = 1, from a nearby `h`
+/// (e.g. a gradient projection iterate): each step solves
+/// [[∇²G, 1], [1ᵀ, 0]]·[δh; δμ] = [μ1 − ∇G; 1 − Σhᵢ], with the Hessian's columns obtained exactly
+/// (to the working precision) by evaluating the gradient in dual numbers. Stops after
+/// `steps` steps or when a step no longer changes h at the working precision.
+pub fn newton_polish<T: Real>(
+    mut h: Vec<T>,
+    z: &[Vec<T>],
+    alpha: &[T],
+    form: Objective,
+    steps: usize,
+) -> Result<Vec<T>, SplineError> {
+    use crate::numeric::linalg::{solve, Matrix};
+    use crate::scalar::dual::Dual;
+    let ctx = h[0].ctx();
+    let n = h.len();
+    let zd: Vec<Vec<Dual<T>>> = z
+        .iter()
+        .map(|c| c.iter().cloned().map(Dual::constant).collect())
+        .collect();
+    let ad: Vec<Dual<T>> = alpha.iter().cloned().map(Dual::constant).collect();
+    for _ in 0..steps {
+        let g = gradient(&h, z, alpha, form)?;
+        let mut hessian = Matrix::zeros(n + 1, n + 1, &ctx);
+        for k in 0..n {
+            let hd = Dual::seeded(&h, k);
+            let column = gradient(&hd, &zd, &ad, form)?;
+            for (i, c) in column.iter().enumerate() {
+                hessian[(i, k)] = c.du.clone();
+            }
+            hessian[(n, k)] = T::one_in(&ctx);
+            hessian[(k, n)] = T::one_in(&ctx);
+        }
+        // μ estimate: the mean gradient (the multiplier for which μ1 − ∇G is ⟂ 1).
+        let mean = g.iter().fold(T::zero_in(&ctx), |a, x| a + x) / &T::from_i64(n as i64, &ctx);
+        let mut rhs: Vec<T> = g.iter().map(|x| mean.clone() - x).collect();
+        // The constraint row restores Σhᵢ = 1 (a start rounded from another precision misses it).
+        let total = h.iter().fold(T::zero_in(&ctx), |a, x| a + x);
+        rhs.push(T::one_in(&ctx) - &total);
+        let Ok(delta) = solve(&hessian, &rhs) else {
+            break;
+        };
+        let size = delta[..n]
+            .iter()
+            .fold(T::zero_in(&ctx), |m, d| crate::scalar::max_of(m, d.abs()));
+        h = h.iter().zip(&delta).map(|(x, d)| x.clone() + d).collect();
+        if size <= T::epsilon(&ctx) * &T::from_i64(4, &ctx) {
+            break;
+        }
+    }
+    Ok(h)
+}

@@ -1,0 +1,247 @@
+//! Natural cubic spline interpolation on arbitrary knots, over any [`Field`] (paper 004).
+//!
+//! For knots t₀ < … < t_N and ordinates z₀…z_N, with hᵢ = tᵢ − tᵢ₋₁, the second derivatives
+//! mᵢ = θ″(tᵢ) satisfy m₀ = m_N = 0 and the tridiagonal system M·m = Q·z of paper 004
+//! (Sec. 3): Mᵢ,ᵢ₋₁ = hᵢ/6, Mᵢᵢ = (hᵢ + hᵢ₊₁)/3, Mᵢ,ᵢ₊₁ = hᵢ₊₁/6 and
+//! Qᵢ,ᵢ₋₁ = 1/hᵢ, Qᵢᵢ = −(1/hᵢ + 1/hᵢ₊₁), Qᵢ,ᵢ₊₁ = 1/hᵢ₊₁, i = 1…N−1. M is strictly diagonally
+//! dominant, so elimination without pivoting (the Thomas algorithm) is stable; in rationals it
+//! is exact. On [tᵢ₋₁, tᵢ], θ″ is linear between mᵢ₋₁ and mᵢ, so
+//! ∫θ″² = Σᵢ hᵢ(mᵢ₋₁² + mᵢ₋₁mᵢ + mᵢ²)/3 = zᵀQᵀM⁻¹Qz (Eq. 31 for one component).
+
+use crate::numeric::quadrature::gauss_legendre4;
+use crate::scalar::{Field, Real};
+
+/// Why a spline cannot be built.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum SplineError {
+    #[error("need at least two knots")]
+    TooFewKnots,
+    #[error("{knots} knots but {values} values")]
+    LengthMismatch { knots: usize, values: usize },
+    #[error("knot #{index} is not greater than the knot before it")]
+    NotIncreasing { index: usize },
+}
+
+/// The natural cubic spline through (tᵢ, zᵢ).
+#[derive(Clone, Debug)]
+pub struct NaturalCubicSpline<T> {
+    knots: Vec<T>,
+    values: Vec<T>,
+    /// θ″ at the knots (zero at both ends).
+    second: Vec<T>,
+}
+
+impl<T: Field> NaturalCubicSpline<T> {
+    pub fn new(knots: Vec<T>, values: Vec<T>) -> Result<Self, SplineError> {
+        if knots.len() < 2 {
+            return Err(SplineError::TooFewKnots);
+        }
+        if knots.len() != values.len() {
+            return Err(SplineError::LengthMismatch {
+                knots: knots.len(),
+                values: values.len(),
+            });
+        }
+        if let Some(i) = (1..knots.len()).find(|&i| knots[i] <= knots[i - 1]) {
+            return Err(SplineError::NotIncreasing { index: i });
+        }
+        let second = second_derivatives(&knots, &values);
+        Ok(NaturalCubicSpline {
+            knots,
+            values,
+            second,
+        })
+    }
+
+    pub fn knots(&self) -> &[T] {
+        &self.knots
+    }
+
+    /// θ″ at the knots.
+    pub fn second_derivatives_at_knots(&self) -> &[T] {
+        &self.second
+    }
+
+    /// The interval index i with t in [tᵢ₋₁, tᵢ] (clamped to the first and last interval):
+    /// the first i ≥ 1 with t ≤ tᵢ, found by bisection since the knots increase.
+    fn interval(&self, t: &T) -> usize {
+        let n = self.knots.len() - 1;
+        let first_not_below = 1 + self.knots[1..].partition_point(|k| k < t);
+        first_not_below.min(n)
+    }
+
+    /// (θ, θ′, θ″)(t); outside [t₀, t_N] the end cubic pieces are extended.
+    pub fn eval_all(&self, t: &T) -> [T; 3] {
+        let i = self.interval(t);
+        let ctx = t.ctx();
+        let (a, b) = (&self.knots[i - 1], &self.knots[i]);
+        let h = b.clone() - a;
+        let (za, zb, ma, mb) = (
+            &self.values[i - 1],
+            &self.values[i],
+            &self.second[i - 1],
+            &self.second[i],
+        );
+        let six = T::from_i64(6, &ctx);
+        let two = T::from_i64(2, &ctx);
+        let (u, v) = (b.clone() - t, t.clone() - a); // distances to the ends
+                                                     // θ = ma·u³/(6h) + mb·v³/(6h) + (za/h − ma·h/6)·u + (zb/h − mb·h/6)·v
+        let ca = za.clone() / &h - &(ma.clone() * &h / &six);
+        let cb = zb.clone() / &h - &(mb.clone() * &h / &six);
+        let value = ma.clone() * &u * &u * &u / &(six.clone() * &h)
+            + &(mb.clone() * &v * &v * &v / &(six * &h))
+            + &(ca.clone() * &u)
+            + &(cb.clone() * &v);
+        let slope = -(ma.clone() * &u * &u) / &(two.clone() * &h)
+            + &(mb.clone() * &v * &v / &(two * &h))
+            - &ca
+            + &cb;
+        let curvature = (ma.clone() * &u + &(mb.clone() * &v)) / &h;
+        [value, slope, curvature]
+    }
+
+    /// ∫ θ″² over [t₀, t_N], exactly from the piecewise-linear θ″.
+    pub fn bending_energy(&self) -> T {
+        let ctx = self.values[0].ctx();
+        let three = T::from_i64(3, &ctx);
+        let mut total = T::zero_in(&ctx);
+        for i in 1..self.knots.len() {
+            let h = self.knots[i].clone() - &self.knots[i - 1];
+            let (a, b) = (&self.second[i - 1], &self.second[i]);
+            let inner = a.clone() * a + &(a.clone() * b) + &(b.clone() * b);
+            total += &(h * &inner / &three);
+        }
+        total
+    }
+}
+
+impl<T: Real> NaturalCubicSpline<T> {
+    /// ‖θ − φ‖²_H¹ = ∫ (θ − φ)² + (θ′ − φ′)² over [t₀, t_N], with φ the piecewise-linear
+    /// interpolant of the same data (paper 004, Sec. 1 (i), bounds it by ∫θ″²). On each
+    /// interval θ − φ is a cubic, so both integrands (degrees 6 and 4) are integrated exactly
+    /// by the 4-point Gauss–Legendre rule.
+    pub fn h1_distance_to_polyline_squared(&self) -> T {
+        let (t, z) = (&self.knots, &self.values);
+        let ctx = z[0].ctx();
+        let nodes = gauss_legendre4::<T>(&ctx);
+        let mut h1 = T::zero_in(&ctx);
+        for i in 1..t.len() {
+            let h = t[i].clone() - &t[i - 1];
+            let slope = (z[i].clone() - &z[i - 1]) / &h;
+            for (x, w) in &nodes {
+                let at = t[i - 1].clone() + &(h.clone() * x);
+                let [v, d, _] = self.eval_all(&at);
+                let e = v - &(z[i - 1].clone() + &(slope.clone() * &(at - &t[i - 1])));
+                let de = d - &slope;
+                h1 += &((e.clone() * &e + &(de.clone() * &de)) * w * &h);
+            }
+        }
+        h1
+    }
+}
+
+/// Solve M·m = Q·z for the interior second derivatives (Thomas algorithm); m₀ = m_N = 0.
+fn second_derivatives<T: Field>(t: &[T], z: &[T]) -> Vec<T> {
+    let n = t.len() - 1;
+    let ctx = z[0].ctx();
+    let mut m = vec![T::zero_in(&ctx); n + 1];
+    if n < 2 {
+        return m;
+    }
+    let h: Vec<T> = (1..=n).map(|i| t[i].clone() - &t[i - 1]).collect(); // h[i-1] = hᵢ
+    let (three, six) = (T::from_i64(3, &ctx), T::from_i64(6, &ctx));
+    // Rows i = 1…N−1: sub = hᵢ/6, diag = (hᵢ + hᵢ₊₁)/3, sup = hᵢ₊₁/6, rhs = (Qz)ᵢ.
+    let mut diag: Vec<T> = (1..n)
+        .map(|i| (h[i - 1].clone() + &h[i]) / &three)
+        .collect();
+    let sub: Vec<T> = (1..n).map(|i| h[i - 1].clone() / &six).collect();
+    let sup: Vec<T> = (1..n).map(|i| h[i].clone() / &six).collect();
+    let mut rhs: Vec<T> = (1..n)
+        .map(|i| (z[i + 1].clone() - &z[i]) / &h[i] - &((z[i].clone() - &z[i - 1]) / &h[i - 1]))
+        .collect();
+    for r in 1..n - 1 {
+        let factor = sub[r].clone() / &diag[r - 1];
+        let d = factor.clone() * &sup[r - 1];
+        diag[r] -= &d;
+        let b = factor * &rhs[r - 1];
+        rhs[r] -= &b;
+    }
+    for r in (0..n - 1).rev() {
+        let mut v = rhs[r].clone();
+        if r + 1 < n - 1 {
+            v -= &(sup[r].clone() * &m[r + 2]);
+        }
+        m[r + 1] = v / &diag[r];
+    }
+    m
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scalar::BigRational;
+
+    fn q(n: i64, d: i64) -> BigRational {
+        BigRational::new(n.into(), d.into())
+    }
+
+    #[test]
+    fn reproduces_cubic_free_data_and_interpolates() {
+        // Linear data: θ is the line, no bending.
+        let s = NaturalCubicSpline::new(
+            vec![q(0, 1), q(1, 3), q(1, 1)],
+            vec![q(1, 1), q(2, 1), q(4, 1)],
+        )
+        .unwrap();
+        for (t, z) in s.knots().to_vec().iter().zip([q(1, 1), q(2, 1), q(4, 1)]) {
+            assert_eq!(s.eval_all(t)[0], z);
+        }
+        let lin = NaturalCubicSpline::new(
+            vec![q(0, 1), q(1, 4), q(1, 1)],
+            vec![q(0, 1), q(1, 2), q(2, 1)],
+        )
+        .unwrap();
+        assert_eq!(lin.bending_energy(), q(0, 1));
+        assert_eq!(lin.eval_all(&q(1, 2)), [q(1, 1), q(2, 1), q(0, 1)]);
+    }
+
+    #[test]
+    fn h1_distance_vanishes_on_a_line_and_is_bounded_by_the_energy() {
+        use crate::scalar::Float;
+        let line = NaturalCubicSpline::new(vec![0.0, 1.0, 3.0], vec![1.0, 3.0, 7.0]).unwrap();
+        assert!(line.h1_distance_to_polyline_squared().abs() < 1e-28);
+        let f = |x: f64| Float::with_val(128, x);
+        let bent =
+            NaturalCubicSpline::new(vec![f(0.0), f(1.0), f(2.0)], vec![f(0.0), f(1.0), f(0.0)])
+                .unwrap();
+        let h1 = bent.h1_distance_to_polyline_squared();
+        // Positive, and below ∫θ″² = 6 (Sec. 1 (i) of paper 004 on knots of spacing ≤ 1).
+        assert!(h1 > 0 && h1 < bent.bending_energy(), "{h1}");
+    }
+
+    #[test]
+    fn second_derivative_is_continuous_and_natural() {
+        let t = vec![q(0, 1), q(1, 5), q(1, 2), q(7, 10), q(1, 1)];
+        let z = vec![q(0, 1), q(1, 1), q(-1, 2), q(2, 1), q(1, 1)];
+        let s = NaturalCubicSpline::new(t.clone(), z).unwrap();
+        assert_eq!(s.eval_all(&t[0])[2], q(0, 1));
+        assert_eq!(s.eval_all(&t[4])[2], q(0, 1));
+        // θ′ continuous at an interior knot: compare the two pieces' formulas there.
+        let eps = q(1, 1_000_000);
+        let left = s.eval_all(&(t[2].clone() - &eps))[1].clone();
+        let right = s.eval_all(&(t[2].clone() + &eps))[1].clone();
+        assert!((left - right).abs() < q(1, 1000));
+    }
+
+    #[test]
+    fn errors() {
+        assert_eq!(
+            NaturalCubicSpline::new(vec![q(0, 1)], vec![q(0, 1)]).unwrap_err(),
+            SplineError::TooFewKnots
+        );
+        assert_eq!(
+            NaturalCubicSpline::new(vec![q(0, 1), q(0, 1)], vec![q(0, 1), q(1, 1)]).unwrap_err(),
+            SplineError::NotIncreasing { index: 1 }
+        );
+    }
+}

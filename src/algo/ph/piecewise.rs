@@ -1,0 +1,596 @@
+//! Piecewise PH conversion of a curve (paper 001, Sec. 5E–F, Algorithm 2) and its error.
+//!
+//! The interval [a, b] is split into N uniform segments of length h. On segment k the curve
+//! γ_k(ξ) = γ(t_k + hξ), ξ ∈ [0, 1], gives Hermite data with derivatives h^j γ⁽ʲ⁾(t_k) (the
+//! paper's Eq. 20), interpolated by [`super::hermite::interpolate`]. Successive segments then
+//! share A i A* at the joint, so their preimages differ by a roll A_{k+1}(0) = A_k(1) Q(β)
+//! (Sec. 5E). [`align_roll`] multiplies every control point of segment k+1 on the right by
+//! Q(−β) (Eq. 22): right multiplication by cos α + i sin α commutes with i, so the hodograph
+//! and the curve are unchanged while A, R and ω become continuous. (Eq. 22b prints a left
+//! product A_α A_i, which would rotate the curve; see the claims.)
+//!
+//! The conversion error E = max_ξ ‖γ(ξ) − p(ξ)‖ (Eqs. 2, 21) is computed as a true maximum:
+//! f(ξ) = ‖γ_k(ξ) − p_k(ξ)‖² is sampled on a uniform grid in every segment and each sampled
+//! local maximum is refined by Newton's method on f′ = 0 with the exact second derivative
+//! (curve derivatives from Taylor-mode AD, curve polynomial in local power form), kept inside
+//! the bracket of its neighbouring samples. The sampled maximum is reported too.
+
+use super::hermite::{interpolate, FreeParameters, HermiteData, PhHermiteError};
+use super::{bernstein_jet, PhCurve};
+use crate::curve::taylor::Taylor;
+use crate::curve::Curve;
+use crate::numeric::quat::{vec3, Quat};
+use crate::scalar::certify::{certify, Certified};
+use crate::scalar::{BigRational, Field, Float, Real};
+use rayon::prelude::*;
+
+/// A curve converted on N uniform segments of [a, b].
+#[derive(Clone, Debug)]
+pub struct PiecewisePh<T> {
+    pub a: T,
+    pub b: T,
+    pub segments: Vec<PhCurve<T>>,
+}
+
+impl<T: Real> PiecewisePh<T> {
+    /// Segment length h = (b − a)/N.
+    pub fn step(&self) -> T {
+        let ctx = self.a.ctx();
+        (self.b.clone() - &self.a) / &T::from_i64(self.segments.len() as i64, &ctx)
+    }
+    /// The start t_k = a + k h of segment k (computed as a + (b − a)k/N).
+    pub fn knot(&self, k: usize) -> T {
+        knot(&self.a, &self.b, self.segments.len(), k)
+    }
+    /// The segment containing t and the local parameter ξ ∈ [0, 1] (clamped to [a, b]).
+    pub fn locate(&self, t: &T) -> (usize, T) {
+        let ctx = t.ctx();
+        let n = self.segments.len();
+        let u = (t.clone() - &self.a) / &self.step();
+        let mut k = 0usize;
+        // The floor of u, found by comparison so no conversion of huge values can overflow.
+        let nn = T::from_i64(n as i64, &ctx);
+        let u = if u < T::zero_in(&ctx) {
+            T::zero_in(&ctx)
+        } else if u > nn {
+            nn
+        } else {
+            u
+        };
+        let (mut lo, mut hi) = (0usize, n);
+        while hi - lo > 1 {
+            let mid = (lo + hi) / 2;
+            if u >= T::from_i64(mid as i64, &ctx) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        k = k.max(lo);
+        let xi = u - &T::from_i64(k as i64, &ctx);
+        (k, xi)
+    }
+}
+
+/// a + (b − a) k / N.
+pub fn knot<T: Field>(a: &T, b: &T, n: usize, k: usize) -> T {
+    let ctx = a.ctx();
+    a.clone() + &((b.clone() - a) * &T::from_i64(k as i64, &ctx) / &T::from_i64(n as i64, &ctx))
+}
+
+/// γ(t), h γ′(t), …, h^m γ⁽ᵐ⁾(t): the jet in the local parameter of a segment of length h
+/// (Eq. 20).
+pub fn segment_jet<T: Real, C: Curve<T> + ?Sized>(
+    curve: &C,
+    t: &T,
+    h: &T,
+    m: usize,
+) -> Vec<[T; 3]> {
+    let mut jet = curve.jet(t, m);
+    let mut scale = T::one_in(&h.ctx());
+    for d in jet.iter_mut().skip(1) {
+        scale *= h;
+        *d = vec3::scale(d, &scale);
+    }
+    jet
+}
+
+/// The Hermite data of every segment: derivatives 1…m scaled by h^j (Eq. 20).
+pub fn segment_data<T: Real, C: Curve<T> + ?Sized>(
+    curve: &C,
+    a: &T,
+    b: &T,
+    segments: usize,
+    m: usize,
+) -> Vec<HermiteData<T>> {
+    let ctx = a.ctx();
+    let h = (b.clone() - a) / &T::from_i64(segments as i64, &ctx);
+    let jets: Vec<Vec<[T; 3]>> = (0..=segments)
+        .into_par_iter()
+        .map(|k| segment_jet(curve, &knot(a, b, segments, k), &h, m))
+        .collect();
+    (0..segments)
+        .map(|k| HermiteData::from_jets(&jets[k], &jets[k + 1]))
+        .collect()
+}
+
+/// Convert `curve` on `segments` uniform pieces of [a, b] with C^m interpolants (m = 4:
+/// PHODCOS; m = 2: the C² baseline) and free parameters `free` on every segment; with
+/// `roll`, apply the roll correction of Eq. (22) so A, R and ω are continuous.
+pub fn convert<T: Real, C: Curve<T> + ?Sized>(
+    curve: &C,
+    a: &T,
+    b: &T,
+    segments: usize,
+    m: usize,
+    free: &FreeParameters<T>,
+    roll: bool,
+) -> Result<PiecewisePh<T>, PhHermiteError> {
+    let data = segment_data(curve, a, b, segments, m);
+    let mut pieces = data
+        .par_iter()
+        .map(|d| interpolate(d, free))
+        .collect::<Result<Vec<_>, _>>()?;
+    if roll {
+        align_roll(&mut pieces);
+    }
+    Ok(PiecewisePh {
+        a: a.clone(),
+        b: b.clone(),
+        segments: pieces,
+    })
+}
+
+/// Make the preimage continuous at every joint (Eq. 22, as a right product): segment k+1
+/// is multiplied on the right by the unit Q(α) = cos α + i sin α with A_{k+1}(0) Q(α) = A_k(1).
+pub fn align_roll<T: Real>(segments: &mut [PhCurve<T>]) {
+    for k in 1..segments.len() {
+        let end = segments[k - 1].preimage.last().expect("preimage").clone();
+        let start = &segments[k].preimage[0];
+        // A_{k+1}(0)* A_k(1) = |A|² Q(α) when both solve X i X* = v; drop the j, k parts
+        // left by rounding so the correction commutes with i exactly.
+        let q = start.conj().mul(&end);
+        let ctx = q.ctx();
+        let len = (q.w.clone() * &q.w + &(q.x.clone() * &q.x)).sqrt();
+        if len.is_zero() {
+            continue;
+        }
+        let inv = T::one_in(&ctx) / &len;
+        let z = T::zero_in(&ctx);
+        let rot = Quat::new(q.w.clone() * &inv, q.x.clone() * &inv, z.clone(), z);
+        for a in segments[k].preimage.iter_mut() {
+            *a = a.mul(&rot);
+        }
+    }
+}
+
+/// The conversion error of one conversion.
+#[derive(Clone, Debug)]
+pub struct ConversionError<T> {
+    /// max over ξ of ‖γ − p‖, refined to the working precision.
+    pub max: T,
+    /// The maximum over the sample grid only.
+    pub sampled: T,
+    /// Where the maximum is: segment and local parameter.
+    pub segment: usize,
+    pub xi: T,
+}
+
+/// Samples per segment for locating the maxima before refinement.
+pub const DEFAULT_SAMPLES: usize = 16;
+
+/// E = max_ξ ‖γ(ξ) − p(ξ)‖ over all segments (Eq. 21), sampled with `samples` intervals per
+/// segment, then refined.
+pub fn conversion_error<T: Real, C: Curve<T> + ?Sized>(
+    curve: &C,
+    pw: &PiecewisePh<T>,
+    samples: usize,
+) -> ConversionError<T> {
+    let h = pw.step();
+    let per_segment: Vec<(T, T, T)> = pw
+        .segments
+        .par_iter()
+        .enumerate()
+        .map(|(k, seg)| segment_error(curve, seg, &pw.knot(k), &h, samples))
+        .collect();
+    let mut best = 0usize;
+    for k in 1..per_segment.len() {
+        if per_segment[k].0 > per_segment[best].0 {
+            best = k;
+        }
+    }
+    let mut sampled = per_segment[0].1.clone();
+    for s in &per_segment {
+        if s.1 > sampled {
+            sampled = s.1.clone();
+        }
+    }
+    let (max, _, xi) = per_segment[best].clone();
+    ConversionError {
+        max,
+        sampled,
+        segment: best,
+        xi,
+    }
+}
+
+/// The power-basis coefficients of a Bernstein polynomial on [0, 1] with vector values.
+fn power_form<T: Field>(points: &[[T; 3]]) -> Vec<[T; 3]> {
+    let n = points.len() - 1;
+    let ctx = points[0][0].ctx();
+    // c_k = C(n,k) Δᵏ p_0
+    let mut diffs = points.to_vec();
+    let mut out = Vec::with_capacity(n + 1);
+    for k in 0..=n {
+        if k > 0 {
+            for i in 0..diffs.len() - 1 {
+                diffs[i] = vec3::sub(&diffs[i + 1], &diffs[i]);
+            }
+            diffs.pop();
+        }
+        out.push(vec3::scale(
+            &diffs[0],
+            &T::from_i64(super::binom(n, k), &ctx),
+        ));
+    }
+    out
+}
+
+/// p (and p′, p″ when `order` is 2) at ξ from power-form coefficients (Horner).
+fn horner_jet<T: Field>(c: &[[T; 3]], xi: &T, order: usize) -> [[T; 3]; 3] {
+    let ctx = xi.ctx();
+    let mut p = c[c.len() - 1].clone();
+    let mut d1 = vec3::zero::<T>(&ctx);
+    let mut d2 = vec3::zero::<T>(&ctx);
+    for ck in c.iter().rev().skip(1) {
+        for d in 0..3 {
+            if order > 0 {
+                // d2 = d2 ξ + 2 d1; d1 = d1 ξ + p (before p is updated)
+                let two_d1 = d1[d].clone() + &d1[d];
+                d2[d] = d2[d].clone() * xi + &two_d1;
+                d1[d] = d1[d].clone() * xi + &p[d];
+            }
+            let mut next = ck[d].clone();
+            next.mul_add_assign(&p[d], xi);
+            p[d] = next;
+        }
+    }
+    [p, d1, d2]
+}
+
+/// The squared distance f = |γ_k − p_k|² on one segment, with g = ½f′ and g′ for Newton.
+struct SegmentDistance<'a, T, C: ?Sized> {
+    curve: &'a C,
+    coeffs: Vec<[T; 3]>,
+    t0: T,
+    h: T,
+}
+
+impl<'a, T: Real, C: Curve<T> + ?Sized> SegmentDistance<'a, T, C> {
+    fn new(curve: &'a C, seg: &PhCurve<T>, t0: &T, h: &T) -> Self {
+        SegmentDistance {
+            curve,
+            coeffs: power_form(&seg.control_points()),
+            t0: t0.clone(),
+            h: h.clone(),
+        }
+    }
+    /// f(ξ).
+    fn value(&self, xi: &T) -> T {
+        let t = self.t0.clone() + &(self.h.clone() * xi);
+        let g = self.curve.jet(&t, 0);
+        let p = horner_jet(&self.coeffs, xi, 0);
+        let e0 = vec3::sub(&g[0], &p[0]);
+        vec3::dot(&e0, &e0)
+    }
+    /// (g, g′) with g = (γ−p)·(hγ′−p′) = ½f′ and g′ = |hγ′−p′|² + (γ−p)·(h²γ″−p″).
+    fn slope(&self, xi: &T) -> (T, T) {
+        let t = self.t0.clone() + &(self.h.clone() * xi);
+        let g = self.curve.jet(&t, 2);
+        let p = horner_jet(&self.coeffs, xi, 2);
+        let e0 = vec3::sub(&g[0], &p[0]);
+        let e1 = vec3::sub(&vec3::scale(&g[1], &self.h), &p[1]);
+        let h2 = self.h.clone() * &self.h;
+        let e2 = vec3::sub(&vec3::scale(&g[2], &h2), &p[2]);
+        let slope = vec3::dot(&e0, &e1);
+        let curv = vec3::dot(&e1, &e1) + &vec3::dot(&e0, &e2);
+        (slope, curv)
+    }
+    /// Newton on g = 0 from `x`, kept inside (lo, hi); the maximum f found and where.
+    fn refine(&self, mut x: T, lo: &T, hi: &T) -> (T, T) {
+        let ctx = x.ctx();
+        let tolerance = T::epsilon(&ctx).sqrt() * &T::from_ratio(1, 1 << 10, &ctx);
+        let half = T::from_ratio(1, 2, &ctx);
+        let mut previous: Option<T> = None;
+        for _ in 0..40 {
+            let (g, dg) = self.slope(&x);
+            if dg.is_zero() {
+                break;
+            }
+            let step = g / &dg;
+            let mut next = x.clone() - &step;
+            if next <= *lo || next >= *hi || !next.is_finite() {
+                // Newton left the bracket: bisect towards the ascent instead.
+                next = if step < T::zero_in(&ctx) {
+                    (x.clone() + hi) * &half
+                } else {
+                    (x.clone() + lo) * &half
+                };
+            }
+            let moved = (next.clone() - &x).abs();
+            x = next;
+            // Converged, or no longer converging quadratically: the step is then set by
+            // rounding noise in f′ (the error is far below the curve's size) and ξ is as
+            // accurate as f′ allows; f is flat there, so f(ξ) is accurate regardless.
+            let stalled = previous
+                .as_ref()
+                .is_some_and(|p| moved.clone() * &T::from_i64(4, &ctx) > *p);
+            previous = Some(moved.clone());
+            if stalled || moved <= tolerance {
+                break;
+            }
+        }
+        (self.value(&x), x)
+    }
+}
+
+/// (refined max, sampled max, argmax ξ) of ‖γ_k − p_k‖ on one segment.
+fn segment_error<T: Real, C: Curve<T> + ?Sized>(
+    curve: &C,
+    seg: &PhCurve<T>,
+    t0: &T,
+    h: &T,
+    samples: usize,
+) -> (T, T, T) {
+    let ctx = h.ctx();
+    let dist = SegmentDistance::new(curve, seg, t0, h);
+    let samples = samples.max(2);
+    let grid: Vec<T> = (0..=samples)
+        .map(|i| T::from_ratio(i as i64, samples as i64, &ctx))
+        .collect();
+    let values: Vec<T> = grid.iter().map(|x| dist.value(x)).collect();
+    let mut sampled_best = 0usize;
+    for i in 1..values.len() {
+        if values[i] > values[sampled_best] {
+            sampled_best = i;
+        }
+    }
+    let mut best = (values[sampled_best].clone(), grid[sampled_best].clone());
+    for i in 1..samples {
+        if !(values[i] >= values[i - 1] && values[i] >= values[i + 1]) || values[i].is_zero() {
+            continue;
+        }
+        let (f, x) = dist.refine(grid[i].clone(), &grid[i - 1], &grid[i + 1]);
+        if f > best.0 {
+            best = (f, x);
+        }
+    }
+    (best.0.sqrt(), values[sampled_best].sqrt(), best.1)
+}
+
+/// The local maximum of ‖γ_k − p_k‖ near ξ₀ on segment `seg` starting at t0: Newton from ξ₀
+/// inside (ξ₀ − w, ξ₀ + w) ∩ (0, 1). Used to recompute a maximum found at one precision at
+/// a higher one (certified digits).
+pub fn refine_local_max<T: Real, C: Curve<T> + ?Sized>(
+    curve: &C,
+    seg: &PhCurve<T>,
+    t0: &T,
+    h: &T,
+    xi0: &T,
+    width: &T,
+) -> (T, T) {
+    let ctx = h.ctx();
+    let dist = SegmentDistance::new(curve, seg, t0, h);
+    let lo = crate::scalar::max_of(xi0.clone() - width, T::zero_in(&ctx));
+    let hi = xi0.clone() + width;
+    let hi = if hi > T::one_in(&ctx) {
+        T::one_in(&ctx)
+    } else {
+        hi
+    };
+    let (f, x) = dist.refine(xi0.clone(), &lo, &hi);
+    (f.sqrt(), x)
+}
+
+/// A conversion and its error.
+pub type Converted<T> = (PiecewisePh<T>, ConversionError<T>);
+
+/// Algorithm 2: the smallest number of segments (found by doubling from `start`, then
+/// bisection) whose conversion error is below `tolerance`, at most `max_segments`.
+///
+/// The printed algorithm increases N by one from 2; with E = O(h⁶) doubling reaches the
+/// tolerance in a few steps and bisection then finds the smallest N that meets it, assuming
+/// the error decreases with N between the bracketing powers of two (the paper notes the update
+/// strategy "could be further tailored").
+pub fn phodcos<T: Real, C: Curve<T> + ?Sized>(
+    curve: &C,
+    a: &T,
+    b: &T,
+    tolerance: &T,
+    max_segments: usize,
+) -> Result<Option<Converted<T>>, PhHermiteError> {
+    let ctx = a.ctx();
+    let free = FreeParameters::zero(4, &ctx);
+    let attempt = |n: usize| -> Result<(PiecewisePh<T>, ConversionError<T>), PhHermiteError> {
+        let pw = convert(curve, a, b, n, 4, &free, true)?;
+        let e = conversion_error(curve, &pw, DEFAULT_SAMPLES);
+        Ok((pw, e))
+    };
+    let mut n = 1usize;
+    let mut last_fail = 0usize;
+    let found = loop {
+        let r = attempt(n)?;
+        if r.1.max < *tolerance {
+            break r;
+        }
+        last_fail = n;
+        if n >= max_segments {
+            return Ok(None);
+        }
+        n = (2 * n).min(max_segments);
+    };
+    let (mut lo, mut hi, mut best) = (last_fail, n, found);
+    while hi - lo > 1 {
+        let mid = (lo + hi) / 2;
+        let r = attempt(mid)?;
+        if r.1.max < *tolerance {
+            hi = mid;
+            best = r;
+        } else {
+            lo = mid;
+        }
+    }
+    Ok(Some(best))
+}
+
+/// Continuity at the joints: for each derivative order j, the largest jump of a function of
+/// the preimage between the end of segment k and the start of segment k+1, in the global
+/// parameter (local derivatives divided by h^j). `f` maps A as Taylor series of order
+/// `series_order` to the components of interest; their length sets how many orders are
+/// compared.
+pub fn joint_jumps<T: Real>(
+    pw: &PiecewisePh<T>,
+    series_order: usize,
+    f: impl Fn(&Quat<Taylor<T>>) -> Vec<Taylor<T>>,
+) -> Vec<T> {
+    let ctx = pw.a.ctx();
+    let h = pw.step();
+    let mut jumps: Vec<T> = Vec::new();
+    let (zero, one) = (T::zero_in(&ctx), T::one_in(&ctx));
+    for k in 1..pw.segments.len() {
+        let left = f(&pw.segments[k - 1].preimage_taylor(&one, series_order));
+        let right = f(&pw.segments[k].preimage_taylor(&zero, series_order));
+        for (l, r) in left.iter().zip(&right) {
+            let (dl, dr) = (l.derivatives(), r.derivatives());
+            if jumps.len() < dl.len() {
+                jumps.resize(dl.len(), T::zero_in(&ctx));
+            }
+            let mut scale = T::one_in(&ctx);
+            for j in 0..dl.len().min(dr.len()) {
+                if j > 0 {
+                    scale /= &h;
+                }
+                let jump = (dl[j].clone() - &dr[j]).abs() * &scale;
+                if jump > jumps[j] {
+                    jumps[j] = jump;
+                }
+            }
+        }
+    }
+    jumps
+}
+
+/// The three components of ω = 2 vec(A′A*)/|A|² (Eq. 12) as series one order shorter than A.
+pub fn omega_components<T: Field>(a: &Quat<Taylor<T>>) -> Vec<Taylor<T>> {
+    let da = Quat::new(
+        a.w.derivative_series(),
+        a.x.derivative_series(),
+        a.y.derivative_series(),
+        a.z.derivative_series(),
+    );
+    let (_, omega) = super::frame_and_omega(a, &da);
+    omega.to_vec()
+}
+
+/// The components of A (for [`joint_jumps`]).
+pub fn preimage_components<T: Field>(a: &Quat<T>) -> Vec<T> {
+    a.components().to_vec()
+}
+
+/// The nine entries of R = [A i A*, A j A*, A k A*]/|A|² (Eq. 11).
+pub fn frame_entries<T: Field>(a: &Quat<T>) -> Vec<T> {
+    let (frame, _) = super::frame_and_omega(a, a);
+    frame.into_iter().flatten().collect()
+}
+
+/// p at global parameter values from a conversion (for plots and comparisons).
+pub fn sample_points<T: Real>(pw: &PiecewisePh<T>, per_segment: usize) -> Vec<[T; 3]> {
+    let ctx = pw.a.ctx();
+    let mut out = Vec::new();
+    for (k, seg) in pw.segments.iter().enumerate() {
+        let pts = seg.control_points();
+        let first = if k == 0 { 0 } else { 1 };
+        for i in first..=per_segment {
+            let xi = T::from_ratio(i as i64, per_segment as i64, &ctx);
+            out.push(bernstein_jet(&pts, &xi, 0).swap_remove(0));
+        }
+    }
+    out
+}
+
+/// A conversion error computed at p bits over all segments and recomputed at a higher
+/// precision on the segment and near the parameter where the maximum was found.
+#[derive(Clone, Debug)]
+pub struct CertifiedError {
+    /// The maximum at p bits (all segments sampled and refined).
+    pub lo: Float,
+    /// The same local maximum at the higher precision.
+    pub hi: Float,
+    /// The sampled maximum at p bits.
+    pub sampled: Float,
+    pub segment: usize,
+    pub xi: Float,
+}
+
+impl CertifiedError {
+    /// The error with the digits the two precisions agree on.
+    pub fn certified(&self) -> Certified {
+        certify(&self.lo, &self.hi)
+    }
+}
+
+/// The conversion error of `segments` uniform C^m pieces on [a, b] with free parameters
+/// `free`, at `bits` and re-derived at `hi_bits` (see [`CertifiedError`]). `make` builds the
+/// curve at a precision (numbers rounded once into it). The location of the maximum is a
+/// discrete choice made at `bits`; only its value is recomputed, so the certified digits say
+/// how much rounding affected the value, not whether another maximum was missed (the
+/// sampling and the refinement are the same at both precisions).
+#[allow(clippy::too_many_arguments)]
+pub fn certified_error<C: Curve<Float>>(
+    make: impl Fn(u32) -> C,
+    a: &BigRational,
+    b: &BigRational,
+    segments: usize,
+    m: usize,
+    free: &FreeParameters<BigRational>,
+    bits: u32,
+    hi_bits: u32,
+) -> Result<CertifiedError, PhHermiteError> {
+    let lo_curve = make(bits);
+    let (a_lo, b_lo) = (
+        Float::from_rational(a, &bits),
+        Float::from_rational(b, &bits),
+    );
+    let free_lo = free.map(|x| Float::from_rational(x, &bits));
+    let pw = convert(&lo_curve, &a_lo, &b_lo, segments, m, &free_lo, false)?;
+    let e = conversion_error(&lo_curve, &pw, DEFAULT_SAMPLES);
+
+    let hi_curve = make(hi_bits);
+    let (a_hi, b_hi) = (
+        Float::from_rational(a, &hi_bits),
+        Float::from_rational(b, &hi_bits),
+    );
+    let free_hi = free.map(|x| Float::from_rational(x, &hi_bits));
+    let k = e.segment;
+    let h = (b_hi.clone() - &a_hi) / &Float::from_i64(segments as i64, &hi_bits);
+    let jet_at = |j: usize| segment_jet(&hi_curve, &knot(&a_hi, &b_hi, segments, j), &h, m);
+    let data = HermiteData::from_jets(&jet_at(k), &jet_at(k + 1));
+    let seg = interpolate(&data, &free_hi)?;
+    let xi_hi = Float::with_val(hi_bits, &e.xi);
+    let width = Float::from_ratio(1, DEFAULT_SAMPLES as i64, &hi_bits);
+    let (hi, _) = refine_local_max(
+        &hi_curve,
+        &seg,
+        &knot(&a_hi, &b_hi, segments, k),
+        &h,
+        &xi_hi,
+        &width,
+    );
+    Ok(CertifiedError {
+        lo: e.max,
+        hi,
+        sampled: e.sampled,
+        segment: k,
+        xi: e.xi,
+    })
+}

@@ -1,0 +1,431 @@
+//! The trajectory examples of Sec. 4: the turn of Fig. 3 and the landing of Fig. 4.
+//!
+//! The paper does not print the data of these figures; the instances below are ours and
+//! documented in the report.
+//!
+//! **Fig. 3 (turn).** A uniform circular quarter turn of radius R = 1 at speed V = 1:
+//! start p = (0, 0), v = (1, 0), a = (0, 1); end p = (1, 1), v = (0, 1), a = (−1, 0)
+//! (m = 2, degree 5; the accelerations are the centripetal ones of the turn). The nominal
+//! duration is the time the circle takes, T₀ = πR/(2V) = π/2; the figure uses 0.2·T₀, T₀ and
+//! 3·T₀. The text's three descriptions become measurable comparisons, fixed before any
+//! number was computed:
+//! - "almost straight-line": the curve is closer (Hausdorff distance) to the chord from
+//!   start to end than to the circular arc;
+//! - "approximates a circular turn": it is closer to the arc than to the chord;
+//! - "loops away from the terminal point": somewhere its distance from the terminal point
+//!   exceeds the start's distance from it.
+//!
+//! **Fig. 4 (landing).** Runway along +x with its threshold at the origin, altitude z.
+//! The aircraft is on the downwind leg abeam the threshold: p = (0, 2000, 300) m,
+//! v = (−60, 0, 0) m/s, a = 0. It must cross the threshold p = (0, 0, 0) at the landing speed
+//! along the runway, v = (55, 0, 0) m/s, with a = 0, after T = 60 s (a standard-rate turn,
+//! 3°/s, turns 180° in one minute). All data are rational, so the check is exact.
+
+use super::super::{Outcome, Verdict};
+use crate::algo::hermite::HermiteData;
+use crate::numeric::poly::bernstein::power_basis_derivative;
+use crate::numeric::poly::Bernstein;
+use crate::report::plot::{Corner, Panel, Series, Style};
+use crate::scalar::certify::format_float_digits;
+use crate::scalar::{BigRational, Field, Float, Real};
+
+/// Working precision for the Fig. 3 curves (their duration involves π).
+const TURN_BITS: u32 = 128;
+/// Parameter samples per curve for the Fig. 3 and Fig. 4 measurements.
+const SAMPLES: usize = 2001;
+
+/// A planar or spatial curve: one Bernstein polynomial per coordinate.
+pub type Curve<T> = Vec<Bernstein<T>>;
+
+/// The duration factors of Fig. 3.
+pub const TURN_FACTORS: [(i64, i64); 3] = [(1, 5), (1, 1), (3, 1)];
+
+/// Measurements of one Fig. 3 curve (from samples; see module doc).
+pub struct TurnMetrics {
+    pub factor: (i64, i64),
+    pub duration: f64,
+    pub hausdorff_chord: f64,
+    pub hausdorff_arc: f64,
+    pub max_radial_deviation: f64,
+    /// max distance from the terminal point divided by the start's distance from it.
+    pub farthest_from_end: f64,
+    pub turning_degrees: f64,
+    pub max_speed: f64,
+    pub samples: Vec<(f64, f64)>,
+}
+
+/// Solve one coordinate's Hermite problem (all data valid by construction).
+fn solve_coordinate<T: Field>(start: Vec<T>, end: Vec<T>, t0: T, t1: T) -> Option<Bernstein<T>> {
+    HermiteData::new(start, end, t0, t1)
+        .and_then(|d| d.solve())
+        .ok()
+}
+
+fn to_f64_curve<T: Field>(c: &Curve<T>) -> Curve<f64> {
+    c.iter()
+        .map(|b| {
+            Bernstein::new(
+                b.control_points.iter().map(Field::to_f64).collect(),
+                b.t0.to_f64(),
+                b.t1.to_f64(),
+            )
+        })
+        .collect()
+}
+
+fn sample(c: &Curve<f64>, n: usize) -> Vec<Vec<f64>> {
+    let (t0, t1) = (c[0].t0, c[0].t1);
+    (0..n)
+        .map(|i| {
+            let t = t0 + (t1 - t0) * i as f64 / (n - 1) as f64;
+            c.iter().map(|b| b.eval(&t)).collect()
+        })
+        .collect()
+}
+
+fn dist(a: (f64, f64), b: (f64, f64)) -> f64 {
+    ((a.0 - b.0).powi(2) + (a.1 - b.1).powi(2)).sqrt()
+}
+
+fn dist_to_segment(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
+    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+    let s = (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / (dx * dx + dy * dy)).clamp(0.0, 1.0);
+    dist(p, (a.0 + s * dx, a.1 + s * dy))
+}
+
+/// Distance to the quarter arc of the unit circle about (0, 1) from (0, 0) to (1, 1).
+fn dist_to_arc(p: (f64, f64)) -> f64 {
+    let (x, y) = (p.0, p.1 - 1.0);
+    // The arc spans the angles −90°…0° about the centre: x ≥ 0 and y ≤ 0.
+    if x >= 0.0 && y <= 0.0 {
+        ((x * x + y * y).sqrt() - 1.0).abs()
+    } else {
+        dist(p, (0.0, 0.0)).min(dist(p, (1.0, 1.0)))
+    }
+}
+
+/// Symmetric Hausdorff distance between the sampled curve and a reference set given by its
+/// distance function and its own samples.
+fn hausdorff(
+    curve: &[(f64, f64)],
+    dist_to_ref: impl Fn((f64, f64)) -> f64,
+    reference: &[(f64, f64)],
+) -> f64 {
+    let forward = curve.iter().map(|&p| dist_to_ref(p)).fold(0.0, f64::max);
+    let backward = reference
+        .iter()
+        .map(|&r| {
+            curve
+                .iter()
+                .map(|&p| dist(p, r))
+                .fold(f64::INFINITY, f64::min)
+        })
+        .fold(0.0, f64::max);
+    forward.max(backward)
+}
+
+/// Total absolute turning of the tangent along the samples, in degrees (MPFR atan2, so the
+/// result does not depend on the platform's libm).
+fn turning_degrees(velocities: &[(f64, f64)]) -> f64 {
+    let mut total = Float::with_val(64, 0);
+    for w in velocities.windows(2) {
+        let (a, b) = (w[0], w[1]);
+        let cross = Float::with_val(64, a.0 * b.1 - a.1 * b.0);
+        let dot = Float::with_val(64, a.0 * b.0 + a.1 * b.1);
+        total += cross.atan2(&dot).abs();
+    }
+    (total * 180u32 / Float::pi(&64)).to_f64()
+}
+
+/// The Fig. 3 curve for duration factor num/den of the nominal π/2, in MPFR.
+fn turn_curve(factor: (i64, i64)) -> Option<Curve<Float>> {
+    let bits = TURN_BITS;
+    let i = |v: i64| Float::from_i64(v, &bits);
+    let duration = Float::pi(&bits) / 2u32 * Float::from_ratio(factor.0, factor.1, &bits);
+    let x = solve_coordinate(
+        vec![i(0), i(1), i(0)],
+        vec![i(1), i(0), i(-1)],
+        i(0),
+        duration.clone(),
+    )?;
+    let y = solve_coordinate(
+        vec![i(0), i(0), i(1)],
+        vec![i(1), i(1), i(0)],
+        i(0),
+        duration,
+    )?;
+    Some(vec![x, y])
+}
+
+/// Solve and measure the three Fig. 3 curves.
+pub fn turn_metrics() -> Option<Vec<TurnMetrics>> {
+    let chord_ref: Vec<(f64, f64)> = (0..401)
+        .map(|i| (i as f64 / 400.0, i as f64 / 400.0))
+        .collect();
+    let arc_ref: Vec<(f64, f64)> = (0..401)
+        .map(|i| {
+            // Points of the arc from MPFR sin/cos (platform independent).
+            let angle = Float::pi(&64) / 2u32 * Float::with_val(64, i) / 400u32;
+            let (s, c) = Real::sin_cos(&angle);
+            (s.to_f64(), 1.0 - c.to_f64())
+        })
+        .collect();
+    TURN_FACTORS
+        .iter()
+        .map(|&factor| {
+            let exact = turn_curve(factor)?;
+            let c = to_f64_curve(&exact);
+            let pts: Vec<(f64, f64)> = sample(&c, SAMPLES)
+                .into_iter()
+                .map(|v| (v[0], v[1]))
+                .collect();
+            let vel_curve: Curve<f64> = c.iter().map(|b| b.derivative()).collect();
+            let vel: Vec<(f64, f64)> = sample(&vel_curve, SAMPLES)
+                .into_iter()
+                .map(|v| (v[0], v[1]))
+                .collect();
+            let end = (1.0, 1.0);
+            let start_dist = dist((0.0, 0.0), end);
+            Some(TurnMetrics {
+                factor,
+                duration: exact[0].duration().to_f64(),
+                hausdorff_chord: hausdorff(
+                    &pts,
+                    |p| dist_to_segment(p, (0.0, 0.0), end),
+                    &chord_ref,
+                ),
+                hausdorff_arc: hausdorff(&pts, dist_to_arc, &arc_ref),
+                max_radial_deviation: pts
+                    .iter()
+                    .map(|&p| (dist(p, (0.0, 1.0)) - 1.0).abs())
+                    .fold(0.0, f64::max),
+                farthest_from_end: pts.iter().map(|&p| dist(p, end)).fold(0.0, f64::max)
+                    / start_dist,
+                turning_degrees: turning_degrees(&vel),
+                max_speed: vel.iter().map(|&v| dist(v, (0.0, 0.0))).fold(0.0, f64::max),
+                samples: pts,
+            })
+        })
+        .collect()
+}
+
+/// Four significant digits of a sampled measurement.
+pub fn fmt4(x: f64) -> String {
+    format_float_digits(&Float::with_val(53, x), 4)
+}
+
+/// The three Fig. 3 claims from the measurements.
+pub fn turn_claims(m: &[TurnMetrics]) -> [Outcome; 3] {
+    let describe = |t: &TurnMetrics| {
+        format!(
+            "duration {}×π/2: Hausdorff distance to the chord {} and to the arc {}; max radial deviation from the circle {}; \
+             farthest distance from the terminal point {}× the start's; tangent turns {}°; peak speed {}",
+            if t.factor.1 == 1 { t.factor.0.to_string() } else { format!("{}/{}", t.factor.0, t.factor.1) },
+            fmt4(t.hausdorff_chord),
+            fmt4(t.hausdorff_arc),
+            fmt4(t.max_radial_deviation),
+            fmt4(t.farthest_from_end),
+            fmt4(t.turning_degrees),
+            fmt4(t.max_speed)
+        )
+    };
+    let verdict = |ok: bool| {
+        if ok {
+            Verdict::Reproduced
+        } else {
+            Verdict::Discrepancy
+        }
+    };
+    let method = "data of a uniform quarter turn (R = 1, V = 1, centripetal accelerations, m = 2), solved in MPFR-128 \
+                  and sampled at 2001 parameters; Hausdorff distances against the sampled chord and arc (401 points each)";
+    let short = &m[0];
+    let nominal = &m[1];
+    let long = &m[2];
+    [
+        Outcome::new(
+            format!("closer to the chord ({}) than to the arc ({})", fmt4(short.hausdorff_chord), fmt4(short.hausdorff_arc)),
+            "mpfr:128",
+            verdict(short.hausdorff_chord < short.hausdorff_arc),
+            format!("criterion: Hausdorff distance to the chord < to the arc. {method}. {}", describe(short)),
+        ),
+        Outcome::new(
+            format!("closer to the arc ({}) than to the chord ({})", fmt4(nominal.hausdorff_arc), fmt4(nominal.hausdorff_chord)),
+            "mpfr:128",
+            verdict(nominal.hausdorff_arc < nominal.hausdorff_chord),
+            format!("criterion: Hausdorff distance to the arc < to the chord. {method}. {}", describe(nominal)),
+        ),
+        Outcome::new(
+            format!("reaches {}× the start's distance from the terminal point", fmt4(long.farthest_from_end)),
+            "mpfr:128",
+            verdict(long.farthest_from_end > 1.0),
+            format!("criterion: the curve gets farther from the terminal point than it started. {method}. {}", describe(long)),
+        ),
+    ]
+}
+
+/// Panel of Fig. 3 from the measurements.
+pub fn turn_figure(m: &[TurnMetrics]) -> Vec<Panel> {
+    let styles = [Style::Dashed, Style::Solid, Style::Dotted];
+    let mut series: Vec<Series> = m
+        .iter()
+        .zip(styles)
+        .enumerate()
+        .map(|(i, (t, style))| {
+            let name = if t.factor.1 == 1 {
+                format!("{} × nominal", t.factor.0)
+            } else {
+                format!("{}/{} × nominal", t.factor.0, t.factor.1)
+            };
+            Series::new(name, t.samples.clone(), style, [1, 0, 2][i])
+        })
+        .collect();
+    let arc: Vec<(f64, f64)> = (0..=200)
+        .map(|i| {
+            let angle = Float::pi(&64) / 2u32 * Float::with_val(64, i) / 200u32;
+            let (s, c) = Real::sin_cos(&angle);
+            (s.to_f64(), 1.0 - c.to_f64())
+        })
+        .collect();
+    series.push(Series::new("circular arc", arc, Style::Dotted, 3));
+    series.push(Series::new(
+        "start, end",
+        vec![(0.0, 0.0), (1.0, 1.0)],
+        Style::Markers,
+        0,
+    ));
+    vec![Panel {
+        title: "Fig. 3: same end conditions, durations 0.2, 1 and 3 × π/2".into(),
+        x_label: "x (length units)".into(),
+        y_label: "y (length units)".into(),
+        series,
+        equal_aspect: true,
+        legend: Corner::LowerRight,
+        ..Panel::default()
+    }]
+}
+
+/// The landing instance of Fig. 4 (exact), one polynomial per coordinate x, y, z.
+pub fn landing_data() -> [HermiteData<BigRational>; 3] {
+    let q = |v: i64| BigRational::from_integer(v.into());
+    let (t0, t1) = (q(0), q(60));
+    let mk = |start: [i64; 3], end: [i64; 3]| HermiteData {
+        start: start.into_iter().map(q).collect(),
+        end: end.into_iter().map(q).collect(),
+        t0: t0.clone(),
+        t1: t1.clone(),
+    };
+    [
+        mk([0, -60, 0], [0, 55, 0]),
+        mk([2000, 0, 0], [0, 0, 0]),
+        mk([300, 0, 0], [0, 0, 0]),
+    ]
+}
+
+/// Measurements of the landing trajectory.
+pub struct LandingMetrics {
+    pub curve: Curve<BigRational>,
+    pub conditions: usize,
+    pub violated: usize,
+    pub max_speed: f64,
+    pub min_speed: f64,
+    pub max_accel_g: f64,
+    pub min_altitude: f64,
+    pub max_lateral_overshoot: f64,
+    pub samples: Vec<Vec<f64>>,
+}
+
+/// Solve the landing exactly and measure it.
+pub fn landing() -> Option<LandingMetrics> {
+    let data = landing_data();
+    let curve: Curve<BigRational> = data.iter().map(|d| d.solve().ok()).collect::<Option<_>>()?;
+    let mut violated = 0;
+    let mut conditions = 0;
+    for (d, b) in data.iter().zip(&curve) {
+        let a = b.to_power_basis();
+        for j in 0..=d.derivatives() {
+            let zero = BigRational::from_integer(0.into());
+            let one = BigRational::from_integer(1.into());
+            conditions += 2;
+            violated +=
+                (power_basis_derivative(&a, j, &zero, &b.duration()) != d.start[j]) as usize;
+            violated += (power_basis_derivative(&a, j, &one, &b.duration()) != d.end[j]) as usize;
+        }
+    }
+    let c = to_f64_curve(&curve);
+    let vel: Curve<f64> = c.iter().map(|b| b.derivative()).collect();
+    let acc: Curve<f64> = vel.iter().map(|b| b.derivative()).collect();
+    let norm = |v: &Vec<f64>| v.iter().map(|x| x * x).sum::<f64>().sqrt();
+    let speeds: Vec<f64> = sample(&vel, 601).iter().map(norm).collect();
+    let accels: Vec<f64> = sample(&acc, 601).iter().map(norm).collect();
+    let pts = sample(&c, 601);
+    Some(LandingMetrics {
+        conditions,
+        violated,
+        max_speed: speeds.iter().copied().fold(0.0, f64::max),
+        min_speed: speeds.iter().copied().fold(f64::INFINITY, f64::min),
+        max_accel_g: accels.iter().copied().fold(0.0, f64::max) / 9.80665,
+        min_altitude: pts.iter().map(|p| p[2]).fold(f64::INFINITY, f64::min),
+        max_lateral_overshoot: pts.iter().map(|p| -p[1]).fold(0.0, f64::max),
+        samples: pts,
+        curve,
+    })
+}
+
+/// The Fig. 4 claim.
+pub fn landing_claim(l: &LandingMetrics) -> Outcome {
+    Outcome::new(
+        format!("{} of {} conditions met exactly", l.conditions - l.violated, l.conditions),
+        "rational",
+        Verdict::holds(l.violated == 0),
+        format!(
+            "start (0, 2000, 300) m at (−60, 0, 0) m/s, zero acceleration; end at the threshold (0, 0, 0) at (55, 0, 0) m/s, \
+             zero acceleration; T = 60 s; m = 2, degree 5 per coordinate, solved exactly; position, velocity and acceleration \
+             at both ends re-derived from the power basis. Sampled every 0.1 s: speed {}…{} m/s, peak acceleration {} g, \
+             lowest altitude {} m, largest overshoot beyond the runway centre line {} m",
+            fmt4(l.min_speed),
+            fmt4(l.max_speed),
+            fmt4(l.max_accel_g),
+            fmt4(l.min_altitude),
+            fmt4(l.max_lateral_overshoot)
+        ),
+    )
+}
+
+/// Panels of Fig. 4: top view and altitude.
+pub fn landing_figure(l: &LandingMetrics) -> Vec<Panel> {
+    let top: Vec<(f64, f64)> = l.samples.iter().map(|p| (p[0], p[1])).collect();
+    let t_alt: Vec<(f64, f64)> = l
+        .samples
+        .iter()
+        .enumerate()
+        .map(|(i, p)| (i as f64 * 0.1, p[2]))
+        .collect();
+    vec![
+        Panel {
+            title: "Fig. 4: landing, top view".into(),
+            x_label: "x along the runway (m)".into(),
+            y_label: "y (m)".into(),
+            series: vec![
+                Series::new("runway", vec![(0.0, 0.0), (3000.0, 0.0)], Style::Solid, 0),
+                Series::new("trajectory", top, Style::Dotted, 1),
+                Series::new(
+                    "start, threshold",
+                    vec![(0.0, 2000.0), (0.0, 0.0)],
+                    Style::Markers,
+                    2,
+                ),
+            ],
+            equal_aspect: true,
+            legend: Corner::LowerRight,
+            ..Panel::default()
+        },
+        Panel {
+            title: "altitude".into(),
+            x_label: "t (s)".into(),
+            y_label: "z (m)".into(),
+            series: vec![Series::new("altitude", t_alt, Style::Solid, 1)],
+            legend: Corner::UpperRight,
+            ..Panel::default()
+        },
+    ]
+}
