@@ -17,12 +17,16 @@ use serde::Serialize;
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, PartialOrd, Ord)]
 #[serde(rename_all = "lowercase")]
 pub enum Verdict {
+    /// The computed value agrees with the printed one, or the property holds.
     Reproduced,
+    /// The paper's own method, computed to certified precision, contradicts what is printed.
     Discrepancy,
+    /// Something that must hold does not (or the check did not run).
     Failed,
 }
 
 impl Verdict {
+    /// The verdict as written in claims.json and the reports.
     pub fn as_str(self) -> &'static str {
         match self {
             Verdict::Reproduced => "reproduced",
@@ -44,8 +48,11 @@ impl Verdict {
 /// What is known about a claim before it is checked.
 #[derive(Clone, Copy, Debug)]
 pub struct ClaimSpec {
+    /// The claim id, `<paper short>.<location>.<name>`.
     pub id: &'static str,
+    /// Where the claim is in the paper (equation, table, section).
     pub location: &'static str,
+    /// What the paper states.
     pub statement: &'static str,
     /// The value as printed, verbatim, or `None` for a property.
     pub published: Option<&'static str>,
@@ -54,27 +61,41 @@ pub struct ClaimSpec {
 /// One checked claim, in the schema of `reports/claims.json`.
 #[derive(Clone, Debug, Serialize, PartialEq)]
 pub struct Claim {
+    /// The claim id.
     pub id: String,
+    /// The paper id.
     pub paper: String,
+    /// Where the claim is in the paper.
     pub location: String,
+    /// What the paper states.
     pub statement: String,
+    /// The value as printed, if the paper prints one.
     pub published: Option<String>,
+    /// The value computed here.
     pub reproduced: String,
+    /// The number type of the computation (e.g. `mpfr:256`, `rational`).
     pub scalar: String,
+    /// The verdict.
     pub verdict: Verdict,
+    /// The evidence for the verdict.
     pub evidence: String,
 }
 
 /// The result of one check, before it is joined with its spec.
 #[derive(Clone, Debug)]
 pub struct Outcome {
+    /// The value computed here.
     pub reproduced: String,
+    /// The number type of the computation.
     pub scalar: String,
+    /// The verdict.
     pub verdict: Verdict,
+    /// The evidence for the verdict.
     pub evidence: String,
 }
 
 impl Outcome {
+    /// An outcome from its four parts.
     pub fn new(
         reproduced: impl Into<String>,
         scalar: impl Into<String>,
@@ -98,6 +119,7 @@ pub struct Ledger {
 }
 
 impl Ledger {
+    /// An empty ledger for `paper` with these specs.
     pub fn new(paper: &'static str, specs: &'static [ClaimSpec]) -> Self {
         Ledger {
             paper,
@@ -171,6 +193,7 @@ impl Ledger {
 
 /// Everything one paper's verification produces.
 pub struct PaperOutput {
+    /// The claims, in spec order.
     pub claims: Vec<Claim>,
     /// The Markdown report, `reports/<paper-id>.md`.
     pub markdown: String,
@@ -184,7 +207,10 @@ pub struct Paper {
     pub id: &'static str,
     /// The short name used in claim ids and accepted by `--paper`.
     pub short: &'static str,
+    /// The paper's title.
     pub title: &'static str,
+    /// Its claim specs.
     pub specs: &'static [ClaimSpec],
+    /// Runs every check and builds the report.
     pub verify: fn() -> PaperOutput,
 }

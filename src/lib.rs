@@ -38,6 +38,7 @@
 //! ```
 
 #![warn(rustdoc::broken_intra_doc_links)]
+#![deny(missing_docs)]
 
 pub mod algo;
 pub mod cli;

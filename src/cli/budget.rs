@@ -39,9 +39,11 @@ pub fn mpfr_factor(bits: u32) -> f64 {
 /// elsewhere, or costs nothing worth modelling).
 #[derive(Clone, Copy, Debug)]
 pub struct Rates {
+    /// In f64.
     pub f64: f64,
     /// At `mpfr:256` (both precisions); other precisions scale by [`mpfr_factor`].
     pub mpfr256: f64,
+    /// In exact rationals.
     pub rational: f64,
 }
 

@@ -178,14 +178,6 @@ impl RealInput {
         }
         Ok(x)
     }
-
-    /// The exact value, if the input is a number.
-    pub fn exact(&self) -> Option<&BigRational> {
-        match self {
-            RealInput::Exact(q) => Some(q),
-            RealInput::Expr(_) => None,
-        }
-    }
 }
 
 /// A number, or a string holding a number or a constant expression (`"pi/8"`), at `path`.

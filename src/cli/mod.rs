@@ -7,9 +7,9 @@
 //! ([`budget`]) before computing.
 
 pub mod budget;
-pub mod dispatch;
-pub mod input;
-pub mod output;
+mod dispatch;
+mod input;
+mod output;
 mod run_bspline;
 mod run_gerbs;
 mod run_hermite;
@@ -30,10 +30,12 @@ use std::path::PathBuf;
 #[derive(Parser, Debug)]
 #[command(name = "trajverify", version, about, long_about = None)]
 pub struct Cli {
+    /// The subcommand.
     #[command(subcommand)]
     pub command: Command,
 }
 
+/// The subcommands of `trajverify`.
 #[derive(Subcommand, Debug)]
 pub enum Command {
     /// Check every claim; write claims.json, a Markdown report per paper and SVG figures.
@@ -54,6 +56,7 @@ pub enum Command {
     /// Run one algorithm on a JSON object (from --input or stdin); print a JSON object.
     #[command(after_long_help = RUN_HELP)]
     Run {
+        /// The algorithm to run.
         algorithm: Algorithm,
         /// Number type: f64, rational (exact), or mpfr:BITS (printed with the digits that
         /// agree between BITS and 2·BITS bits). Default: f64 for hermite, spline-fit,
@@ -169,6 +172,7 @@ enum Body {
 }
 
 impl Rendered {
+    /// An output in one number type, printed as it is.
     pub fn plain<T: crate::scalar::Field>(out: Out<T>) -> Self {
         Rendered {
             body: Body::Json(render_plain(&out)),
@@ -182,6 +186,7 @@ impl Rendered {
             extra: Vec::new(),
         }
     }
+    /// An MPFR output at p and at 2p bits, printed with the digits the two agree on.
     pub fn certified(lo: Out<rug::Float>, hi: Out<rug::Float>) -> Self {
         Rendered {
             body: Body::Certified(Box::new((lo, hi))),
@@ -225,6 +230,7 @@ pub enum Failure {
 }
 
 impl Failure {
+    /// The exit status: 1 for a failed claim, 2 for bad input, 3 for an internal failure.
     pub fn exit_code(&self) -> i32 {
         match self {
             Failure::Usage(_) => 2,
@@ -232,6 +238,7 @@ impl Failure {
             Failure::Internal(_) => 3,
         }
     }
+    /// The one-line message.
     pub fn message(&self) -> &str {
         match self {
             Failure::Usage(m) | Failure::Run(m) | Failure::Internal(m) => m,

@@ -32,19 +32,28 @@ pub const MAX_DEPTH: usize = 500;
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 #[error("at character {position}: {message}")]
 pub struct ExprError {
+    /// The 1-based character position.
     pub position: usize,
+    /// What is wrong there.
     pub message: String,
 }
 
 /// The functions the language knows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Func {
+    /// sin.
     Sin,
+    /// cos.
     Cos,
+    /// tan.
     Tan,
+    /// exp.
     Exp,
+    /// ln (natural logarithm).
     Ln,
+    /// sqrt.
     Sqrt,
+    /// atan.
     Atan,
 }
 
@@ -63,15 +72,25 @@ impl Func {
 /// A parsed scalar expression in t.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Expr {
+    /// A number, exact as written.
     Number(BigRational),
+    /// The parameter t.
     T,
+    /// π.
     Pi,
+    /// −a.
     Neg(Box<Expr>),
+    /// a + b.
     Add(Box<Expr>, Box<Expr>),
+    /// a − b.
     Sub(Box<Expr>, Box<Expr>),
+    /// a · b.
     Mul(Box<Expr>, Box<Expr>),
+    /// a / b.
     Div(Box<Expr>, Box<Expr>),
+    /// a ^ b.
     Pow(Box<Expr>, Box<Expr>),
+    /// A function applied to its argument.
     Call(Func, Box<Expr>),
 }
 
@@ -106,17 +125,25 @@ impl Expr {
 /// An [`Expr`] with its numbers rounded once into a context: what evaluation runs on.
 #[derive(Clone, Debug)]
 pub enum Compiled<T> {
+    /// A number rounded into the context.
     Const(T),
+    /// The parameter t.
     T,
+    /// −a.
     Neg(Box<Compiled<T>>),
+    /// a + b.
     Add(Box<Compiled<T>>, Box<Compiled<T>>),
+    /// a − b.
     Sub(Box<Compiled<T>>, Box<Compiled<T>>),
+    /// a · b.
     Mul(Box<Compiled<T>>, Box<Compiled<T>>),
+    /// a / b.
     Div(Box<Compiled<T>>, Box<Compiled<T>>),
     /// An integer power by repeated squaring (negative: reciprocal).
     PowInt(Box<Compiled<T>>, i64),
     /// a^b = exp(b ln a).
     Pow(Box<Compiled<T>>, Box<Compiled<T>>),
+    /// A function applied to its argument.
     Call(Func, Box<Compiled<T>>),
 }
 

@@ -25,6 +25,7 @@ impl<T: Real, C: Curve<T> + ?Sized> Curve<T> for &C {
 /// A curve written as `[x(t), y(t), z(t)]` in the expression language of [`expr`].
 #[derive(Clone, Debug)]
 pub struct ExprCurve {
+    /// x(t), y(t), z(t).
     pub components: [Expr; 3],
 }
 
@@ -57,6 +58,7 @@ impl ExprCurve {
 /// An [`ExprCurve`] compiled for one number type and precision.
 #[derive(Clone, Debug)]
 pub struct CompiledCurve<T> {
+    /// x(t), y(t), z(t), each evaluated in Taylor arithmetic.
     pub components: [Compiled<Taylor<T>>; 3],
 }
 

@@ -24,6 +24,7 @@ pub struct PeriodicSpline {
     pub degree: usize,
     /// Data times t_0 < … < t_{N−1}, and the period end t_N = t_0 + T.
     pub times: Vec<f64>,
+    /// t_N = t_0 + T, the end of the period.
     pub period_end: f64,
     /// B-spline coefficients, one per data time.
     pub coefficients: Vec<[f64; 3]>,
@@ -32,12 +33,16 @@ pub struct PeriodicSpline {
 /// Why a spline could not be fitted.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum SplineError {
+    /// Too few points for the degree.
     #[error("need at least {0} points for a periodic spline of this degree")]
     TooFewPoints(usize),
+    /// Times that do not increase strictly (index of the first).
     #[error("times must increase strictly (row {0})")]
     NotIncreasing(usize),
+    /// The periodic interpolation system is singular.
     #[error("the interpolation system is singular")]
     Singular,
+    /// An even degree was asked for; periodic interpolation here needs an odd degree.
     #[error("the degree must be odd")]
     EvenDegree,
 }

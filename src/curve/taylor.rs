@@ -19,6 +19,7 @@ use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssi
 /// c₀ + c₁ s + … + c_K s^K, the expansion of a function at a point in the offset s.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Taylor<T> {
+    /// The normalized Taylor coefficients c_k = f⁽ᵏ⁾(t₀)/k!.
     pub c: Vec<T>,
 }
 
@@ -68,9 +69,11 @@ impl<T: Field> Taylor<T> {
             .collect();
         Taylor { c }
     }
+    /// The order: the number of coefficients minus one.
     pub fn order(&self) -> usize {
         self.c.len() - 1
     }
+    /// The value f(t₀).
     pub fn value(&self) -> &T {
         &self.c[0]
     }

@@ -18,10 +18,13 @@ use std::sync::OnceLock;
 /// The value of a quadrature and how it was reached.
 #[derive(Clone, Debug)]
 pub struct Quadrature<T> {
+    /// The approximation of the integral.
     pub value: T,
     /// |S_L − S_{L−1}| of the last two levels: the error estimate.
     pub change: T,
+    /// The number of levels (halvings of the step) used.
     pub levels: usize,
+    /// The number of integrand evaluations.
     pub evaluations: usize,
 }
 

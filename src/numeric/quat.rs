@@ -18,16 +18,22 @@ use std::ops::{Add, Mul, Neg, Sub};
 /// w + x i + y j + z k.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Quat<T> {
+    /// The real part.
     pub w: T,
+    /// The i component.
     pub x: T,
+    /// The j component.
     pub y: T,
+    /// The k component.
     pub z: T,
 }
 
 impl<T: Field> Quat<T> {
+    /// w + xi + yj + zk.
     pub fn new(w: T, x: T, y: T, z: T) -> Self {
         Quat { w, x, y, z }
     }
+    /// The zero quaternion.
     pub fn zero(ctx: &T::Ctx) -> Self {
         let z = T::zero_in(ctx);
         Quat::new(z.clone(), z.clone(), z.clone(), z)
@@ -47,6 +53,7 @@ impl<T: Field> Quat<T> {
         let (z, o) = (T::zero_in(ctx), T::one_in(ctx));
         Quat::new(z.clone(), o, z.clone(), z)
     }
+    /// The context of the components.
     pub fn ctx(&self) -> T::Ctx {
         self.w.ctx()
     }
@@ -63,6 +70,7 @@ impl<T: Field> Quat<T> {
             self.z.clone(),
         ]
     }
+    /// From [w, x, y, z].
     pub fn from_components(c: [T; 4]) -> Self {
         let [w, x, y, z] = c;
         Quat::new(w, x, y, z)
@@ -92,6 +100,7 @@ impl<T: Field> Quat<T> {
         s.mul_add_assign(&self.z, &b.z);
         s
     }
+    /// The quaternion times a scalar.
     pub fn scale(&self, s: &T) -> Self {
         Quat::new(
             self.w.clone() * s,
@@ -308,6 +317,7 @@ impl<T: Field> Mul<&Quat<T>> for &Quat<T> {
 pub mod vec3 {
     use crate::scalar::{Field, Real};
 
+    /// a + b.
     pub fn add<T: Field>(a: &[T; 3], b: &[T; 3]) -> [T; 3] {
         [
             a[0].clone() + &b[0],
@@ -315,6 +325,7 @@ pub mod vec3 {
             a[2].clone() + &b[2],
         ]
     }
+    /// a − b.
     pub fn sub<T: Field>(a: &[T; 3], b: &[T; 3]) -> [T; 3] {
         [
             a[0].clone() - &b[0],
@@ -322,6 +333,7 @@ pub mod vec3 {
             a[2].clone() - &b[2],
         ]
     }
+    /// s · a.
     pub fn scale<T: Field>(a: &[T; 3], s: &T) -> [T; 3] {
         [a[0].clone() * s, a[1].clone() * s, a[2].clone() * s]
     }
@@ -331,12 +343,14 @@ pub mod vec3 {
             a[k].mul_add_assign(s, &b[k]);
         }
     }
+    /// a · b.
     pub fn dot<T: Field>(a: &[T; 3], b: &[T; 3]) -> T {
         let mut s = a[0].clone() * &b[0];
         s.mul_add_assign(&a[1], &b[1]);
         s.mul_add_assign(&a[2], &b[2]);
         s
     }
+    /// a × b.
     pub fn cross<T: Field>(a: &[T; 3], b: &[T; 3]) -> [T; 3] {
         [
             a[1].clone() * &b[2] - &(a[2].clone() * &b[1]),
@@ -344,12 +358,15 @@ pub mod vec3 {
             a[0].clone() * &b[1] - &(a[1].clone() * &b[0]),
         ]
     }
+    /// |a|.
     pub fn norm<T: Real>(a: &[T; 3]) -> T {
         dot(a, a).sqrt()
     }
+    /// The zero vector.
     pub fn zero<T: Field>(ctx: &T::Ctx) -> [T; 3] {
         [T::zero_in(ctx), T::zero_in(ctx), T::zero_in(ctx)]
     }
+    /// Each component mapped by `f`.
     pub fn map<T: Field, U>(a: &[T; 3], f: impl Fn(&T) -> U) -> [U; 3] {
         [f(&a[0]), f(&a[1]), f(&a[2])]
     }

@@ -18,7 +18,7 @@ pub mod gerbs;
 pub mod hermite;
 pub mod param;
 pub mod ph;
-pub mod sample;
+mod sample;
 
 pub use crate::ledger::{Claim, ClaimSpec, Ledger, Outcome, Paper, PaperOutput, Verdict};
 

@@ -11,8 +11,11 @@ use plotters::style::RGBColor;
 /// How a series is drawn.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Style {
+    /// A solid line.
     Solid,
+    /// A dashed line.
     Dashed,
+    /// A dotted line.
     Dotted,
     /// A marker at each point, no line.
     Markers,
@@ -23,14 +26,18 @@ pub enum Style {
 /// One named series of (x, y) points.
 #[derive(Clone, Debug)]
 pub struct Series {
+    /// The legend text.
     pub name: String,
+    /// The (x, y) points.
     pub points: Vec<(f64, f64)>,
+    /// How the series is drawn.
     pub style: Style,
     /// Index into the palette (black, blue, red, green, orange, purple, grey for guides).
     pub color: usize,
 }
 
 impl Series {
+    /// A series with a colour from the palette.
     pub fn new(
         name: impl Into<String>,
         points: Vec<(f64, f64)>,
@@ -49,9 +56,13 @@ impl Series {
 /// One chart: axes, labels and series.
 #[derive(Clone, Debug, Default)]
 pub struct Panel {
+    /// The title above the panel.
     pub title: String,
+    /// The x-axis label, with units.
     pub x_label: String,
+    /// The y-axis label, with units.
     pub y_label: String,
+    /// The series drawn.
     pub series: Vec<Series>,
     /// Draw y on a log₁₀ axis (non-positive values are skipped).
     pub log_y: bool,
@@ -64,10 +75,14 @@ pub struct Panel {
 /// A corner of the plotting area.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub enum Corner {
+    /// Upper left.
     #[default]
     UpperLeft,
+    /// Upper right.
     UpperRight,
+    /// Lower left.
     LowerLeft,
+    /// Lower right.
     LowerRight,
 }
 

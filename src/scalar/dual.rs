@@ -12,7 +12,9 @@ use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssi
 /// re + du·ε.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Dual<T> {
+    /// The value.
     pub re: T,
+    /// The derivative.
     pub du: T,
 }
 

@@ -67,9 +67,11 @@ pub trait Field:
     /// A name for the number type in this context: `f64`, `rational`, `mpfr:<bits>`.
     fn scalar_name(ctx: &Self::Ctx) -> String;
 
+    /// Zero in `ctx`.
     fn zero_in(ctx: &Self::Ctx) -> Self {
         Self::from_i64(0, ctx)
     }
+    /// One in `ctx`.
     fn one_in(ctx: &Self::Ctx) -> Self {
         Self::from_i64(1, ctx)
     }
@@ -89,7 +91,9 @@ pub trait Field:
     /// The double `v` (exact for rationals and for MPFR with at least 53 bits). `v` must be finite.
     fn from_f64(v: f64, ctx: &Self::Ctx) -> Self;
 
+    /// |x|.
     fn abs(&self) -> Self;
+    /// Whether x = 0 exactly.
     fn is_zero(&self) -> bool;
     /// False for infinities and NaN (always true for rationals).
     fn is_finite(&self) -> bool;
@@ -119,12 +123,17 @@ pub trait Field:
 /// transcendental functions come from the platform's libm and may differ in the last bit
 /// between platforms.
 pub trait Real: Field {
+    /// √x.
     fn sqrt(&self) -> Self;
+    /// (sin x, cos x).
     fn sin_cos(&self) -> (Self, Self);
     /// `self.atan2(x)` is the angle of the point (x, self), in (−π, π].
     fn atan2(&self, x: &Self) -> Self;
+    /// eˣ.
     fn exp(&self) -> Self;
+    /// ln x.
     fn ln(&self) -> Self;
+    /// π in `ctx`.
     fn pi(ctx: &Self::Ctx) -> Self;
     /// The unit roundoff scale 2^(1−p) of the context (p = 53 for f64).
     fn epsilon(ctx: &Self::Ctx) -> Self;
@@ -160,7 +169,9 @@ pub fn max_of<T: Field>(a: T, b: T) -> T {
 /// Which number type a computation runs in, as chosen on the command line.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ScalarKind {
+    /// IEEE double precision.
     F64,
+    /// Exact rationals.
     Rational,
     /// MPFR with this many bits of precision.
     Mpfr(u32),

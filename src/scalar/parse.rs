@@ -18,12 +18,16 @@ pub const MAX_DIGITS: usize = 1000;
 /// Why a string is not a number trajverify accepts.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum ParseNumberError {
+    /// Not a number in the accepted syntax.
     #[error("{0:?} is not a number (expected a decimal such as \"0.6\" or \"1e-3\", or a fraction such as \"3/5\")")]
     Malformed(String),
+    /// A fraction with denominator zero.
     #[error("{0:?} has a zero denominator")]
     ZeroDenominator(String),
+    /// An exponent too large to expand exactly.
     #[error("{0:?} has an exponent beyond ±{MAX_EXPONENT}")]
     ExponentTooLarge(String),
+    /// More characters than a number may have.
     #[error("a number of {0} characters is longer than the {MAX_DIGITS} accepted")]
     TooLong(usize),
 }

@@ -13,11 +13,14 @@ use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssi
 /// a + b√2 with rational a and b (the representation is unique, so `==` is equality).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct QSqrt2 {
+    /// The rational part a.
     pub a: BigRational,
+    /// The coefficient b of √2.
     pub b: BigRational,
 }
 
 impl QSqrt2 {
+    /// a + b√2.
     pub fn new(a: BigRational, b: BigRational) -> Self {
         QSqrt2 { a, b }
     }

@@ -94,6 +94,7 @@ impl<T: Field> CardinalBSpline<T> {
         CardinalBSpline { degree: k, pieces }
     }
 
+    /// The degree k of the spline.
     pub fn degree(&self) -> usize {
         self.degree
     }
@@ -103,6 +104,7 @@ impl<T: Field> CardinalBSpline<T> {
         &self.pieces[j]
     }
 
+    /// The polynomial pieces on [0, 1], …, [k, k+1], each in the local variable s = t − j.
     pub fn pieces(&self) -> &[Poly<T>] {
         &self.pieces
     }

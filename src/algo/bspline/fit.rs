@@ -20,32 +20,64 @@ use crate::scalar::Field;
 /// Why a fit cannot be made.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum FitError {
+    /// The degree is below 1.
     #[error("degree {0} is below 1: the Gram matrix of k-th derivatives needs k ≥ 1")]
     DegreeTooLow(usize),
+    /// No data were given.
     #[error("no data")]
     NoData,
     #[error("{times} times but {values} values")]
-    LengthMismatch { times: usize, values: usize },
+    /// Times and values of different lengths.
+    LengthMismatch {
+        /// Number of data times.
+        times: usize,
+        /// Number of data values.
+        values: usize,
+    },
     #[error("{controls} control points cannot interpolate {data} data: M must be at least N")]
-    TooFewControls { controls: usize, data: usize },
+    /// Fewer control points than data: interpolation needs M ≥ N.
+    TooFewControls {
+        /// Number of control points M.
+        controls: usize,
+        /// Number of data N.
+        data: usize,
+    },
     #[error("time #{index} lies outside the open support (0, M+k) of the spline, where every basis function vanishes")]
-    OutsideSupport { index: usize },
+    /// A data time outside the open support (0, M+k).
+    OutsideSupport {
+        /// Index of the offending time.
+        index: usize,
+    },
+    /// The collocation matrix is not of full row rank.
     #[error("the collocation matrix B is not of full row rank (repeated times, or too many data on too few basis functions)")]
     RankDeficient,
     #[error("weight #{index} is negative")]
-    NegativeWeight { index: usize },
+    /// A negative weight.
+    NegativeWeight {
+        /// Index of the offending weight.
+        index: usize,
+    },
     #[error("{weights} weights for {data} data")]
-    WeightsLength { weights: usize, data: usize },
+    /// Weights and data of different lengths.
+    WeightsLength {
+        /// Number of weights.
+        weights: usize,
+        /// Number of data.
+        data: usize,
+    },
 }
 
 /// The spline space S_k with M control points: basis, Gram matrix, collocation.
 pub struct SplineSpace<T: Field> {
+    /// The cardinal B-spline B_k of the basis.
     pub basis: CardinalBSpline<T>,
+    /// The number of control points (shifted basis functions) M.
     pub controls: usize,
     gram_entries: Vec<T>,
 }
 
 impl<T: Field> SplineSpace<T> {
+    /// The basis of `controls` shifted B-splines of degree `degree`.
     pub fn new(degree: usize, controls: usize, ctx: &T::Ctx) -> Result<Self, FitError> {
         if degree < 1 {
             return Err(FitError::DegreeTooLow(degree));
@@ -57,6 +89,7 @@ impl<T: Field> SplineSpace<T> {
         })
     }
 
+    /// The degree k of the basis.
     pub fn degree(&self) -> usize {
         self.basis.degree()
     }
@@ -100,6 +133,7 @@ impl<T: Field> SplineSpace<T> {
         acc
     }
 
+    /// The spline Σᵢ τᵢ B_k(t − i + 1) with control points `tau`, at `t`.
     pub fn eval(&self, tau: &[T], t: &T) -> T {
         self.eval_derivative(tau, t, 0)
     }

@@ -25,6 +25,7 @@ use crate::scalar::{powi, Field};
 /// intervals (t_1, t_2) and (t_{n+1}, t_{n+2}), when not empty, reuse the nearest exponent.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Bfbs {
+    /// The exponents (a, b, …) of the BFBS integrand, one per factor.
     pub exponents: Vec<u32>,
 }
 
@@ -32,6 +33,7 @@ pub struct Bfbs {
 pub const MAX_EXPONENT: u32 = 29;
 
 impl Bfbs {
+    /// A BFBS with these exponents; refused when empty or zero.
     pub fn new(exponents: Vec<u32>) -> Result<Self, GerbsError> {
         if exponents.is_empty() {
             return Err(GerbsError::Parameter {

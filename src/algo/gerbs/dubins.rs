@@ -13,16 +13,22 @@ use crate::scalar::Real;
 /// L (left turn), S (straight) or R (right turn).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Step {
+    /// A left turn on the circle of radius R.
     L,
+    /// A straight segment.
     S,
+    /// A right turn on the circle of radius R.
     R,
 }
 
 /// One Dubins word and its three segment lengths.
 #[derive(Clone, Debug)]
 pub struct DubinsPath<T> {
+    /// The start pose (x, y, heading).
     pub start: [T; 3],
+    /// The turning radius R.
     pub radius: T,
+    /// The three steps of the word (e.g. L S R).
     pub word: [Step; 3],
     /// Segment lengths in path units (angle × R for arcs).
     pub lengths: [T; 3],
@@ -174,10 +180,12 @@ pub fn all_words<T: Real>(start: &[T; 3], goal: &[T; 3], radius: &T) -> Vec<Dubi
 }
 
 impl<T: Real> DubinsPath<T> {
+    /// The total length of the three steps.
     pub fn total(&self) -> T {
         self.lengths[0].clone() + &self.lengths[1] + &self.lengths[2]
     }
 
+    /// The word as letters, e.g. "LSR".
     pub fn word_name(&self) -> String {
         self.word
             .iter()
@@ -220,6 +228,7 @@ impl<T: Real> DubinsPath<T> {
             .collect()
     }
 
+    /// The signed curvature of each step (±1/R on turns, 0 on the straight).
     pub fn curvatures(&self) -> [T; 3] {
         let ctx = self.radius.ctx();
         self.word.map(|s| match s {

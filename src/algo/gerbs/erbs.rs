@@ -34,10 +34,15 @@ use crate::scalar::{powi, Real};
 /// The intrinsic parameters of one knot interval.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ErbsParams<T> {
+    /// α: the exponent of the denominator (t − t_k)(t_{k+1} − t)^γ of Eq. (4).
     pub alpha: T,
+    /// β: the scale of the exponent of Eq. (4).
     pub beta: T,
+    /// γ: the exponent of (t_{j+1} − t) in Eq. (4).
     pub gamma: T,
+    /// λ: the centre c_k = (1 − λ)t_k + λt_{k+1} of the kernel (the cited definition).
     pub lambda: T,
+    /// σ: the exponent of |t − c| in Eq. (4).
     pub sigma: T,
 }
 
@@ -84,6 +89,7 @@ impl<T: Real> ErbsParams<T> {
         }
     }
 
+    /// The same parameters in another number type, each mapped by `f`.
     pub fn map<U>(&self, f: impl Fn(&T) -> U) -> ErbsParams<U> {
         ErbsParams {
             alpha: f(&self.alpha),
@@ -168,6 +174,7 @@ impl<T: Real> Erbs<T> {
         Ok(erbs)
     }
 
+    /// The parameters of interval j.
     pub fn params(&self, j: usize) -> &ErbsParams<T> {
         &self.params[if self.params.len() == 1 { 0 } else { j - 1 }]
     }

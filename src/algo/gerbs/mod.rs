@@ -53,13 +53,18 @@ use crate::scalar::Field;
 /// Bad input to the GERBS constructions, named by field.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum GerbsError {
+    /// A bad knot vector, with the reason.
     #[error("knots: {0}")]
     Knots(String),
+    /// Bad waypoints, with the reason.
     #[error("waypoints: {0}")]
     Waypoints(String),
+    /// Another parameter out of range.
     #[error("{field}: {message}")]
     Parameter {
+        /// The input field at fault.
         field: &'static str,
+        /// What is wrong with it.
         message: String,
     },
 }
@@ -72,6 +77,7 @@ pub struct Knots<T> {
 }
 
 impl<T: Field> Knots<T> {
+    /// Strictly increasing knots t_0 < … < t_n (at least two).
     pub fn new(t: Vec<T>) -> Result<Self, GerbsError> {
         if t.len() < 3 {
             return Err(GerbsError::Knots(format!(
@@ -130,6 +136,7 @@ impl<T: Field> Knots<T> {
         self.t.len() - 2
     }
 
+    /// The knots as a slice.
     pub fn as_slice(&self) -> &[T] {
         &self.t
     }
@@ -162,7 +169,9 @@ impl<T: Field> Knots<T> {
 /// Which one-sided limit to take at a knot.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Side {
+    /// The limit from the left (t → t_j⁻).
     Left,
+    /// The limit from the right (t → t_j⁺).
     Right,
 }
 

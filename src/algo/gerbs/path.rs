@@ -26,7 +26,9 @@ use std::cell::RefCell;
 /// Unit tangents m_i and turn signs s_i of Algorithm 1.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Tangents<T> {
+    /// Unit tangent m_i at each waypoint.
     pub m: Vec<[T; 2]>,
+    /// Turn sign s_i at each interior waypoint: +1 left, −1 right, 0 straight.
     pub s: Vec<i32>,
 }
 
@@ -131,12 +133,21 @@ pub enum ArcConvention {
 pub enum LocalCurve<T> {
     /// origin + u·(l m): the start line of Eq. (23); for the end line of Eq. (24) the
     /// origin is W_n − l m.
-    Line { origin: [T; 2], step: [T; 2] },
+    Line {
+        /// The point at u = 0.
+        origin: [T; 2],
+        /// The displacement from u = 0 to u = 1, l·m.
+        step: [T; 2],
+    },
     /// centre + R (cos θ, sin θ), θ = (1 − u)θ₁ + uθ₂ (Eq. 19).
     Arc {
+        /// The centre of the circle.
         centre: [T; 2],
+        /// The radius R.
         radius: T,
+        /// The angle θ₁ at u = 0.
         theta1: T,
+        /// The angle θ₂ at u = 1.
         theta2: T,
     },
 }
@@ -176,11 +187,15 @@ impl<T: Real> LocalCurve<T> {
 /// The inputs of a GERBS path.
 #[derive(Clone, Debug)]
 pub struct PathSpec<T> {
+    /// The waypoints W_0 … W_n.
     pub waypoints: Vec<[T; 2]>,
+    /// The arc radius R.
     pub radius: T,
+    /// θ_o, the half-angle of each arc (Algorithm 1).
     pub theta_o: T,
     /// l of Eqs. (23)–(24); `None`: 2Rθ_o, the length of each arc.
     pub line_length: Option<T>,
+    /// How the arc angles θ₁, θ₂ are chosen (the paper's printed formula or the turn direction).
     pub convention: ArcConvention,
 }
 
@@ -264,9 +279,13 @@ pub fn local_curves<T: Real>(
 /// A point of the path with its derivatives and curvature.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PathPoint<T> {
+    /// The parameter value.
     pub t: T,
+    /// p(t).
     pub point: [T; 2],
+    /// p′(t).
     pub d1: [T; 2],
+    /// p″(t).
     pub d2: [T; 2],
     /// Signed curvature (x′y″ − y′x″)/|p′|³.
     pub curvature: T,
@@ -276,9 +295,13 @@ pub struct PathPoint<T> {
 
 /// The blended path p(t) = Σ c_{k−1}(t) B_k(t) (Eq. 25, Algorithm 2).
 pub struct GerbsPath<T, B> {
+    /// The knot vector, one knot per local curve.
     pub knots: Knots<T>,
+    /// The blending function B of the basis.
     pub blend: B,
+    /// The local curves c_k (lines and arcs).
     pub curves: Vec<LocalCurve<T>>,
+    /// The tangents and turn signs of Algorithm 1.
     pub tangents: Tangents<T>,
 }
 

@@ -45,18 +45,35 @@ use crate::scalar::{powi, Field};
 /// Why Hermite data cannot be mapped.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum HermiteError {
+    /// No boundary data.
     #[error("no boundary data: start and end need at least the position")]
     Empty,
+    /// Start and end with different numbers of derivatives.
     #[error(
         "start has {start} values and end has {end}: both ends need the same number of derivatives"
     )]
-    LengthMismatch { start: usize, end: usize },
+    LengthMismatch {
+        /// Number of values at the start.
+        start: usize,
+        /// Number of values at the end.
+        end: usize,
+    },
+    /// Points of different dimensions.
     #[error("every point must have the same dimension d ≥ 1")]
     DimensionMismatch,
+    /// The interval has t1 ≤ t0.
     #[error("the interval [t0, t1] must have t1 > t0")]
     EmptyInterval,
+    /// A scale factor (t1−t0)^j (n−j)!/n! that overflows or underflows the number type.
     #[error("the scale factor (t1−t0)^{j}·({n}−{j})!/{n}! is not representable in {scalar} (overflow or underflow)")]
-    ScaleNotRepresentable { j: usize, n: usize, scalar: String },
+    ScaleNotRepresentable {
+        /// The derivative order.
+        j: usize,
+        /// The polynomial degree.
+        n: usize,
+        /// The number type that overflowed or underflowed.
+        scalar: String,
+    },
 }
 
 /// The boundary data of Eq. 11 on an interval.
@@ -66,7 +83,9 @@ pub struct HermiteData<T> {
     pub start: Vec<T>,
     /// x₁, x₁′, …, x₁⁽ᵐ⁾ at t₁.
     pub end: Vec<T>,
+    /// The start of the interval.
     pub t0: T,
+    /// The end of the interval.
     pub t1: T,
 }
 

@@ -24,8 +24,11 @@ use crate::scalar::{Field, Real};
 /// Where and how the iteration stopped.
 #[derive(Clone, Debug)]
 pub struct Descent<T> {
+    /// The knot spacings h_i found.
     pub h: Vec<T>,
+    /// The objective G(h) there.
     pub objective: T,
+    /// The number of iterations used.
     pub iterations: usize,
     /// ‖π_B(∇G)‖ at the final h.
     pub projected_gradient_norm: T,

@@ -14,12 +14,23 @@ use crate::scalar::{Field, Real};
 /// Why a spline cannot be built.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum SplineError {
+    /// Fewer than two knots.
     #[error("need at least two knots")]
     TooFewKnots,
     #[error("{knots} knots but {values} values")]
-    LengthMismatch { knots: usize, values: usize },
+    /// Knots and values of different lengths.
+    LengthMismatch {
+        /// Number of knots.
+        knots: usize,
+        /// Number of values.
+        values: usize,
+    },
     #[error("knot #{index} is not greater than the knot before it")]
-    NotIncreasing { index: usize },
+    /// Knots that do not increase strictly.
+    NotIncreasing {
+        /// Index of the first knot not above its predecessor.
+        index: usize,
+    },
 }
 
 /// The natural cubic spline through (tᵢ, zᵢ).
@@ -32,6 +43,7 @@ pub struct NaturalCubicSpline<T> {
 }
 
 impl<T: Field> NaturalCubicSpline<T> {
+    /// The natural cubic spline (zero second derivative at both ends) through (knots, values).
     pub fn new(knots: Vec<T>, values: Vec<T>) -> Result<Self, SplineError> {
         if knots.len() < 2 {
             return Err(SplineError::TooFewKnots);
@@ -53,6 +65,7 @@ impl<T: Field> NaturalCubicSpline<T> {
         })
     }
 
+    /// The knots t_0 < … < t_N.
     pub fn knots(&self) -> &[T] {
         &self.knots
     }

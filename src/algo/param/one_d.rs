@@ -17,12 +17,16 @@ use crate::scalar::{Field, Real};
 /// The three cases of Sec. 2.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Case {
+    /// Monotone data: every difference has the same sign.
     I,
+    /// Alternating data: consecutive differences change sign at every point.
     II,
+    /// Mixed data: some consecutive differences change sign, some do not.
     III,
 }
 
 impl Case {
+    /// The case as the paper writes it: "I", "II" or "III".
     pub fn name(self) -> &'static str {
         match self {
             Case::I => "I",
@@ -35,10 +39,15 @@ impl Case {
 /// Why the data have no minimizing parametrization.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum ParamError {
+    /// Fewer than two points.
     #[error("need at least two points")]
     TooFewPoints,
+    /// Two consecutive equal points.
     #[error("points #{index} and #{} are equal: the paper's existence assumption needs z_i ≠ z_(i+1)", index + 1)]
-    RepeatedPoint { index: usize },
+    RepeatedPoint {
+        /// Index of the first of the two equal points.
+        index: usize,
+    },
 }
 
 fn deltas<T: Field>(z: &[T]) -> Result<Vec<T>, ParamError> {

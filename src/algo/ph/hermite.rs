@@ -27,7 +27,9 @@ use crate::scalar::{Field, Real};
 /// Two-point Hermite data with derivatives with respect to ξ ∈ [0, 1].
 #[derive(Clone, Debug, PartialEq)]
 pub struct HermiteData<T> {
+    /// p_b, the start point.
     pub p_b: [T; 3],
+    /// p_e, the end point.
     pub p_e: [T; 3],
     /// p′(0), p″(0), …, p⁽ᵐ⁾(0): v_b, a_b, j_b, s_b for m = 4.
     pub start: Vec<[T; 3]>,
@@ -139,12 +141,16 @@ impl<T: Field> FreeParameters<T> {
 /// Why the data have no interpolant of this form.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 pub enum PhHermiteError {
+    /// v_b + v_e = 0.
     #[error("v_b + v_e = 0: the data have no standard form (Definition 3)")]
     NoStandardForm,
+    /// A zero end tangent, named.
     #[error("{0} = 0: Lemma 2 needs a non-zero end tangent")]
     ZeroTangent(&'static str),
+    /// Missing or unequal derivatives at the ends.
     #[error("the data need at least one derivative at each end, the same number at both")]
     Shape,
+    /// The number of free τ parameters given and the number the data need.
     #[error("{0} free τ parameters given where the data need {1}")]
     FreeCount(usize, usize),
 }

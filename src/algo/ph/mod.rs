@@ -75,6 +75,7 @@ pub struct PhCurve<T> {
 /// Position, frame and angular velocity of a PH curve at one parameter value.
 #[derive(Clone, Debug)]
 pub struct FrameState<T> {
+    /// The point p(ξ).
     pub point: [T; 3],
     /// The columns e1, e2, e3 of the Euler–Rodrigues frame (Eq. 11).
     pub frame: [[T; 3]; 3],
@@ -85,6 +86,7 @@ pub struct FrameState<T> {
 }
 
 impl<T: Field> PhCurve<T> {
+    /// The PH curve with hodograph A(ξ) ⋆ A(ξ) from the Bernstein preimage `preimage`, starting at `start`.
     pub fn new(preimage: Vec<Quat<T>>, start: [T; 3]) -> Self {
         assert!(
             !preimage.is_empty() && preimage.len() <= MAX_PREIMAGE_DEGREE + 1,

@@ -27,8 +27,11 @@ use rayon::prelude::*;
 /// A curve converted on N uniform segments of [a, b].
 #[derive(Clone, Debug)]
 pub struct PiecewisePh<T> {
+    /// The start of the interval.
     pub a: T,
+    /// The end of the interval.
     pub b: T,
+    /// The PH curve of each segment, in order.
     pub segments: Vec<PhCurve<T>>,
 }
 
@@ -173,6 +176,7 @@ pub struct ConversionError<T> {
     pub sampled: T,
     /// Where the maximum is: segment and local parameter.
     pub segment: usize,
+    /// The local parameter ξ ∈ [0, 1] of the maximum.
     pub xi: T,
 }
 
@@ -528,7 +532,9 @@ pub struct CertifiedError {
     pub hi: Float,
     /// The sampled maximum at p bits.
     pub sampled: Float,
+    /// The segment of the local maximum.
     pub segment: usize,
+    /// The local parameter ξ of the local maximum.
     pub xi: Float,
 }
 

@@ -17,6 +17,7 @@ use crate::scalar::{BigRational, Field};
 /// A rational constant, with its reduced numerator and denominator as i64 when they fit.
 #[derive(Clone, Debug)]
 pub struct ExactWeight {
+    /// The exact value.
     pub value: BigRational,
     /// Reduced numerator and denominator (both below 2^53) and the nearest double.
     small: Option<(i64, i64, f64)>,
@@ -46,8 +47,11 @@ impl ExactWeight {
 /// the factor 2 of the pair (i, j), (j, i) when i < j.
 #[derive(Clone, Debug)]
 pub struct PairTerm {
+    /// The index i of A_i.
     pub i: usize,
+    /// The index j of A_j.
     pub j: usize,
+    /// The weight w.
     pub weight: ExactWeight,
 }
 
@@ -84,9 +88,11 @@ pub fn product_terms(n: usize) -> &'static [PairTerm] {
 /// A_m solves A_m ⋆ A_m = λ(p_e − p_b) − c_p with A_m = (X − Σ_{j≠m} α_j A_j)/α_m.
 #[derive(Debug)]
 pub struct MiddleWeights {
+    /// λ = α_m, the weight of A_m ⋆ A_m.
     pub lambda: ExactWeight,
     /// 1/α_m = 1/λ, so that A_m needs no division.
     pub inverse_lambda: ExactWeight,
+    /// The weights α_j of the other A_j.
     pub alpha: Vec<ExactWeight>,
     /// The non-zero terms of c_p (row and column m are zero), i ≤ j.
     pub c_p: Vec<PairTerm>,

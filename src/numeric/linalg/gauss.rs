@@ -12,6 +12,7 @@ use crate::scalar::Field;
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 #[error("the matrix is singular (no non-zero pivot in column {column})")]
 pub struct SingularMatrix {
+    /// The column where no pivot was found.
     pub column: usize,
 }
 

@@ -69,12 +69,15 @@ impl<T: Field> Matrix<T> {
         Matrix { rows, cols, data }
     }
 
+    /// The number of rows.
     pub fn rows(&self) -> usize {
         self.rows
     }
+    /// The number of columns.
     pub fn cols(&self) -> usize {
         self.cols
     }
+    /// Whether rows = columns.
     pub fn is_square(&self) -> bool {
         self.rows == self.cols
     }
@@ -89,6 +92,7 @@ impl<T: Field> Matrix<T> {
         &self.data
     }
 
+    /// The transpose.
     pub fn transpose(&self) -> Self {
         Self::from_fn(self.cols, self.rows, |i, j| self[(j, i)].clone())
     }

@@ -17,6 +17,7 @@ use crate::scalar::Real;
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 #[error("one-sided Jacobi did not converge in {sweeps} sweeps")]
 pub struct NoConvergence {
+    /// The number of Jacobi sweeps used.
     pub sweeps: usize,
 }
 

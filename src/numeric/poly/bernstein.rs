@@ -17,8 +17,11 @@ use crate::scalar::{powi, Field};
 /// A scalar polynomial of degree n = `control_points.len() − 1` on [t₀, t₁].
 #[derive(Clone, Debug, PartialEq)]
 pub struct Bernstein<T> {
+    /// The control points b_0 … b_n.
     pub control_points: Vec<T>,
+    /// The start of the interval.
     pub t0: T,
+    /// The end of the interval.
     pub t1: T,
 }
 
@@ -47,6 +50,7 @@ impl<T: Field> Bernstein<T> {
         }
     }
 
+    /// The degree n.
     pub fn degree(&self) -> usize {
         self.control_points.len() - 1
     }

@@ -22,10 +22,12 @@ impl<T: Field> Poly<T> {
         Poly { coeffs }
     }
 
+    /// The zero polynomial.
     pub fn zero() -> Self {
         Poly { coeffs: Vec::new() }
     }
 
+    /// The constant polynomial c.
     pub fn constant(c: T) -> Self {
         Self::new(vec![c])
     }
@@ -47,6 +49,7 @@ impl<T: Field> Poly<T> {
         c
     }
 
+    /// Whether every coefficient is zero.
     pub fn is_zero(&self) -> bool {
         self.coeffs.is_empty()
     }
@@ -65,6 +68,7 @@ impl<T: Field> Poly<T> {
         acc
     }
 
+    /// The sum.
     pub fn add(&self, other: &Poly<T>) -> Poly<T> {
         let (long, short) = if self.coeffs.len() >= other.coeffs.len() {
             (self, other)
@@ -78,10 +82,12 @@ impl<T: Field> Poly<T> {
         Poly::new(c)
     }
 
+    /// The polynomial times a scalar.
     pub fn scale(&self, s: &T) -> Poly<T> {
         Poly::new(self.coeffs.iter().map(|c| c.clone() * s).collect())
     }
 
+    /// The difference.
     pub fn sub(&self, other: &Poly<T>) -> Poly<T> {
         let ctx = match (self.coeffs.first(), other.coeffs.first()) {
             (Some(c), _) | (None, Some(c)) => c.ctx(),
@@ -90,6 +96,7 @@ impl<T: Field> Poly<T> {
         self.add(&other.scale(&-T::one_in(&ctx)))
     }
 
+    /// The product (exact convolution of the coefficients).
     pub fn mul(&self, other: &Poly<T>) -> Poly<T> {
         if self.is_zero() || other.is_zero() {
             return Poly::zero();

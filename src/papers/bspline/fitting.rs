@@ -282,10 +282,9 @@ pub fn sample_times() -> Vec<Q> {
     t
 }
 
-/// One reconstruction: its label, control points per coordinate, and measurements.
+/// One reconstruction: its label and its distances from the original and the interpolant.
 pub struct Reconstruction {
     pub label: String,
-    pub tau: Vec<Vec<Q>>,
     pub max_to_original: f64,
     pub max_to_interpolation: f64,
 }
@@ -347,7 +346,6 @@ pub fn reconstruction() -> Option<(Vec<Reconstruction>, Vec<Polyline>)> {
             label: format!("W = {w}I"),
             max_to_original: dist(&c, &orig_curve),
             max_to_interpolation: dist(&c, &interp_curve),
-            tau,
         });
     }
     planar.push(interp_curve.iter().map(|p| (p[0], p[1])).collect());
@@ -355,7 +353,6 @@ pub fn reconstruction() -> Option<(Vec<Reconstruction>, Vec<Polyline>)> {
         label: "interpolation (Eq. 14)".into(),
         max_to_original: dist(&interp_curve, &orig_curve),
         max_to_interpolation: 0.0,
-        tau: interp,
     });
     Some((out, planar))
 }

@@ -1,12 +1,12 @@
 //! Paper 002: Kano, Egerstedt, Nakata & Martin, *B-splines and control theory*.
 //!
-//! Most claims are exact: Table 1 and the basis properties ([`basis`]), the bang-bang optimum
-//! in Q(√2) beside its certified numerical solution ([`optimal`]), the Gram matrix and the
-//! optimal splines ([`fitting`]).
+//! Most claims are exact: Table 1 and the basis properties (`basis`), the bang-bang optimum
+//! in Q(√2) beside its certified numerical solution (`optimal`), the Gram matrix and the
+//! optimal splines (`fitting`).
 
-pub mod basis;
-pub mod fitting;
-pub mod optimal;
+mod basis;
+mod fitting;
+mod optimal;
 
 use super::{ClaimSpec, Ledger, Paper, PaperOutput};
 use crate::algo::bspline::bang_bang::response;
@@ -17,10 +17,14 @@ use crate::scalar::certify::format_float_digits;
 use crate::scalar::qsqrt2::QSqrt2;
 use crate::scalar::{BigRational, Field, Float};
 
+/// The paper's id (file name in `../shared/papers`).
 pub const ID: &str = "002_f491c66a0b3f232c";
+/// The short name: the prefix of every claim id and a `--paper` value.
 pub const SHORT: &str = "bspline";
+/// Authors and title.
 pub const TITLE: &str = "Kano, Egerstedt, Nakata, Martin, B-splines and control theory";
 
+/// The claims of the paper, in report order.
 pub const SPECS: &[ClaimSpec] = &[
     ClaimSpec { id: "bspline.table1.n_jk", location: "Sec. 2, Table 1", statement: "N_{j,k} for k = 0…3 computed by Algorithm 1 are the printed polynomials", published: Some("Table 1 (10 entries)") },
     ClaimSpec { id: "bspline.alg1.de_boor_cox", location: "Sec. 2, Algorithm 1, Eq. 1", statement: "Algorithm 1 with Eq. 1 computes the standard basis for normalized uniform B-splines", published: None },
@@ -44,6 +48,7 @@ pub const SPECS: &[ClaimSpec] = &[
     ClaimSpec { id: "bspline.sec6.reconstruction", location: "Sec. 6, Fig. 3", statement: "the curve is recovered more accurately as the weights increase, and approaches the interpolation result", published: None },
 ];
 
+/// The paper: its specs and its checks.
 pub fn paper() -> Paper {
     Paper {
         id: ID,

@@ -1,12 +1,12 @@
 //! Paper 003: Andersen, Bouzidi, Kristiansen, *Curvature Continuous Path Generation for UAVs
 //! based on Generalized Expo-Rational B-Splines*.
 //!
-//! [`setup`]: the documented waypoints and parameter sets; [`basis`]: Eqs. (4), (10)–(18),
-//! partition of unity, smoothness; [`paths`]: Algorithms 1–2, Figs. 5–7, locality.
+//! `setup`: the documented waypoints and parameter sets; `basis`: Eqs. (4), (10)–(18),
+//! partition of unity, smoothness; `paths`: Algorithms 1–2, Figs. 5–7, locality.
 
-pub mod basis;
-pub mod paths;
-pub mod setup;
+mod basis;
+mod paths;
+mod setup;
 
 use super::{ClaimSpec, Ledger, Paper, PaperOutput};
 use crate::algo::gerbs::basis_derivatives;
@@ -18,8 +18,11 @@ use crate::report::plot::{self, Corner, Panel, Series, Style};
 use crate::report::{claims_section, table};
 use setup::ErbsSet;
 
+/// The paper's id (file name in `../shared/papers`).
 pub const ID: &str = "003_96e0e92e8c1da747";
+/// The short name: the prefix of every claim id and a `--paper` value.
 pub const SHORT: &str = "gerbs";
+/// Authors and title.
 pub const TITLE: &str = "Andersen, Bouzidi, Kristiansen, Curvature Continuous Path Generation for UAVs based on Generalized Expo-Rational B-Splines";
 
 macro_rules! spec {
@@ -33,6 +36,7 @@ macro_rules! spec {
     };
 }
 
+/// The claims of the paper, in report order.
 pub const SPECS: &[ClaimSpec] = &[
     spec!("gerbs.eq12_13.closed_forms", "Eqs. (10)–(13)", "for i_k = 2, S_k∫Ψ_k equals Φ on (t_{k−1}, t_k) and Θ on (t_k, t_{k+1})"),
     spec!("gerbs.eq14_18.derivatives", "Eqs. (14)–(18)", "the printed first and second derivatives of Φ and Θ"),
@@ -50,6 +54,7 @@ pub const SPECS: &[ClaimSpec] = &[
     spec!("gerbs.locality", "Sec. II", "moving one waypoint changes the path only on its neighbouring knot intervals"),
 ];
 
+/// The paper: its specs and its checks.
 pub fn paper() -> Paper {
     Paper {
         id: ID,

@@ -8,7 +8,7 @@ use crate::algo::gerbs::bfbs::Bfbs;
 use crate::algo::gerbs::erbs::{CentreReading, Erbs, ErbsParams};
 use crate::algo::gerbs::path::{ArcConvention, GerbsPath, PathSpec};
 use crate::algo::gerbs::Knots;
-use crate::scalar::{Field, Float, Real};
+use crate::scalar::{Field, Real};
 
 /// Five waypoints (turns at W2: right, W3: left, W4: right).
 pub const WAYPOINTS: [[i64; 2]; 5] = [[0, 0], [300, 100], [600, -50], [900, 150], [1200, 0]];
@@ -89,9 +89,4 @@ pub fn erbs_path<T: Real>(
 ) -> GerbsPath<T, Erbs<T>> {
     GerbsPath::new(&spec(ctx, convention), erbs(ctx, set, CentreReading::Cited))
         .expect("documented waypoints are valid")
-}
-
-/// f64 value of a Float, for plots.
-pub fn f(x: &Float) -> f64 {
-    x.to_f64()
 }

@@ -4,12 +4,12 @@
 //! Claims: the Fig. 2 control points, the boundary conditions of Eqs. 12–15, the index ranges
 //! of Eqs. 16–17 and the vector of Eq. 18, the difference identities of Eqs. 8–9 and App. A,
 //! the Fig. 3 and Fig. 4 examples, the condition numbers of Fig. 5 and degree elevation.
-//! The modules split them by kind: [`exact`] (rational identities), [`examples`] (Figs. 3–4),
-//! [`conditioning`] (Fig. 5).
+//! The modules split them by kind: `exact` (rational identities), `examples` (Figs. 3–4),
+//! `conditioning` (Fig. 5).
 
-pub mod conditioning;
-pub mod exact;
-pub mod examples;
+mod conditioning;
+mod exact;
+mod examples;
 
 use super::{Ledger, Paper, PaperOutput};
 use crate::papers::ClaimSpec;
@@ -18,13 +18,17 @@ use crate::report::{claims_section, table};
 use crate::scalar::certify::format_float_digits;
 use crate::scalar::{Field, Float};
 
+/// The paper's id (file name in `../shared/papers`).
 pub const ID: &str = "000_d51e5cedfa8471cf";
+/// The short name: the prefix of every claim id and a `--paper` value.
 pub const SHORT: &str = "hermite";
+/// Authors and title.
 pub const TITLE: &str = "Patterson et al., On Hermite Interpolation using Bernstein Polynomials for Trajectory Generation, NASA/TM-20230013467 (2023)";
 
 const FIG2_FAST: &str = "0 0 0 0.6 0.8 1";
 const FIG2_SLOW: &str = "0 0 0 0.2 0.6 1";
 
+/// The claims of the paper, in report order.
 pub const SPECS: &[ClaimSpec] = &[
     ClaimSpec { id: "hermite.fig2.control_points.t1", location: "Sec. 4, Fig. 2", statement: "for H = [0 0 0 | 1 1 0] and duration 1 the control points are [0 0 0 0.6 0.8 1]", published: Some(FIG2_FAST) },
     ClaimSpec { id: "hermite.fig2.control_points.t2", location: "Sec. 4, Fig. 2", statement: "for the same H and duration 2 the control points are [0 0 0 0.2 0.6 1]", published: Some(FIG2_SLOW) },
@@ -47,6 +51,7 @@ pub const SPECS: &[ClaimSpec] = &[
     ClaimSpec { id: "hermite.sec4.degree_elevation", location: "Sec. 4, end", statement: "a Bernstein polynomial can be degree elevated: the curve is exactly represented with more control points", published: None },
 ];
 
+/// The paper: its specs and its checks.
 pub fn paper() -> Paper {
     Paper {
         id: ID,

@@ -6,7 +6,7 @@
 //! of Figs. 3–5), the robot example (Tables VI–VII), the corner example (Fig. 6) and the H¹
 //! inequality of Sec. 1.
 
-pub mod data;
+mod data;
 mod geometry;
 mod one_d;
 mod plane;
@@ -17,10 +17,14 @@ use crate::report::claims_section;
 use crate::scalar::parse::parse_rational;
 use crate::scalar::BigRational;
 
+/// The paper's id (file name in `../shared/papers`).
 pub const ID: &str = "004_2a9dc6e62cca15f1";
+/// The short name: the prefix of every claim id and a `--paper` value.
 pub const SHORT: &str = "marin";
+/// Authors and title.
 pub const TITLE: &str = "Marin, An Approach to Data Parametrization in Parametric Cubic Spline Interpolation Problems, J. Approx. Theory (1984)";
 
+/// The claims of the paper, in report order.
 pub const SPECS: &[ClaimSpec] = &[
     ClaimSpec { id: "marin.sec1.h1_inequality", location: "Sec. 1 (i)", statement: "‖θ − φ‖²_H¹ = ∫(e² + e'²) ≤ ∫θ''² for each component, φ the piecewise linear interpolant", published: None },
     ClaimSpec { id: "marin.case1.chord_length", location: "Sec. 2, case I, Eq. 7", statement: "for strictly monotone data the minimizing parametrization is normalized accumulated chord length, θ is linear and G = 0", published: None },
@@ -41,6 +45,7 @@ pub const SPECS: &[ClaimSpec] = &[
     ClaimSpec { id: "marin.table7.reduction", location: "Sec. 3, after Table VII", statement: "reduction by a factor of two or more was obtained on five of the six axes", published: Some("five of the six axes") },
 ];
 
+/// The paper: its specs and its checks.
 pub fn paper() -> Paper {
     Paper {
         id: ID,

@@ -1,7 +1,7 @@
 //! Theorem 1 and Table 1: the conversion error of the test curve (Eq. 23) on 2ⁿ uniform
 //! segments, certified in MPFR, beside the f64 pipeline and the C² baseline.
 
-use super::super::{Outcome, Verdict};
+use super::super::{Ledger, Outcome, Verdict};
 use crate::algo::ph::hermite::FreeParameters;
 use crate::algo::ph::piecewise::{
     certified_error, conversion_error, convert, CertifiedError, DEFAULT_SAMPLES,
@@ -332,4 +332,50 @@ pub fn f64_floor(rows: &[Row], column: &[(usize, f64)]) -> Outcome {
         Verdict::holds(stop.is_some()),
         "the same conversion and error search run entirely in f64; criterion fixed before computing: f64 error more than twice the certified error",
     )
+}
+
+/// Table 1 and Theorem 1, computed: what the report's tables and figure show.
+pub struct Section {
+    /// The certified C⁴ rows at every level (φ* = 0).
+    pub rows: Vec<Row>,
+    /// The C² baseline (Šír & Jüttler) at the same levels.
+    pub baseline: Vec<Row>,
+    /// (segments, error) of the same pipeline in f64.
+    pub f64_column: Vec<(usize, f64)>,
+    /// The verdict of each printed row.
+    pub verdicts: Vec<Verdict>,
+    /// Theorem 1 for φ ≠ 0.
+    pub other: OtherOrders,
+}
+
+/// Every Table 1 and Theorem 1 check, each outcome recorded in `ledger`.
+pub fn section(ledger: &mut Ledger) -> Section {
+    let levels: Vec<u32> = LEVELS.collect();
+    let rows = rows_of(&levels, 4);
+    let baseline = rows_of(&levels, 2);
+    let f64_column = f64_column(&levels);
+    let mut verdicts = Vec::new();
+    for (i, row) in rows.iter().enumerate() {
+        let outcome = row_outcome(row, &TABLE1[i], (i > 0).then(|| TABLE1[i - 1].1));
+        verdicts.push(outcome.verdict);
+        ledger.record(&format!("phodcos.table1.n{}", row.segments), outcome);
+    }
+    ledger.record("phodcos.thm1.order6", order_six(&rows));
+    let (other, [one, equal, none]) = other_orders();
+    ledger.record("phodcos.thm1.order1", one);
+    ledger.record("phodcos.thm1.equal_angles", equal);
+    ledger.record("phodcos.thm1.no_convergence", none);
+    ledger.record("phodcos.table1.f64", f64_floor(&rows, &f64_column));
+    Section {
+        rows,
+        baseline,
+        f64_column,
+        verdicts,
+        other,
+    }
+}
+
+/// The rows of the C^m interpolant with zero free parameters.
+fn rows_of(levels: &[u32], m: usize) -> Vec<Row> {
+    rows(levels, m, &FreeParameters::zero(m, &()))
 }
