@@ -3,13 +3,11 @@
 
 use super::super::{Ledger, Outcome, Verdict};
 use super::data::{TABLE1, TABLE2, TABLE4};
-use super::{num, ID};
+use super::num;
 use crate::algo::param::descent::{descend, polish};
 use crate::algo::param::natural::NaturalCubicSpline;
 use crate::algo::param::objective::{chord_length_spacing, knots_from_spacing, Objective};
 use crate::algo::param::one_d::minimizing_parametrization;
-use crate::report::plot::{self, Corner, Panel, Series, Style};
-use crate::report::table;
 use crate::scalar::certify::format_float_digits;
 use crate::scalar::{Field, Float};
 
@@ -54,8 +52,20 @@ fn minimizer(z: &[Vec<Float>]) -> Option<Vec<Float>> {
     Some(knots_from_spacing(&h, &BITS))
 }
 
+/// One component of the Sec. 1 (i) check.
+pub struct H1Row {
+    /// Which data, component and parametrization.
+    pub name: String,
+    /// ‖θ − φ‖²_H¹.
+    pub h1: Float,
+    /// ∫θ''².
+    pub energy: Float,
+    /// Their ratio, which the inequality bounds by 1.
+    pub ratio: f64,
+}
+
 /// Sec. 1 (i): ‖θ − φ‖²_H¹ ≤ ∫θ''² for every component of the paper's examples.
-pub fn h1_inequality(ledger: &mut Ledger, md: &mut String) {
+pub fn h1_inequality(ledger: &mut Ledger) -> Vec<H1Row> {
     let mut cases: Vec<(String, Vec<Float>, Vec<Float>)> = Vec::new();
     let z1 = rationals(&TABLE1.iter().map(|r| r.0).collect::<Vec<_>>());
     if let Ok((t, _)) = minimizing_parametrization(&z1) {
@@ -93,34 +103,21 @@ pub fn h1_inequality(ledger: &mut Ledger, md: &mut String) {
         ));
     }
     let mut rows = Vec::new();
-    let mut worst = 0.0f64;
     let mut holds = true;
-    for (name, t, z) in &cases {
-        let Some((h1, energy)) = h1_and_energy(t, z) else {
+    for (name, t, z) in cases {
+        let Some((h1, energy)) = h1_and_energy(&t, &z) else {
             holds = false;
             continue;
         };
-        let ratio = (h1.clone() / &energy).to_f64();
-        worst = worst.max(ratio);
         holds &= h1 <= energy;
-        rows.push(vec![
-            name.clone(),
-            format_float_digits(&h1, 6),
-            format_float_digits(&energy, 6),
-            format_float_digits(&Float::with_val(53, ratio), 4),
-        ]);
+        rows.push(H1Row {
+            ratio: (h1.clone() / &energy).to_f64(),
+            name,
+            h1,
+            energy,
+        });
     }
-    md.push_str("## Sec. 1 (i): ‖θ − φ‖²_H¹ ≤ ∫θ''²\n\n");
-    md.push_str(&table(
-        &[
-            "component, parametrization",
-            "‖θ − φ‖²_H¹",
-            "∫θ''²",
-            "ratio",
-        ],
-        &rows,
-    ));
-    md.push('\n');
+    let worst = rows.iter().fold(0.0f64, |w, r| w.max(r.ratio));
     ledger.record(
         "marin.sec1.h1_inequality",
         Outcome::new(
@@ -132,6 +129,7 @@ pub fn h1_inequality(ledger: &mut Ledger, md: &mut String) {
              chord length and at t^EX, the six Table IV axes at the 6-D chord length",
         ),
     );
+    rows
 }
 
 /// The corner example (Fig. 6): documented data, widely spaced near a corner.
@@ -153,20 +151,32 @@ fn max_distance_to_polygon(curve: &[(f64, f64)], poly: &[(f64, f64)]) -> f64 {
         .fold(0.0, f64::max)
 }
 
+/// The corner example computed: the polygon and both spline curves, sampled.
+pub struct CornerCurves {
+    /// The interpolating polygon through the data.
+    pub polygon: Vec<(f64, f64)>,
+    /// The spline with chord-length knots, at 1001 parameters.
+    pub chord: Vec<(f64, f64)>,
+    /// The spline with the minimizing knots, at 1001 parameters.
+    pub minimizing: Vec<(f64, f64)>,
+    /// The largest distance of each curve from the polygon: (chord, minimizing).
+    pub distances: (f64, f64),
+}
+
 /// Fig. 6: oscillations near a corner with chord length, reduced by the minimizing parametrization.
-pub fn corner(ledger: &mut Ledger, md: &mut String, figures: &mut Vec<(String, String)>) {
+pub fn corner(ledger: &mut Ledger) -> Option<CornerCurves> {
     let z: Vec<Vec<Float>> = vec![
         floats(&CORNER.map(|p| p.0 as f64)),
         floats(&CORNER.map(|p| p.1 as f64)),
     ];
-    let poly: Vec<(f64, f64)> = CORNER.iter().map(|&(x, y)| (x as f64, y as f64)).collect();
+    let polygon: Vec<(f64, f64)> = CORNER.iter().map(|&(x, y)| (x as f64, y as f64)).collect();
     let t_cl = chord(&z);
     let Some(t_min) = minimizer(&z) else {
         ledger.record(
             "marin.fig6.corner",
             Outcome::new("", "mpfr", Verdict::Failed, "the minimization failed"),
         );
-        return;
+        return None;
     };
     let sample = |t: &[Float]| -> Vec<(f64, f64)> {
         let (Ok(x), Ok(y)) = (
@@ -180,23 +190,15 @@ pub fn corner(ledger: &mut Ledger, md: &mut String, figures: &mut Vec<(String, S
             .map(|s| (x.eval_all(&s)[0].to_f64(), y.eval_all(&s)[0].to_f64()))
             .collect()
     };
-    let (c_cl, c_min) = (sample(&t_cl), sample(&t_min));
+    let (chord, minimizing) = (sample(&t_cl), sample(&t_min));
     let (d_cl, d_min) = (
-        max_distance_to_polygon(&c_cl, &poly),
-        max_distance_to_polygon(&c_min, &poly),
+        max_distance_to_polygon(&chord, &polygon),
+        max_distance_to_polygon(&minimizing, &polygon),
     );
-    let fmt = |x: f64| format_float_digits(&Float::with_val(53, x), 4);
-    md.push_str(&format!(
-        "## Fig. 6: widely spaced data near a corner\n\nData (ours; the paper prints none): {:?}. Maximum distance of the parametric natural cubic spline from \
-         the interpolating polygon: {} with chord length, {} with the minimizing parametrization (exact objective).\n\n![Fig. 6](./{ID}_fig6.svg)\n\n",
-        CORNER,
-        fmt(d_cl),
-        fmt(d_min)
-    ));
     ledger.record(
         "marin.fig6.corner",
         Outcome::new(
-            format!("max distance from the polygon {} (chord length) → {} (minimizing)", fmt(d_cl), fmt(d_min)),
+            format!("max distance from the polygon {} (chord length) → {} (minimizing)", four(d_cl), four(d_min)),
             "mpfr:128 (curves), f64 (distances)",
             if d_min < d_cl { Verdict::Reproduced } else { Verdict::Discrepancy },
             "documented L-shaped data with long segments at the corner (4, 0); the curves sampled at 1001 parameters; criterion fixed beforehand: \
@@ -204,22 +206,15 @@ pub fn corner(ledger: &mut Ledger, md: &mut String, figures: &mut Vec<(String, S
              parametrization",
         ),
     );
-    let panel = Panel {
-        title: "Fig. 6: interpolation near a corner".into(),
-        x_label: "x (data units)".into(),
-        y_label: "y (data units)".into(),
-        series: vec![
-            Series::new("polygon", poly.clone(), Style::Solid, 0),
-            Series::new("chord length", c_cl, Style::Dashed, 1),
-            Series::new("minimizing", c_min, Style::Dotted, 2),
-            Series::new("data", poly, Style::Markers, 0),
-        ],
-        equal_aspect: true,
-        legend: Corner::UpperLeft,
-        ..Panel::default()
-    };
-    figures.push((
-        super::super::figure_file(ID, 6),
-        plot::render(&[panel], (1, 1), (640, 640)).unwrap_or_default(),
-    ));
+    Some(CornerCurves {
+        polygon,
+        chord,
+        minimizing,
+        distances: (d_cl, d_min),
+    })
+}
+
+/// Four significant digits, as the corner evidence and report print them.
+pub fn four(x: f64) -> String {
+    format_float_digits(&Float::with_val(53, x), 4)
 }

@@ -7,13 +7,14 @@
 //! inequality of Sec. 1.
 
 mod data;
+mod figures;
 mod geometry;
 mod one_d;
 mod plane;
+mod render;
 mod robot;
 
 use super::{ClaimSpec, Ledger, Paper, PaperOutput};
-use crate::report::claims_section;
 use crate::scalar::parse::parse_rational;
 use crate::scalar::BigRational;
 
@@ -95,39 +96,24 @@ pub(crate) fn num(s: &str) -> BigRational {
     parse_rational(s).unwrap_or_else(|_| BigRational::from_integer(0.into()))
 }
 
-/// Run every check implemented so far for paper 004 and build its report.
-pub fn verify() -> PaperOutput {
-    let mut ledger = Ledger::new(ID, SPECS);
-    let mut figures = Vec::new();
-    let mut md = super::report_heading(ID, SHORT, TITLE);
-    geometry::h1_inequality(&mut ledger, &mut md);
-    one_d::section(&mut ledger, &mut md, &mut figures);
-    plane::section(&mut ledger, &mut md, &mut figures);
-    geometry::corner(&mut ledger, &mut md, &mut figures);
-    robot::section(&mut ledger, &mut md);
-    let claims = ledger.finish();
-    md.push_str(&crate::report::not_checked_section(NOT_CHECKED));
-    md.push_str(&claims_section(&claims));
-    PaperOutput {
-        claims,
-        markdown: md,
-        figures,
-    }
+/// What the checks of paper 004 computed, for the report.
+struct Results {
+    h1: Vec<geometry::H1Row>,
+    table1: Option<one_d::TableOne>,
+    plane: plane::PlaneSection,
+    corner: Option<geometry::CornerCurves>,
+    robot: robot::RobotSection,
 }
 
-#[cfg(test)]
-mod tests {
-    use super::data::*;
-
-    #[test]
-    fn every_transcribed_number_parses() {
-        let all = TABLE1
-            .iter()
-            .flat_map(|(a, b)| [*a, *b])
-            .chain(TABLE2.iter().flat_map(|(a, b)| [*a, *b]))
-            .chain(TABLE3.iter().flat_map(|(a, b, c)| [*a, *b, *c]));
-        for s in all {
-            assert!(crate::scalar::parse::parse_rational(s).is_ok(), "{s}");
-        }
-    }
+/// Run every check of paper 004 and build its report.
+pub fn verify() -> PaperOutput {
+    let mut ledger = Ledger::new(ID, SPECS);
+    let results = Results {
+        h1: geometry::h1_inequality(&mut ledger),
+        table1: one_d::section(&mut ledger),
+        plane: plane::section(&mut ledger),
+        corner: geometry::corner(&mut ledger),
+        robot: robot::section(&mut ledger),
+    };
+    render::report(&results, ledger.finish())
 }

@@ -3,15 +3,13 @@
 use super::super::sample::SplitMix64;
 use super::super::{Ledger, Outcome, Verdict};
 use super::data::TABLE1;
-use super::{num, ID};
+use super::num;
 use crate::algo::param::descent::{descend, polish};
 use crate::algo::param::natural::NaturalCubicSpline;
 use crate::algo::param::objective::{objective, Objective};
 use crate::algo::param::one_d::{
     chord_length_1d, classify, extreme_indices, minimizing_parametrization, Case,
 };
-use crate::report::plot::{self, Corner, Panel, Series, Style};
-use crate::report::table;
 use crate::scalar::certify::{agreeing_digits, certify, format_float_digits};
 use crate::scalar::{BigRational, Field, Float};
 
@@ -73,10 +71,21 @@ fn to_float(z: &[Q], bits: u32) -> Vec<Float> {
     z.iter().map(|x| Float::from_rational(x, &bits)).collect()
 }
 
-/// Everything of Sec. 2 into the ledger and the report.
-pub fn section(ledger: &mut Ledger, md: &mut String, figures: &mut Vec<(String, String)>) {
+/// Table I computed: t* at 256 bits with its certified digits, and the spline for Fig. 1.
+pub struct TableOne {
+    /// t* at 256 bits.
+    pub t_star: Vec<Float>,
+    /// The digits of each t*_i that 128 and 256 bits agree on.
+    pub digits: Vec<u32>,
+    /// Whether each t*_i rounds to the printed value.
+    pub agrees: Vec<bool>,
+    /// θ on t*, for Fig. 1.
+    pub spline: Option<NaturalCubicSpline<Float>>,
+}
+
+/// Everything of Sec. 2 into the ledger; Table I for the report (`None` if it has no t*).
+pub fn section(ledger: &mut Ledger) -> Option<TableOne> {
     ledger.record("marin.case1.chord_length", case_one());
-    md.push_str("## Table I: the minimizing parametrization of scalar data\n\n");
     let lo = minimizing_parametrization(&table1_z::<Float>(&128));
     let hi = minimizing_parametrization(&table1_z::<Float>(&256));
     let (Ok((t_lo, case)), Ok((t_hi, _))) = (lo, hi) else {
@@ -89,35 +98,20 @@ pub fn section(ledger: &mut Ledger, md: &mut String, figures: &mut Vec<(String, 
                 "the Table I data have no parametrization",
             ),
         );
-        return;
+        return None;
     };
-    let mut rows = Vec::new();
-    let mut matches = 0;
-    let mut min_digits = u32::MAX;
-    for (i, ((z, printed), (a, b))) in TABLE1.iter().zip(t_lo.iter().zip(&t_hi)).enumerate() {
-        let c = certify(a, b);
-        let ok = rounds_to(b, printed);
-        matches += ok as usize;
-        min_digits = min_digits.min(c.digits);
-        rows.push(vec![
-            i.to_string(),
-            z.to_string(),
-            printed.to_string(),
-            format_float_digits(b, 10.min(c.digits.max(1))),
-            if ok { "agrees" } else { "differs" }.into(),
-        ]);
-    }
-    md.push_str(&table(
-        &[
-            "i",
-            "z_i",
-            "published t_i*",
-            "computed (MPFR, 10 of its certified digits)",
-            "to 4 decimals",
-        ],
-        &rows,
-    ));
-    md.push_str(&format!("\n![Fig. 1](./{ID}_fig1.svg)\n\n"));
+    let digits: Vec<u32> = t_lo
+        .iter()
+        .zip(&t_hi)
+        .map(|(a, b)| certify(a, b).digits)
+        .collect();
+    let agrees: Vec<bool> = TABLE1
+        .iter()
+        .zip(&t_hi)
+        .map(|((_, printed), b)| rounds_to(b, printed))
+        .collect();
+    let matches = agrees.iter().filter(|&&ok| ok).count();
+    let min_digits = digits.iter().copied().min().unwrap_or(u32::MAX);
     ledger.record(
         "marin.table1.t_star",
         Outcome::new(
@@ -128,15 +122,18 @@ pub fn section(ledger: &mut Ledger, md: &mut String, figures: &mut Vec<(String, 
              each printed value compared with the certified value within half a unit of its last printed decimal",
         ),
     );
-    let spline = NaturalCubicSpline::new(t_hi.clone(), table1_z::<Float>(&256));
+    let spline = NaturalCubicSpline::new(t_hi.clone(), table1_z::<Float>(&256)).ok();
     let [eq8, eq11] = slope_and_jump(&t_lo, &t_hi);
     ledger.record("marin.eq8.interior_slope", eq8);
     ledger.record("marin.eq11.jump", eq11);
     ledger.record("marin.cor2.unique_minimizer", corollary_two());
     ledger.record("marin.cor3.properties", corollary_three());
-    if let Ok(s) = spline {
-        figures.push((super::super::figure_file(ID, 1), figure1(&s)));
-    }
+    Some(TableOne {
+        t_star: t_hi,
+        digits,
+        agrees,
+        spline,
+    })
 }
 
 fn case_one() -> Outcome {
@@ -386,48 +383,4 @@ fn corollary_three() -> Outcome {
              random case III sets. Violations: {problems:?}"
         ),
     )
-}
-
-fn figure1(s: &NaturalCubicSpline<Float>) -> String {
-    let t = s.knots();
-    let (a, b) = (t[0].clone(), t[t.len() - 1].clone());
-    let samples: Vec<[f64; 4]> = (0..=400u32)
-        .map(|k| {
-            let x = a.clone() + (b.clone() - &a) * k / 400u32;
-            let [v, d, c] = s.eval_all(&x);
-            [x.to_f64(), v.to_f64(), d.to_f64(), c.to_f64()]
-        })
-        .collect();
-    let knots: Vec<(f64, f64)> = t
-        .iter()
-        .zip(TABLE1.iter())
-        .map(|(x, (z, _))| (x.to_f64(), num(z).to_f64()))
-        .collect();
-    let panel = |title: &str, j: usize, extra: Vec<Series>| {
-        let mut series = vec![Series::new(
-            "",
-            samples.iter().map(|p| (p[0], p[j])).collect(),
-            Style::Solid,
-            0,
-        )];
-        series.extend(extra);
-        Panel {
-            title: title.into(),
-            x_label: "t (parameter, dimensionless)".into(),
-            y_label: title.into(),
-            series,
-            legend: Corner::UpperRight,
-            ..Panel::default()
-        }
-    };
-    let panels = vec![
-        panel(
-            "θ(t)",
-            1,
-            vec![Series::new("data (t_i*, z_i)", knots, Style::Markers, 2)],
-        ),
-        panel("θ'(t)", 2, vec![]),
-        panel("θ''(t)", 3, vec![]),
-    ];
-    plot::render(&panels, (1, 3), (1200, 380)).unwrap_or_default()
 }

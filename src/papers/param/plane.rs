@@ -2,14 +2,12 @@
 
 use super::super::{Ledger, Outcome, Verdict};
 use super::data::{TABLE2, TABLE3};
+use super::num;
 use super::one_d::compare_with_printed;
-use super::{num, ID};
 use crate::algo::param::descent::{descend, polish};
 use crate::algo::param::natural::NaturalCubicSpline;
 use crate::algo::param::objective::{chord_length_spacing, knots_from_spacing, Objective};
-use crate::report::plot::{self, Corner, Panel, Series, Style};
-use crate::report::table;
-use crate::scalar::certify::{certify, format_float_digits, Certified};
+use crate::scalar::certify::{certify, Certified};
 use crate::scalar::{Field, Float};
 
 /// The two components (x, y) in a number type.
@@ -27,13 +25,19 @@ fn components<T: Field>(ctx: &T::Ctx) -> Vec<Vec<T>> {
 }
 
 /// A parametrization certified at two precisions, with the closest gradient-projection iterate.
-struct Column {
-    name: &'static str,
-    knots: Vec<Certified>,
-    exact: Vec<Float>,
-    iterations: usize,
-    converged: bool,
-    closest: Option<(usize, f64)>,
+pub struct Column {
+    /// The column's name and objective.
+    pub name: &'static str,
+    /// Each knot certified by 128 and 256 bits.
+    pub knots: Vec<Certified>,
+    /// The knots at 256 bits.
+    pub exact: Vec<Float>,
+    /// Gradient-projection iterations.
+    pub iterations: usize,
+    /// Whether gradient projection met its tolerance.
+    pub converged: bool,
+    /// The iterate closest to the printed column: (number, largest difference).
+    pub closest: Option<(usize, f64)>,
 }
 
 fn printed(col: usize) -> Vec<&'static str> {
@@ -90,10 +94,55 @@ fn compare(column: &[Float], col: usize) -> (usize, f64) {
 
 use crate::report::number::sig as fmt;
 
+/// Table III and Figs. 2–5, computed.
+pub struct PlaneSection {
+    /// Chord length at 256 bits.
+    pub chord: Vec<Float>,
+    /// The t^EX and t^AP minimizers (`None` where the minimization failed).
+    pub columns: [Option<Column>; 2],
+    /// (name, knots in f64) of each parametrization: t^CL, then the minimizers found.
+    pub parametrizations: Vec<(&'static str, Vec<f64>)>,
+    /// Per parametrization, for x and y: (max |θ''|, sum of |jumps| of θ''').
+    pub second_derivatives: Vec<Vec<(f64, f64)>>,
+    /// The Table II components in f64.
+    pub data: Vec<Vec<f64>>,
+}
+
 /// Table III, Figs. 2–5.
-pub fn section(ledger: &mut Ledger, md: &mut String, figures: &mut Vec<(String, String)>) {
-    md.push_str("## Table III: parametrizations of the Table II plane data\n\n");
-    // Chord length, certified.
+pub fn section(ledger: &mut Ledger) -> PlaneSection {
+    let chord = chord_claim(ledger);
+    let columns = [
+        minimize(Objective::Exact, 1, "t^EX (Eq. 31)"),
+        minimize(Objective::Approximate, 2, "t^AP (Eq. 34)"),
+    ];
+    for (id, column, col) in [
+        ("marin.table3.exact", &columns[0], 1),
+        ("marin.table3.approx", &columns[1], 2),
+    ] {
+        ledger.record(id, minimizer_outcome(column.as_ref(), col));
+    }
+    let parametrizations: Vec<(&str, Vec<f64>)> =
+        std::iter::once(("t^CL", chord.iter().map(Field::to_f64).collect()))
+            .chain(
+                columns
+                    .iter()
+                    .flatten()
+                    .map(|c| (c.name, c.exact.iter().map(Field::to_f64).collect())),
+            )
+            .collect();
+    let data = components::<f64>(&());
+    let second_derivatives = second_derivative_claim(ledger, &parametrizations, &data);
+    PlaneSection {
+        chord,
+        columns,
+        parametrizations,
+        second_derivatives,
+        data,
+    }
+}
+
+/// Table III, t^C1: chord length certified at 128 and 256 bits; returns the 256-bit knots.
+fn chord_claim(ledger: &mut Ledger) -> Vec<Float> {
     let cl =
         |bits: u32| knots_from_spacing(&chord_length_spacing(&components::<Float>(&bits)), &bits);
     let (cl_lo, cl_hi) = (cl(128), cl(256));
@@ -114,142 +163,82 @@ pub fn section(ledger: &mut Ledger, md: &mut String, figures: &mut Vec<(String, 
              unit of its last decimal",
         ),
     );
-    let columns = [
-        minimize(Objective::Exact, 1, "t^EX (Eq. 31)"),
-        minimize(Objective::Approximate, 2, "t^AP (Eq. 34)"),
-    ];
-    let mut rows = Vec::new();
-    for i in 0..20 {
-        let mut row = vec![
-            i.to_string(),
-            TABLE3[i].0.into(),
-            format_float_digits(&cl_hi[i], 6),
-        ];
-        for (c, col) in columns.iter().enumerate() {
-            row.push([TABLE3[i].1, TABLE3[i].2][c].into());
-            row.push(
-                col.as_ref()
-                    .map_or("—".into(), |k| format_float_digits(&k.exact[i], 6)),
-            );
-        }
-        rows.push(row);
-    }
-    md.push_str(&table(
-        &[
-            "i",
-            "t^C1 published",
-            "t^CL computed",
-            "t^EX published",
-            "t^EX computed",
-            "t^AP published",
-            "t^AP computed",
-        ],
-        &rows,
-    ));
-    md.push_str(
-        "\nComputed columns: chord length at 256 bits; t^EX and t^AP are the minimizers of G (Eqs. 31 and 34), found by gradient projection \
-         in f64 from chord length (Eq. 30) and refined by Newton's method on the optimality system at 128 and 256 bits (certified; 6 \
-         decimals shown).\n\n",
-    );
-    for (id, column, col) in [
-        ("marin.table3.exact", &columns[0], 1),
-        ("marin.table3.approx", &columns[1], 2),
-    ] {
-        let Some(k) = column else {
-            ledger.record(
-                id,
-                Outcome::new("", "mpfr", Verdict::Failed, "the minimization failed"),
-            );
-            continue;
-        };
-        let (agree, dev) = compare(&k.exact, col);
-        let min_digits = k.knots.iter().map(|c| c.digits).min().unwrap_or(0);
-        let closest = match k.closest {
-            None => "no iterate was recorded".to_string(),
-            Some((i, d)) if i == k.iterations => format!(
-                "no iterate comes closer than the last one (iterate {i}, largest difference {}): the printed column is not an early-stopped \
-                 iterate of this method either, and what produced it is not determined by the paper's data",
-                fmt(d, 2)
-            ),
-            Some((i, d)) => format!(
-                "the closest iterate is number {i} (largest difference {}), so an iteration stopped early is at most a partial explanation",
-                fmt(d, 2)
-            ),
-        };
-        ledger.record(
-            id,
-            Outcome::new(
-                format!("{agree} of 20 entries agree to the 4 printed decimals; largest difference {} from the certified minimizer", fmt(dev, 2)),
-                "mpfr:128/256",
-                if agree == 20 { Verdict::Reproduced } else { Verdict::Discrepancy },
-                format!(
-                    "{}: gradient projection from chord length ({} iterations, relative tolerance 1e-6 {}), then Newton's method at 128 and 256 \
-                     bits: a stationary point with ≥ {min_digits} certified digits per knot. Each printed value compared with it within half a \
-                     unit of its last decimal: the printed values are not the converged minimizer of the stated objective, by more than \
-                     rounding. Following the gradient-projection iterates from chord length (exact line search): {closest}.",
-                    k.name,
-                    k.iterations,
-                    if k.converged { "met" } else { "not met" }
-                ),
-            ),
-        );
-    }
-    // Figs. 3–5: second derivatives and third-derivative jumps per parametrization.
-    let param: Vec<(&str, Vec<f64>)> =
-        std::iter::once(("t^CL", cl_hi.iter().map(Field::to_f64).collect()))
-            .chain(
-                columns
-                    .iter()
-                    .flatten()
-                    .map(|c| (c.name, c.exact.iter().map(Field::to_f64).collect())),
-            )
-            .collect();
-    let z64 = components::<f64>(&());
-    let mut stats = Vec::new();
-    let mut stat_rows = Vec::new();
-    for (name, t) in &param {
-        let mut row = vec![name.to_string()];
-        let mut peaks = Vec::new();
-        for comp in &z64 {
-            let Ok(s) = NaturalCubicSpline::new(t.clone(), comp.clone()) else {
-                continue;
-            };
-            let m = s.second_derivatives_at_knots();
-            let peak = m.iter().fold(0.0f64, |a, x| a.max(x.abs()));
-            let third: Vec<f64> = (1..t.len())
-                .map(|i| (m[i] - m[i - 1]) / (t[i] - t[i - 1]))
-                .collect();
-            let jumps: f64 = third.windows(2).map(|w| (w[1] - w[0]).abs()).sum();
-            row.push(fmt(peak, 4));
-            row.push(fmt(jumps, 4));
-            peaks.push(peak);
-        }
-        stats.push((name.to_string(), peaks));
-        stat_rows.push(row);
-    }
-    md.push_str("\n### Figs. 3–5 as numbers: component second derivatives\n\n");
-    md.push_str(&table(
-        &[
-            "parametrization",
-            "max |x''|",
-            "sum of |jumps| of x'''",
-            "max |y''|",
-            "sum of |jumps| of y'''",
-        ],
-        &stat_rows,
-    ));
-    let base = stats.first().map(|s| s.1.clone()).unwrap_or_default();
+    cl_hi
+}
+
+/// Table III, t^EX or t^AP (printed column `col`) against the certified minimizer.
+fn minimizer_outcome(column: Option<&Column>, col: usize) -> Outcome {
+    let Some(k) = column else {
+        return Outcome::new("", "mpfr", Verdict::Failed, "the minimization failed");
+    };
+    let (agree, dev) = compare(&k.exact, col);
+    let min_digits = k.knots.iter().map(|c| c.digits).min().unwrap_or(0);
+    let closest = match k.closest {
+        None => "no iterate was recorded".to_string(),
+        Some((i, d)) if i == k.iterations => format!(
+            "no iterate comes closer than the last one (iterate {i}, largest difference {}): the printed column is not an early-stopped \
+             iterate of this method either, and what produced it is not determined by the paper's data",
+            fmt(d, 2)
+        ),
+        Some((i, d)) => format!(
+            "the closest iterate is number {i} (largest difference {}), so an iteration stopped early is at most a partial explanation",
+            fmt(d, 2)
+        ),
+    };
+    Outcome::new(
+        format!("{agree} of 20 entries agree to the 4 printed decimals; largest difference {} from the certified minimizer", fmt(dev, 2)),
+        "mpfr:128/256",
+        if agree == 20 { Verdict::Reproduced } else { Verdict::Discrepancy },
+        format!(
+            "{}: gradient projection from chord length ({} iterations, relative tolerance 1e-6 {}), then Newton's method at 128 and 256 \
+             bits: a stationary point with ≥ {min_digits} certified digits per knot. Each printed value compared with it within half a \
+             unit of its last decimal: the printed values are not the converged minimizer of the stated objective, by more than \
+             rounding. Following the gradient-projection iterates from chord length (exact line search): {closest}.",
+            k.name,
+            k.iterations,
+            if k.converged { "met" } else { "not met" }
+        ),
+    )
+}
+
+/// Figs. 3–5 as numbers: max |θ''| and the third-derivative jumps of each component, per
+/// parametrization; the claim that the minimizers reduce both maxima.
+fn second_derivative_claim(
+    ledger: &mut Ledger,
+    parametrizations: &[(&str, Vec<f64>)],
+    data: &[Vec<f64>],
+) -> Vec<Vec<(f64, f64)>> {
+    let stats: Vec<Vec<(f64, f64)>> = parametrizations
+        .iter()
+        .map(|(_, t)| {
+            data.iter()
+                .filter_map(|comp| NaturalCubicSpline::new(t.clone(), comp.clone()).ok())
+                .map(|s| {
+                    let m = s.second_derivatives_at_knots();
+                    let peak = m.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+                    let third: Vec<f64> = (1..t.len())
+                        .map(|i| (m[i] - m[i - 1]) / (t[i] - t[i - 1]))
+                        .collect();
+                    let jumps: f64 = third.windows(2).map(|w| (w[1] - w[0]).abs()).sum();
+                    (peak, jumps)
+                })
+                .collect()
+        })
+        .collect();
+    let peak = |p: &[(f64, f64)], c: usize| p.get(c).map_or(f64::NAN, |x| x.0);
+    let base = stats.first().cloned().unwrap_or_default();
     let reduced = stats.len() == 3
         && stats[1..]
             .iter()
-            .all(|(_, p)| p.len() == 2 && base.len() == 2 && p[0] < base[0] && p[1] < base[1]);
-    let describe: Vec<String> = stats
+            .all(|p| p.len() == 2 && base.len() == 2 && p[0].0 < base[0].0 && p[1].0 < base[1].0);
+    let describe: Vec<String> = parametrizations
         .iter()
-        .map(|(n, p)| {
+        .zip(&stats)
+        .map(|((n, _), p)| {
             format!(
                 "{n}: max |x''| = {}, max |y''| = {}",
-                fmt(p.first().copied().unwrap_or(f64::NAN), 4),
-                fmt(p.get(1).copied().unwrap_or(f64::NAN), 4)
+                fmt(peak(p, 0), 4),
+                fmt(peak(p, 1), 4)
             )
         })
         .collect();
@@ -264,90 +253,5 @@ pub fn section(ledger: &mut Ledger, md: &mut String, figures: &mut Vec<(String, 
              report also lists the total third-derivative jump over the interior knots",
         ),
     );
-    md.push_str(&format!("\n![Fig. 2](./{ID}_fig2.svg)\n\n"));
-    for (n, (name, t)) in param.iter().enumerate() {
-        let file = super::super::figure_file(ID, n as u32 + 3);
-        md.push_str(&format!(
-            "![Fig. {}: components with {name}](./{file})\n\n",
-            n + 3
-        ));
-        figures.push((file, component_figure(name, t, &z64)));
-    }
-    if let Some(ex) = &columns[0] {
-        figures.push((
-            super::super::figure_file(ID, 2),
-            figure2(
-                &ex.exact.iter().map(Field::to_f64).collect::<Vec<_>>(),
-                &z64,
-            ),
-        ));
-    }
-}
-
-/// Figs. 3–5: x, x', x'' and y, y', y'' against t for one parametrization.
-fn component_figure(name: &str, t: &[f64], z: &[Vec<f64>]) -> String {
-    let mut panels = Vec::new();
-    for (c, comp) in ["x", "y"].iter().enumerate() {
-        let Ok(s) = NaturalCubicSpline::new(t.to_vec(), z[c].clone()) else {
-            return String::new();
-        };
-        let grid: Vec<[f64; 3]> = (0..=600).map(|k| s.eval_all(&(k as f64 / 600.0))).collect();
-        for (j, label) in ["", "'", "''"].iter().enumerate() {
-            let mut series = vec![Series::new(
-                "",
-                (0..=600).map(|k| (k as f64 / 600.0, grid[k][j])).collect(),
-                Style::Solid,
-                c + 1,
-            )];
-            if j == 0 {
-                series.push(Series::new(
-                    "data",
-                    t.iter().copied().zip(z[c].iter().copied()).collect(),
-                    Style::Markers,
-                    2,
-                ));
-            }
-            let legend = if c == 0 {
-                Corner::LowerLeft
-            } else {
-                Corner::UpperRight
-            };
-            panels.push(Panel {
-                title: format!("{comp}{label}(t), {name}"),
-                x_label: "t (parameter, dimensionless)".into(),
-                y_label: format!("{comp}{label}"),
-                series,
-                legend,
-                ..Panel::default()
-            });
-        }
-    }
-    plot::render(&panels, (2, 3), (1200, 640)).unwrap_or_default()
-}
-
-fn figure2(t: &[f64], z: &[Vec<f64>]) -> String {
-    let (Ok(x), Ok(y)) = (
-        NaturalCubicSpline::new(t.to_vec(), z[0].clone()),
-        NaturalCubicSpline::new(t.to_vec(), z[1].clone()),
-    ) else {
-        return String::new();
-    };
-    let curve: Vec<(f64, f64)> = (0..=600)
-        .map(|k| k as f64 / 600.0)
-        .map(|s| (x.eval_all(&s)[0], y.eval_all(&s)[0]))
-        .collect();
-    let data: Vec<(f64, f64)> = z[0].iter().copied().zip(z[1].iter().copied()).collect();
-    let panel = Panel {
-        title: "Fig. 2: parametric natural cubic spline with t^EX".into(),
-        x_label: "x (data units)".into(),
-        y_label: "y (data units)".into(),
-        series: vec![
-            Series::new("spline", curve, Style::Solid, 0),
-            Series::new("Table II data", data, Style::Markers, 2),
-        ],
-        equal_aspect: true,
-        legend: Corner::UpperRight,
-        ..Panel::default()
-    };
-    plot::render(&[panel], (1, 1), (640, 640)).unwrap_or_default()
+    stats
 }

@@ -7,8 +7,6 @@ use super::one_d::compare_with_printed;
 use crate::algo::param::descent::{descend, polish};
 use crate::algo::param::natural::NaturalCubicSpline;
 use crate::algo::param::objective::{chord_length_spacing, knots_from_spacing, Objective};
-use crate::report::table;
-use crate::scalar::certify::format_float_digits;
 use crate::scalar::{Field, Float, Real};
 
 /// Rows of a transcribed table as points in `T`.
@@ -59,12 +57,28 @@ fn rounds_to_two_digits(x: f64, printed: &str) -> bool {
     (x - p).abs() <= unit / 2.0
 }
 
-/// Tables VI and VII into the ledger and the report.
-pub fn section(ledger: &mut Ledger, md: &mut String) {
-    md.push_str("## Tables VI–VII: the six-axis robot example\n\n");
+/// Tables VI and VII computed.
+pub struct RobotSection {
+    /// t^CL: 6-D chord length at 256 bits.
+    pub chord: Vec<Float>,
+    /// t^WC: work-centre chord length at 256 bits.
+    pub work_centre: Vec<Float>,
+    /// t^AP: the Eq. 34 minimizer (empty if the minimization failed).
+    pub approx: Vec<f64>,
+    /// Table VII: max |θ_j''| for t^CL, t^WC, t^AP on the printed knots.
+    pub from_printed: Vec<Vec<f64>>,
+    /// The same on our knots (NaN where our column is missing).
+    pub from_ours: Vec<Vec<f64>>,
+}
+
+/// The parametrizations of Tables VI–VII, in column order.
+pub const NAMES: [&str; 3] = ["t^CL", "t^WC", "t^AP"];
+
+/// Tables VI and VII into the ledger.
+pub fn section(ledger: &mut Ledger) -> RobotSection {
     let th256 = points::<Float, 6>(&TABLE4, &256);
-    let cl = chord(&th256);
-    let (agree, dev) = compare(&cl, 0);
+    let chord = chord(&th256);
+    let (agree, dev) = compare(&chord, 0);
     ledger.record(
         "marin.table6.chord_6d",
         Outcome::new(
@@ -75,7 +89,41 @@ pub fn section(ledger: &mut Ledger, md: &mut String) {
              unit of its last decimal",
         ),
     );
-    // Work-centre chord length, and what the printed column is consistent with.
+    let work_centre = work_centre_claim(ledger);
+    let approx = approx_claim(ledger, &chord, &th256);
+    let printed_t = |c: usize| -> Vec<f64> { printed(c).iter().map(|s| num(s).to_f64()).collect() };
+    let ours = [
+        chord.iter().map(Field::to_f64).collect::<Vec<_>>(),
+        work_centre.iter().map(Field::to_f64).collect(),
+        approx.clone(),
+    ];
+    let from_printed: Vec<Vec<f64>> = (0..3).map(|c| max_accelerations(&printed_t(c))).collect();
+    let from_ours: Vec<Vec<f64>> = ours
+        .iter()
+        .map(|t| {
+            if t.len() == 21 {
+                max_accelerations(t)
+            } else {
+                vec![f64::NAN; 6]
+            }
+        })
+        .collect();
+    ledger.record(
+        "marin.table7.max_acceleration",
+        table7_outcome(&from_printed, &from_ours),
+    );
+    ledger.record("marin.table7.reduction", reduction_outcome(&from_printed));
+    RobotSection {
+        chord,
+        work_centre,
+        approx,
+        from_printed,
+        from_ours,
+    }
+}
+
+/// Table VI, t^WC, and what the printed column is consistent with.
+fn work_centre_claim(ledger: &mut Ledger) -> Vec<Float> {
     let wc = chord(&points::<Float, 3>(&TABLE5, &256));
     let (agree_wc, dev_wc) = compare(&wc, 1);
     let p_wc: Vec<f64> = printed(1).iter().map(|s| num(s).to_f64()).collect();
@@ -127,7 +175,12 @@ pub fn section(ledger: &mut Ledger, md: &mut String) {
             ),
         ),
     );
-    // t^AP: Eq. 34 with α = (1, 1, 2, 6, 6, 6), gradient projection from t^CL then Newton.
+    wc
+}
+
+/// Table VI, t^AP: Eq. 34 with α = (1, 1, 2, 6, 6, 6), gradient projection from t^CL then
+/// Newton at 256 bits. Returns the knots in f64 (empty if the minimization failed).
+fn approx_claim(ledger: &mut Ledger, cl: &[Float], th256: &[Vec<Float>]) -> Vec<f64> {
     let z64: Vec<Vec<f64>> = (0..6)
         .map(|j| {
             points::<f64, 6>(&TABLE4, &())
@@ -156,131 +209,61 @@ pub fn section(ledger: &mut Ledger, md: &mut String) {
                 .ok()
                 .map(|h| (knots_from_spacing(&h, &bits), rough.iterations))
         });
-    let ap_t: Vec<f64> = match &ap {
-        Some((t, iterations)) => {
-            let (agree, dev) = compare(t, 2);
-            ledger.record(
-                "marin.table6.approx",
-                Outcome::new(
-                    format!("{agree} of 21 entries agree to the 4 printed decimals (largest difference {})", fmt(dev, 2)),
-                    "mpfr:256",
-                    if agree == 21 { Verdict::Reproduced } else { Verdict::Discrepancy },
-                    format!(
-                        "minimizer of Eq. 34 with α = (1, 1, 2, 6, 6, 6): gradient projection from the 6-D chord length ({iterations} iterations), \
-                         then Newton's method at 256 bits on the optimality system; compared within half a unit of the last printed decimal"
-                    ),
-                ),
-            );
-            t.iter().map(Field::to_f64).collect()
-        }
-        None => {
-            ledger.record(
-                "marin.table6.approx",
-                Outcome::new("", "mpfr", Verdict::Failed, "the minimization failed"),
-            );
-            Vec::new()
-        }
+    let Some((t, iterations)) = ap else {
+        ledger.record(
+            "marin.table6.approx",
+            Outcome::new("", "mpfr", Verdict::Failed, "the minimization failed"),
+        );
+        return Vec::new();
     };
-    let mut rows = Vec::new();
-    for i in 0..21 {
-        rows.push(vec![
-            i.to_string(),
-            TABLE6[i][0].into(),
-            format_float_digits(&cl[i], 6),
-            TABLE6[i][1].into(),
-            format_float_digits(&wc[i], 6),
-            TABLE6[i][2].into(),
-            ap_t.get(i).map_or("—".into(), |x| fmt(*x, 6)),
-        ]);
-    }
-    md.push_str(&table(
-        &[
-            "i",
-            "t^CL published",
-            "t^CL computed",
-            "t^WC published",
-            "t^WC computed",
-            "t^AP published",
-            "t^AP computed",
-        ],
-        &rows,
-    ));
-    // Table VII from the printed parametrizations (the paper's own) and from ours.
-    let printed_t = |c: usize| -> Vec<f64> { printed(c).iter().map(|s| num(s).to_f64()).collect() };
-    let names = ["t^CL", "t^WC", "t^AP"];
-    let ours_t = [
-        cl.iter().map(Field::to_f64).collect::<Vec<_>>(),
-        wc.iter().map(Field::to_f64).collect(),
-        ap_t.clone(),
-    ];
-    let mut mismatches = Vec::new();
-    let mut body = Vec::new();
-    for c in 0..3 {
-        let from_printed = max_accelerations(&printed_t(c));
-        let from_ours = if ours_t[c].len() == 21 {
-            max_accelerations(&ours_t[c])
-        } else {
-            vec![f64::NAN; 6]
-        };
-        for j in 0..6 {
-            if !rounds_to_two_digits(from_printed[j], TABLE7[c][j]) {
-                mismatches.push(format!(
-                    "{} axis {}: printed {}, computed {} (from our {} : {})",
-                    names[c],
-                    j + 1,
-                    TABLE7[c][j],
-                    fmt(from_printed[j], 3),
-                    names[c],
-                    fmt(from_ours[j], 3)
-                ));
-            }
-        }
-        body.push(
-            std::iter::once(format!("{} published", names[c]))
-                .chain(TABLE7[c].iter().map(|s| s.to_string()))
-                .collect(),
-        );
-        body.push(
-            std::iter::once(format!("{} computed (printed t)", names[c]))
-                .chain(from_printed.iter().map(|x| fmt(*x, 3)))
-                .collect(),
-        );
-        body.push(
-            std::iter::once(format!("{} computed (our t)", names[c]))
-                .chain(from_ours.iter().map(|x| fmt(*x, 3)))
-                .collect(),
-        );
-    }
-    md.push_str("\n### Table VII: max |d²θ_j/dt²| on [0, 1]\n\n");
-    md.push_str(&table(
-        &[
-            "parametrization",
-            "axis 1",
-            "axis 2",
-            "axis 3",
-            "axis 4",
-            "axis 5",
-            "axis 6",
-        ],
-        &body,
-    ));
-    md.push('\n');
+    let (agree, dev) = compare(&t, 2);
     ledger.record(
-        "marin.table7.max_acceleration",
+        "marin.table6.approx",
         Outcome::new(
-            format!("{} of 18 printed values agree to their two significant digits", 18 - mismatches.len()),
-            "f64 (natural splines on the printed knots)",
-            if mismatches.is_empty() { Verdict::Reproduced } else { Verdict::Discrepancy },
+            format!("{agree} of 21 entries agree to the 4 printed decimals (largest difference {})", fmt(dev, 2)),
+            "mpfr:256",
+            if agree == 21 { Verdict::Reproduced } else { Verdict::Discrepancy },
             format!(
-                "natural cubic spline of each Table IV axis on the printed Table VI parametrization; θ'' is piecewise linear, so its maximum modulus \
-                 is at a knot; a printed value agrees when the computed one rounds to it at two significant digits. Disagreements: {mismatches:?}"
+                "minimizer of Eq. 34 with α = (1, 1, 2, 6, 6, 6): gradient projection from the 6-D chord length ({iterations} iterations), \
+                 then Newton's method at 256 bits on the optimality system; compared within half a unit of the last printed decimal"
             ),
         ),
     );
-    // "Reduction by a factor of two or more was obtained on five of the six axes."
-    let cl_acc = max_accelerations(&printed_t(0));
-    let wc_acc = max_accelerations(&printed_t(1));
-    let ap_acc = max_accelerations(&printed_t(2));
+    t.iter().map(Field::to_f64).collect()
+}
+
+/// Table VII: each printed value against the one computed on the printed knots.
+fn table7_outcome(from_printed: &[Vec<f64>], from_ours: &[Vec<f64>]) -> Outcome {
+    let mut mismatches = Vec::new();
+    for c in 0..3 {
+        for j in 0..6 {
+            if !rounds_to_two_digits(from_printed[c][j], TABLE7[c][j]) {
+                mismatches.push(format!(
+                    "{} axis {}: printed {}, computed {} (from our {} : {})",
+                    NAMES[c],
+                    j + 1,
+                    TABLE7[c][j],
+                    fmt(from_printed[c][j], 3),
+                    NAMES[c],
+                    fmt(from_ours[c][j], 3)
+                ));
+            }
+        }
+    }
+    Outcome::new(
+        format!("{} of 18 printed values agree to their two significant digits", 18 - mismatches.len()),
+        "f64 (natural splines on the printed knots)",
+        if mismatches.is_empty() { Verdict::Reproduced } else { Verdict::Discrepancy },
+        format!(
+            "natural cubic spline of each Table IV axis on the printed Table VI parametrization; θ'' is piecewise linear, so its maximum modulus \
+             is at a knot; a printed value agrees when the computed one rounds to it at two significant digits. Disagreements: {mismatches:?}"
+        ),
+    )
+}
+
+/// "Reduction by a factor of two or more was obtained on five of the six axes."
+fn reduction_outcome(from_printed: &[Vec<f64>]) -> Outcome {
+    let (cl_acc, wc_acc, ap_acc) = (&from_printed[0], &from_printed[1], &from_printed[2]);
     let vs_cl = (0..6).filter(|&j| cl_acc[j] >= 2.0 * ap_acc[j]).count();
     let vs_wc = (0..6).filter(|&j| wc_acc[j] >= 2.0 * ap_acc[j]).count();
     let vs_both = (0..6)
@@ -296,17 +279,14 @@ pub fn section(ledger: &mut Ledger, md: &mut String) {
             )
         })
         .collect();
-    ledger.record(
-        "marin.table7.reduction",
-        Outcome::new(
-            format!("factor ≥ 2 against both other parametrizations on {vs_both} of 6 axes (against t^CL: {vs_cl}, against t^WC: {vs_wc})"),
-            "f64",
-            if vs_both == 5 { Verdict::Reproduced } else { Verdict::Discrepancy },
-            format!(
-                "ratios of max |θ''| of t^CL and of t^WC to that of t^AP, all on the printed parametrizations: {}. The printed statement counts five \
-                 axes; the computed count against both is {vs_both} (the same count follows from the printed Table VII values)",
-                ratios.join("; ")
-            ),
+    Outcome::new(
+        format!("factor ≥ 2 against both other parametrizations on {vs_both} of 6 axes (against t^CL: {vs_cl}, against t^WC: {vs_wc})"),
+        "f64",
+        if vs_both == 5 { Verdict::Reproduced } else { Verdict::Discrepancy },
+        format!(
+            "ratios of max |θ''| of t^CL and of t^WC to that of t^AP, all on the printed parametrizations: {}. The printed statement counts five \
+             axes; the computed count against both is {vs_both} (the same count follows from the printed Table VII values)",
+            ratios.join("; ")
         ),
-    );
+    )
 }
