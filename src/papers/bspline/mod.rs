@@ -5,17 +5,14 @@
 //! optimal splines (`fitting`).
 
 mod basis;
+mod figures;
 mod fitting;
 mod optimal;
+mod render;
 
 use super::{ClaimSpec, Ledger, Paper, PaperOutput};
-use crate::algo::bspline::bang_bang::response;
-use crate::algo::bspline::CardinalBSpline;
-use crate::report::plot::{self, Corner, Panel, Series, Style};
-use crate::report::{claims_section, table};
-use crate::scalar::certify::format_float_digits;
 use crate::scalar::qsqrt2::QSqrt2;
-use crate::scalar::{BigRational, Field, Float};
+use crate::scalar::{BigRational, Field};
 
 /// The paper's id (file name in `../shared/papers`).
 pub const ID: &str = "002_f491c66a0b3f232c";
@@ -80,37 +77,58 @@ const NOT_CHECKED: &[(&str, &str)] = &[
     ),
 ];
 
-fn figure_name(n: u32) -> String {
-    super::figure_file(ID, n)
+/// What the checks of paper 002 computed, for the report.
+struct Results {
+    table1: Vec<basis::Table1Row>,
+    /// The findings on Eqs. 3–5, 6 and 7, one line each.
+    geometric: [String; 3],
+    /// The printed switching times as exact numbers of Q(√2).
+    printed_switches: [QSqrt2; 3],
+    /// U for ξ = 2/3 from the printed switching times, exact.
+    amplitude: QSqrt2,
+    /// The certified Newton solution (`None` if it did not converge).
+    numeric: Option<optimal::Numeric>,
+    /// The finding on "does better than B_3", one line.
+    does_better: String,
+    /// ĝ_0…ĝ_k for k = 1…10.
+    gram: Vec<Vec<BigRational>>,
+    limit: Vec<fitting::LimitRow>,
+    /// The finding on Eq. 15, one line.
+    limit_finding: String,
+    reconstruction: Option<(Vec<fitting::Reconstruction>, Vec<fitting::Polyline>)>,
 }
 
 /// Run every check of paper 002 and build its report.
 pub fn verify() -> PaperOutput {
     let mut ledger = Ledger::new(ID, SPECS);
-    let mut figures = Vec::new();
-    let mut md = super::report_heading(ID, SHORT, TITLE);
+    let (table1, geometric) = basis_checks(&mut ledger);
+    let (printed_switches, amplitude, numeric, does_better) = optimal_checks(&mut ledger);
+    let (gram, limit, limit_finding) = fitting_checks(&mut ledger);
+    let reconstruction = fitting::reconstruction();
+    if let Some((recs, _)) = &reconstruction {
+        ledger.record(
+            "bspline.sec6.reconstruction",
+            fitting::reconstruction_claim(recs),
+        );
+    }
+    let results = Results {
+        table1,
+        geometric,
+        printed_switches,
+        amplitude,
+        numeric,
+        does_better,
+        gram,
+        limit,
+        limit_finding,
+        reconstruction,
+    };
+    render::report(&results, ledger.finish())
+}
 
-    // Sec. 2: Table 1 and the basis.
+/// Sec. 2–3: Table 1, Algorithm 1, the basis properties and the geometric construction.
+fn basis_checks(ledger: &mut Ledger) -> (Vec<basis::Table1Row>, [String; 3]) {
     let (rows, t1) = basis::table1();
-    md.push_str("## Table 1: N_{j,k} for k = 0…3\n\n");
-    let body: Vec<Vec<String>> = rows
-        .iter()
-        .map(|r| {
-            let comparison = if r.equal { "equal" } else { "different" };
-            vec![
-                r.k.to_string(),
-                r.j.to_string(),
-                r.printed.clone(),
-                r.ours.clone(),
-                comparison.into(),
-            ]
-        })
-        .collect();
-    md.push_str(&table(
-        &["k", "j", "published", "Algorithm 1 (exact)", "comparison"],
-        &body,
-    ));
-    md.push('\n');
     ledger.record("bspline.table1.n_jk", t1);
     ledger.record("bspline.alg1.de_boor_cox", basis::algorithm1_vs_de_boor());
     let [ends, smooth, unity] = basis::properties();
@@ -118,256 +136,45 @@ pub fn verify() -> PaperOutput {
     ledger.record("bspline.eq2.smoothness", smooth);
     ledger.record("bspline.eq2.partition_of_unity", unity);
     let [eqs, eq6, eq7] = basis::geometric();
-    md.push_str(&format!(
-        "## Sec. 3: the geometric construction\n\n- Eqs. 3–5: {}\n- Eq. 6: {}\n- Eq. 7: {}\n\n",
-        eqs.reproduced, eq6.reproduced, eq7.reproduced
-    ));
+    let findings = [
+        eqs.reproduced.clone(),
+        eq6.reproduced.clone(),
+        eq7.reproduced.clone(),
+    ];
     ledger.record("bspline.sec3.eqs3_5", eqs);
     ledger.record("bspline.sec3.eq6_is_basis", eq6);
     ledger.record("bspline.sec3.eq7", eq7);
+    (rows, findings)
+}
 
-    // Sec. 4: bang-bang.
+/// Sec. 4: the bang-bang optimum, exact and certified.
+fn optimal_checks(ledger: &mut Ledger) -> ([QSqrt2; 3], QSqrt2, Option<optimal::Numeric>, String) {
     let numeric = optimal::numeric();
     let [times, unique, amp, trajectory] = optimal::section41(&numeric);
-    md.push_str("## Sec. 4: the minimum-L∞ control\n\n");
     let printed = optimal::printed_switches();
     let exact_u =
         crate::algo::bspline::bang_bang::amplitude(&printed, &QSqrt2::from_ratio(2, 3, &()));
-    let mut rows = Vec::new();
-    if let Some(n) = &numeric {
-        let names = ["t1", "t2", "t3"];
-        for i in 0..3 {
-            rows.push(vec![
-                names[i].to_string(),
-                ["2 − √2", "2", "2 + √2"][i].into(),
-                printed[i].to_plain_string(),
-                n.switches[i].text.clone(),
-                n.switches[i].digits.to_string(),
-            ]);
-        }
-        rows.push(vec![
-            "U (ξ = 2/3)".into(),
-            "(2 + √2)/2".into(),
-            exact_u.to_plain_string(),
-            n.amplitude.text.clone(),
-            n.amplitude.digits.to_string(),
-        ]);
-    }
-    md.push_str(&table(
-        &[
-            "quantity",
-            "published",
-            "exact (Q(√2))",
-            "Newton, MPFR 128/256 bits",
-            "certified digits",
-        ],
-        &rows,
-    ));
     let better = optimal::does_better(&exact_u);
-    md.push_str(&format!(
-        "\n{}\n\n![Fig. 1](./{})\n\n",
-        better.reproduced,
-        figure_name(1)
-    ));
-    figures.push((
-        figure_name(1),
-        plot::render_or_note(&fig1_panels(&printed, &exact_u), (1, 2), (1100, 420)),
-    ));
+    let finding = better.reproduced.clone();
     ledger.record("bspline.sec41.switching_times", times);
     ledger.record("bspline.sec41.uniqueness", unique);
     ledger.record("bspline.sec41.amplitude", amp);
     ledger.record("bspline.sec41.trajectory", trajectory);
     ledger.record("bspline.sec42.solution", optimal::section42());
     ledger.record("bspline.sec4.does_better", better);
+    (printed, exact_u, numeric, finding)
+}
 
-    // Sec. 5: Gram matrix and optimal splines.
+/// Sec. 5: the Gram matrix and the optimal splines.
+fn fitting_checks(ledger: &mut Ledger) -> (Vec<Vec<BigRational>>, Vec<fitting::LimitRow>, String) {
     ledger.record("bspline.sec5.gram_k3", fitting::gram_k3());
     let (pd, _) = fitting::gram_positive_definite();
     ledger.record("bspline.sec5.gram_positive_definite", pd);
     let (all, tables) = fitting::gram_all(10);
-    md.push_str("## Sec. 5: Gram entries ĝ_0…ĝ_k of the k-th derivatives (exact integrals; closed form (−1)^m C(2k, k+m))\n\n");
-    let body: Vec<Vec<String>> = tables
-        .iter()
-        .enumerate()
-        .map(|(i, g)| {
-            vec![
-                (i + 1).to_string(),
-                g.iter()
-                    .map(|x| x.to_string())
-                    .collect::<Vec<_>>()
-                    .join(", "),
-            ]
-        })
-        .collect();
-    md.push_str(&table(&["k", "ĝ_0, ĝ_1, …, ĝ_k"], &body));
-    md.push_str("\nThe paper prints k = 3: 20, −15, 6, −1.\n\n");
     ledger.record("bspline.sec5.gram_closed_form", all);
     ledger.record("bspline.eq14.interpolation", fitting::interpolation());
     let (limit, limit_rows) = fitting::smoothing_limit();
-    md.push_str("## Eq. 15: smoothing → interpolation as w → ∞\n\n");
-    let body: Vec<Vec<String>> = limit_rows
-        .iter()
-        .map(|r| {
-            vec![
-                format!("1e{}", r.exponent),
-                format_float_digits(&r.distance, 6),
-            ]
-        })
-        .collect();
-    md.push_str(&table(
-        &["w (W = wI)", "‖τ̂(w) − τ*‖ (exact, rounded)"],
-        &body,
-    ));
-    md.push_str(&format!("\n{}\n\n", limit.reproduced));
+    let finding = limit.reproduced.clone();
     ledger.record("bspline.eq15.smoothing_limit", limit);
-
-    // Sec. 6.
-    md.push_str("## Sec. 6: reconstructing a stroke (Fig. 3 analogue)\n\n");
-    match fitting::reconstruction() {
-        Some((recs, planar)) => {
-            md.push_str(&format!(
-                "The paper's character data are not printed. Ours: a cubic spline in R³ with the 20 control points (counting multiplicities) {:?}, sampled at t = 3, 5, …, 19, 20 and reconstructed per coordinate (k = 3, M = 20).\n\n",
-                fitting::stroke_control_points()
-            ));
-            let fmt = |x: f64| format_float_digits(&Float::with_val(53, x), 4);
-            let body: Vec<Vec<String>> = recs
-                .iter()
-                .map(|r| {
-                    vec![
-                        r.label.clone(),
-                        fmt(r.max_to_original),
-                        fmt(r.max_to_interpolation),
-                    ]
-                })
-                .collect();
-            md.push_str(&table(
-                &[
-                    "reconstruction",
-                    "max distance to the original on [3, 20]",
-                    "max distance to the interpolation",
-                ],
-                &body,
-            ));
-            md.push_str(&format!("\n![Fig. 3](./{})\n\n", figure_name(3)));
-            figures.push((
-                figure_name(3),
-                plot::render_or_note(&fig3_panels(&planar), (1, 1), (760, 620)),
-            ));
-            ledger.record(
-                "bspline.sec6.reconstruction",
-                fitting::reconstruction_claim(&recs),
-            );
-        }
-        None => md.push_str("The reconstruction failed.\n\n"),
-    }
-
-    let claims = ledger.finish();
-    md.push_str(&crate::report::not_checked_section(NOT_CHECKED));
-    md.push_str(&claims_section(&claims));
-    PaperOutput {
-        claims,
-        markdown: md,
-        figures,
-    }
-}
-
-fn fig1_panels(t: &[QSqrt2; 3], u: &QSqrt2) -> Vec<Panel> {
-    let b3 = CardinalBSpline::<BigRational>::from_algorithm1(3, &());
-    let grid: Vec<BigRational> = (0..=400)
-        .map(|i| BigRational::new(i.into(), 100.into()))
-        .collect();
-    let bang: Vec<(f64, f64)> = grid
-        .iter()
-        .map(|s| {
-            (
-                s.to_f64(),
-                response(t, u, &QSqrt2::from_rational(s, &()))[0].to_f64(),
-            )
-        })
-        .collect();
-    let spline: Vec<(f64, f64)> = grid
-        .iter()
-        .map(|s| (s.to_f64(), b3.eval(s).to_f64()))
-        .collect();
-    let (t1, t3, uf) = (t[0].to_f64(), t[2].to_f64(), u.to_f64());
-    let control = vec![
-        (0.0, uf),
-        (t1, uf),
-        (t1, -uf),
-        (2.0, -uf),
-        (2.0, uf),
-        (t3, uf),
-        (t3, -uf),
-        (4.0, -uf),
-    ];
-    let spline_control = vec![
-        (0.0, 1.0),
-        (1.0, 1.0),
-        (1.0, -3.0),
-        (2.0, -3.0),
-        (2.0, 3.0),
-        (3.0, 3.0),
-        (3.0, -1.0),
-        (4.0, -1.0),
-    ];
-    vec![
-        Panel {
-            title: "Fig. 1: x(t), bang-bang optimum and B_3".into(),
-            x_label: "t (time units)".into(),
-            y_label: "x (length units)".into(),
-            series: vec![
-                Series::new("bang-bang x(t)", bang, Style::Solid, 0),
-                Series::new("B_3(t)", spline, Style::Dotted, 1),
-            ],
-            legend: Corner::UpperRight,
-            ..Panel::default()
-        },
-        Panel {
-            title: "controls u = x'''".into(),
-            x_label: "t (time units)".into(),
-            y_label: "u = x‴ (length/time³)".into(),
-            series: vec![
-                Series::new("bang-bang, U = (2+√2)/2", control, Style::Solid, 0),
-                Series::new("B_3'''", spline_control, Style::Dotted, 1),
-            ],
-            legend: Corner::LowerLeft,
-            ..Panel::default()
-        },
-    ]
-}
-
-fn fig3_panels(planar: &[Vec<(f64, f64)>]) -> Vec<Panel> {
-    let names = ["original", "W = I", "W = 10I", "W = 100I", "interpolation"];
-    let styles = [
-        Style::Solid,
-        Style::Dotted,
-        Style::Dashed,
-        Style::Solid,
-        Style::Dotted,
-    ];
-    let mut series: Vec<Series> = planar
-        .iter()
-        .zip(names.iter().zip(styles))
-        .enumerate()
-        .map(|(i, (pts, (n, s)))| Series::new(*n, pts.clone(), s, i))
-        .collect();
-    let polygon: Vec<(f64, f64)> = fitting::stroke_control_points()
-        .iter()
-        .map(|p| (p[0] as f64, p[1] as f64))
-        .collect();
-    series.push(Series::new(
-        "control polygon",
-        polygon,
-        Style::LineMarkers,
-        5,
-    ));
-    vec![Panel {
-        title: "Fig. 3 analogue: smoothing reconstructions (xy projection)".into(),
-        x_label: "x (data units)".into(),
-        y_label: "y (data units)".into(),
-        series,
-        equal_aspect: true,
-        legend: Corner::UpperRight,
-        ..Panel::default()
-    }]
+    (tables, limit_rows, finding)
 }
