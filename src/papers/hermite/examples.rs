@@ -25,7 +25,6 @@ use super::super::{Outcome, Verdict};
 use crate::algo::hermite::HermiteData;
 use crate::numeric::poly::bernstein::power_basis_derivative;
 use crate::numeric::poly::Bernstein;
-use crate::report::plot::{Corner, Panel, Series, Style};
 use crate::scalar::certify::format_float_digits;
 use crate::scalar::{BigRational, Field, Float, Real};
 
@@ -263,47 +262,6 @@ pub fn turn_claims(m: &[TurnMetrics]) -> [Outcome; 3] {
     ]
 }
 
-/// Panel of Fig. 3 from the measurements.
-pub fn turn_figure(m: &[TurnMetrics]) -> Vec<Panel> {
-    let styles = [Style::Dashed, Style::Solid, Style::Dotted];
-    let mut series: Vec<Series> = m
-        .iter()
-        .zip(styles)
-        .enumerate()
-        .map(|(i, (t, style))| {
-            let name = if t.factor.1 == 1 {
-                format!("{} × nominal", t.factor.0)
-            } else {
-                format!("{}/{} × nominal", t.factor.0, t.factor.1)
-            };
-            Series::new(name, t.samples.clone(), style, [1, 0, 2][i])
-        })
-        .collect();
-    let arc: Vec<(f64, f64)> = (0..=200)
-        .map(|i| {
-            let angle = Float::pi(&64) / 2u32 * Float::with_val(64, i) / 200u32;
-            let (s, c) = Real::sin_cos(&angle);
-            (s.to_f64(), 1.0 - c.to_f64())
-        })
-        .collect();
-    series.push(Series::new("circular arc", arc, Style::Dotted, 3));
-    series.push(Series::new(
-        "start, end",
-        vec![(0.0, 0.0), (1.0, 1.0)],
-        Style::Markers,
-        0,
-    ));
-    vec![Panel {
-        title: "Fig. 3: same end conditions, durations 0.2, 1 and 3 × π/2".into(),
-        x_label: "x (length units)".into(),
-        y_label: "y (length units)".into(),
-        series,
-        equal_aspect: true,
-        legend: Corner::LowerRight,
-        ..Panel::default()
-    }]
-}
-
 /// The landing instance of Fig. 4 (exact), one polynomial per coordinate x, y, z.
 pub fn landing_data() -> [HermiteData<BigRational>; 3] {
     let q = |v: i64| BigRational::from_integer(v.into());
@@ -389,43 +347,4 @@ pub fn landing_claim(l: &LandingMetrics) -> Outcome {
             fmt4(l.max_lateral_overshoot)
         ),
     )
-}
-
-/// Panels of Fig. 4: top view and altitude.
-pub fn landing_figure(l: &LandingMetrics) -> Vec<Panel> {
-    let top: Vec<(f64, f64)> = l.samples.iter().map(|p| (p[0], p[1])).collect();
-    let t_alt: Vec<(f64, f64)> = l
-        .samples
-        .iter()
-        .enumerate()
-        .map(|(i, p)| (i as f64 * 0.1, p[2]))
-        .collect();
-    vec![
-        Panel {
-            title: "Fig. 4: landing, top view".into(),
-            x_label: "x along the runway (m)".into(),
-            y_label: "y (m)".into(),
-            series: vec![
-                Series::new("runway", vec![(0.0, 0.0), (3000.0, 0.0)], Style::Solid, 0),
-                Series::new("trajectory", top, Style::Dotted, 1),
-                Series::new(
-                    "start, threshold",
-                    vec![(0.0, 2000.0), (0.0, 0.0)],
-                    Style::Markers,
-                    2,
-                ),
-            ],
-            equal_aspect: true,
-            legend: Corner::LowerRight,
-            ..Panel::default()
-        },
-        Panel {
-            title: "altitude".into(),
-            x_label: "t (s)".into(),
-            y_label: "z (m)".into(),
-            series: vec![Series::new("altitude", t_alt, Style::Solid, 1)],
-            legend: Corner::UpperRight,
-            ..Panel::default()
-        },
-    ]
 }

@@ -1,0 +1,234 @@
+//! The Markdown report of paper 000, written from the checks' [`Results`](super::Results).
+
+use super::{
+    conditioning, examples, figures, Results, FIG2_FAST, FIG2_SLOW, ID, NOT_CHECKED, SHORT, TITLE,
+};
+use crate::ledger::{Claim, PaperOutput};
+use crate::report::{claims_section, not_checked_section, plot, table};
+use crate::scalar::certify::format_float_digits;
+use crate::scalar::{Field, Float};
+
+fn figure_name(n: u32) -> String {
+    super::super::figure_file(ID, n)
+}
+
+/// The report and figures of paper 000.
+pub fn report(r: &Results, claims: Vec<Claim>) -> PaperOutput {
+    let mut md = super::super::report_heading(ID, SHORT, TITLE);
+    let mut figures = vec![(
+        figure_name(2),
+        plot::render_or_note(
+            &figures::fig2_panels(&r.fig2_curves[0], &r.fig2_curves[1]),
+            (1, 3),
+            (1200, 380),
+        ),
+    )];
+    md.push_str(&fig2(r));
+    md.push_str(&format!(
+        "## Eqs. 16–18: which control points each end determines\n\nEqs. 16–17 as printed give the start data m+2 control points and the end data m; the exact map gives each end m+1:\n\n\
+         - printed: p_0…p_(m+1) from the start, p_(m+2)…p_(2m+1) from the end;\n- computed: {}.\n\n{}\n\n",
+        r.ranges.reproduced, r.ranges.evidence
+    ));
+    md.push_str(&turn(r, &mut figures));
+    md.push_str(&landing(r, &mut figures));
+    md.push_str(&fig5_section(&r.kappa));
+    figures.push((
+        figure_name(5),
+        plot::render_or_note(&figures::fig5_panels(&r.kappa), (1, 1), (900, 560)),
+    ));
+    md.push_str(&not_checked_section(NOT_CHECKED));
+    md.push_str(&claims_section(&claims));
+    PaperOutput {
+        claims,
+        markdown: md,
+        figures,
+    }
+}
+
+fn fig2(r: &Results) -> String {
+    let [fast, slow] = &r.fig2;
+    let rows = [
+        vec![
+            "1".into(),
+            format!("[{FIG2_FAST}]"),
+            fast.reproduced.clone(),
+            fast.verdict.as_str().into(),
+        ],
+        vec![
+            "2".into(),
+            format!("[{FIG2_SLOW}]"),
+            slow.reproduced.clone(),
+            slow.verdict.as_str().into(),
+        ],
+    ];
+    format!(
+        "## Fig. 2: control points for H = [0 0 0 | 1 1 0]\n\n{}\n![Fig. 2](./{})\n\n",
+        table(
+            &["duration", "published", "reproduced (exact)", "verdict"],
+            &rows
+        ),
+        figure_name(2)
+    )
+}
+
+fn turn(r: &Results, figures: &mut Vec<(String, String)>) -> String {
+    let mut md = String::new();
+    md.push_str("## Fig. 3: one turn, three durations\n\n");
+    md.push_str(
+        "Data (ours; the paper prints none): a uniform quarter turn of radius 1 at speed 1, start (0, 0) with velocity (1, 0) \
+         and acceleration (0, 1), end (1, 1) with velocity (0, 1) and acceleration (−1, 0); m = 2; nominal duration π/2 (the \
+         circle's). Criteria fixed beforehand: *straight* = closer to the chord than to the arc (Hausdorff distance); \
+         *circular* = closer to the arc than to the chord; *loops away* = gets farther from the terminal point than it started.\n\n",
+    );
+    match &r.turn {
+        Some(metrics) => {
+            let rows: Vec<Vec<String>> = metrics
+                .iter()
+                .map(|t| {
+                    vec![
+                        if t.factor.1 == 1 {
+                            t.factor.0.to_string()
+                        } else {
+                            format!("{}/{}", t.factor.0, t.factor.1)
+                        },
+                        examples::fmt4(t.duration),
+                        examples::fmt4(t.hausdorff_chord),
+                        examples::fmt4(t.hausdorff_arc),
+                        examples::fmt4(t.max_radial_deviation),
+                        examples::fmt4(t.farthest_from_end),
+                        examples::fmt4(t.turning_degrees),
+                        examples::fmt4(t.max_speed),
+                    ]
+                })
+                .collect();
+            md.push_str(&table(
+                &[
+                    "× nominal",
+                    "duration",
+                    "Hausdorff to chord",
+                    "Hausdorff to arc",
+                    "max radial dev.",
+                    "max dist. to end / start's",
+                    "tangent turning (°)",
+                    "peak speed",
+                ],
+                &rows,
+            ));
+            md.push_str(&format!("\n![Fig. 3](./{})\n\n", figure_name(3)));
+            figures.push((
+                figure_name(3),
+                plot::render_or_note(&figures::turn_figure(metrics), (1, 1), (640, 640)),
+            ));
+        }
+        None => md.push_str("The Fig. 3 instance failed to solve.\n\n"),
+    }
+
+    md
+}
+
+fn landing(r: &Results, figures: &mut Vec<(String, String)>) -> String {
+    let mut md = String::new();
+    md.push_str("## Fig. 4: landing\n\n");
+    match &r.landing {
+        Some((l, claim)) => {
+            let rows: Vec<Vec<String>> = ["x", "y", "z"]
+                .iter()
+                .zip(&l.curve)
+                .map(|(name, b)| {
+                    vec![
+                        name.to_string(),
+                        b.control_points
+                            .iter()
+                            .map(|c| c.to_plain_string())
+                            .collect::<Vec<_>>()
+                            .join(", "),
+                    ]
+                })
+                .collect();
+            md.push_str("Data (ours): runway along +x, threshold at the origin; start on the downwind leg at (0, 2000, 300) m flying (−60, 0, 0) m/s, zero acceleration; cross the threshold at (55, 0, 0) m/s, zero acceleration, after 60 s (a standard-rate 180° turn). Exact control points (m):\n\n");
+            md.push_str(&table(&["coordinate", "control points p_0 … p_5"], &rows));
+            md.push_str(&format!(
+                "\n{}\n\n![Fig. 4](./{})\n\n",
+                claim.evidence,
+                figure_name(4)
+            ));
+            figures.push((
+                figure_name(4),
+                plot::render_or_note(&figures::landing_figure(l), (1, 2), (1100, 420)),
+            ));
+        }
+        None => md.push_str("The landing instance failed to solve.\n\n"),
+    }
+
+    md
+}
+
+fn fmt_kappa(k: &Option<conditioning::Kappa>, digits: u32) -> String {
+    k.as_ref().map_or("—".into(), |k| {
+        format_float_digits(&k.exact, digits.min(k.value.digits))
+    })
+}
+
+fn fig5_section(rows: &[conditioning::KappaRow]) -> String {
+    let mut md = String::from("## Fig. 5: condition number of the transform\n\n");
+    md.push_str(
+        "κ2 = σmax/σmin (Eq. 10) of the matrix taking p_0…p_(2m+1) to H (Eqs. 14–15), for m derivatives at each end. Certified \
+         column: MPFR at p and 2p bits, printed to 20 of its certified digits (the full values are in `claims.json` evidence \
+         where needed). f64 columns: nalgebra's SVD and our one-sided Jacobi, each on the correctly rounded f64 matrix, with \
+         their correct digits against the certified value. *binomial* is the same matrix without the factors n!/(n−j)!/T^j.\n\n",
+    );
+    let body: Vec<Vec<String>> = rows
+        .iter()
+        .map(|r| {
+            let bits = r.unit.as_ref().map_or(0, |k| k.bits);
+            let digits = r.unit.as_ref().map_or(0, |k| k.value.digits);
+            let rel = match (r.nalgebra, &r.unit) {
+                (Some(a), Some(k)) => format_float_digits(
+                    &Float::with_val(53, crate::scalar::certify::relative_error(a, &k.exact)),
+                    2,
+                ),
+                _ => "—".into(),
+            };
+            vec![
+                r.m.to_string(),
+                fmt_kappa(&r.unit, 20),
+                format!("{digits} ({bits}/{} bits)", 2 * bits),
+                match r.nalgebra {
+                    None => "— (overflow)".into(),
+                    Some(k) if k.is_infinite() => "∞ (σmin = 0)".into(),
+                    Some(k) => crate::scalar::float_text(k),
+                },
+                rel,
+                conditioning::f64_digits(r.nalgebra, &r.unit).to_string(),
+                conditioning::f64_digits(r.jacobi_f64, &r.unit).to_string(),
+                fmt_kappa(&r.durations[0], 6),
+                fmt_kappa(&r.durations[1], 6),
+                fmt_kappa(&r.durations[2], 6),
+                fmt_kappa(&r.binomial, 6),
+            ]
+        })
+        .collect();
+    md.push_str(&table(
+        &[
+            "m",
+            "κ2, T = 1 (certified)",
+            "certified digits (precisions)",
+            "f64 nalgebra",
+            "rel. error",
+            "f64 nalgebra digits",
+            "f64 Jacobi digits",
+            "T = 1/2",
+            "T = 2",
+            "T = 10",
+            "binomial, T = 1",
+        ],
+        &body,
+    ));
+    md.push_str(&format!(
+        "\nGrowth law observed: {}.\n\nnalgebra's f64 value has no correct digit from m = {}.\n\n![Fig. 5](./{})\n\n",
+        conditioning::growth_law(rows),
+        conditioning::f64_breakdown(rows).map_or("— (never)".to_string(), |m| m.to_string()),
+        figure_name(5)
+    ));
+    md
+}
