@@ -112,109 +112,115 @@ fn basis_params(
             ))
         }
     };
-    let basis_count = nonempty.len() - 1;
     match kind {
-        Kind::Bfbs => {
-            input::only_fields(params, &["i"])
-                .map_err(|e| InputError(e.0.replacen("input:", "field \"params\":", 1)))?;
-            let exponent = |v: &Value, path: &str| {
-                input::count(v, path, MAX_EXPONENT as usize).and_then(|i| {
-                    if i == 0 {
-                        fail(format!("field \"{path}\": exponents must be at least 1"))
-                    } else {
-                        Ok(i as u32)
-                    }
-                })
-            };
-            let exponents = match params.get("i") {
-                None => vec![2; basis_count],
-                Some(Value::Array(items)) => {
-                    if items.len() != basis_count {
-                        return fail(format!(
-                            "field \"params.i\": expected one exponent per basis function ({basis_count}), found {}",
-                            items.len()
-                        ));
-                    }
-                    items
-                        .iter()
-                        .enumerate()
-                        .map(|(k, v)| exponent(v, &format!("params.i[{k}]")))
-                        .collect::<Result<_, _>>()?
-                }
-                Some(v) => vec![exponent(v, "params.i")?; basis_count],
-            };
-            Ok(BasisParams::Bfbs(exponents))
-        }
-        Kind::Erbs => {
-            let mut known = ERBS_FIELDS.to_vec();
-            known.push("centre");
-            input::only_fields(params, &known)
-                .map_err(|e| InputError(e.0.replacen("input:", "field \"params\":", 1)))?;
-            let centre = input::choice(
-                params,
-                "centre",
-                &[
-                    ("cited", CentreReading::Cited),
-                    ("printed", CentreReading::AsPrinted),
-                ],
-                Some(CentreReading::Cited),
-            )
-            .map_err(|e| InputError(e.0.replacen("\"centre\"", "\"params.centre\"", 1)))?;
-            let intervals = nonempty.len();
-            let filled = nonempty.iter().filter(|&&b| b).count();
-            // Each field: one value, or one per interval.
-            let mut columns: Vec<Option<Vec<RealInput>>> = Vec::new();
-            let mut single = Vec::new();
-            for (name, (n, d)) in ERBS_FIELDS.iter().zip(ERBS_DEFAULTS) {
-                let path = format!("params.{name}");
-                match params.get(*name) {
-                    None => {
-                        single.push(RealInput::Exact(BigRational::new(n.into(), d.into())));
-                        columns.push(None);
-                    }
-                    Some(Value::Array(items)) => {
-                        let values: Vec<RealInput> = items
-                            .iter()
-                            .enumerate()
-                            .map(|(k, v)| input::real(v, &format!("{path}[{k}]")))
-                            .collect::<Result<_, _>>()?;
-                        let per_interval = if values.len() == intervals {
-                            values
-                        } else if values.len() == filled {
-                            spread(&values, nonempty)
-                        } else {
-                            return fail(format!(
-                                "field \"{path}\": expected one value per knot interval ({intervals}, or {filled} without the empty ones), found {}",
-                                values.len()
-                            ));
-                        };
-                        single.push(per_interval[0].clone());
-                        columns.push(Some(per_interval));
-                    }
-                    Some(v) => {
-                        single.push(input::real(v, &path)?);
-                        columns.push(None);
-                    }
-                }
-            }
-            let sets = if columns.iter().all(Option::is_none) {
-                vec![array5(single)]
+        Kind::Bfbs => bfbs_params(params, nonempty.len() - 1),
+        Kind::Erbs => erbs_params(params, nonempty),
+    }
+}
+
+/// `params` of a BFBS: `i`, one exponent for all `basis_count` basis functions or one each.
+fn bfbs_params(params: &Map<String, Value>, basis_count: usize) -> Result<BasisParams, InputError> {
+    input::only_fields(params, &["i"])
+        .map_err(|e| InputError(e.0.replacen("input:", "field \"params\":", 1)))?;
+    let exponent = |v: &Value, path: &str| {
+        input::count(v, path, MAX_EXPONENT as usize).and_then(|i| {
+            if i == 0 {
+                fail(format!("field \"{path}\": exponents must be at least 1"))
             } else {
-                (0..intervals)
-                    .map(|j| {
-                        array5(
-                            columns
-                                .iter()
-                                .zip(&single)
-                                .map(|(c, s)| c.as_ref().map_or(s, |c| &c[j]).clone())
-                                .collect(),
-                        )
-                    })
-                    .collect()
-            };
-            Ok(BasisParams::Erbs { sets, centre })
+                Ok(i as u32)
+            }
+        })
+    };
+    let exponents = match params.get("i") {
+        None => vec![2; basis_count],
+        Some(Value::Array(items)) => {
+            if items.len() != basis_count {
+                return fail(format!(
+                    "field \"params.i\": expected one exponent per basis function ({basis_count}), found {}",
+                    items.len()
+                ));
+            }
+            items
+                .iter()
+                .enumerate()
+                .map(|(k, v)| exponent(v, &format!("params.i[{k}]")))
+                .collect::<Result<_, _>>()?
+        }
+        Some(v) => vec![exponent(v, "params.i")?; basis_count],
+    };
+    Ok(BasisParams::Bfbs(exponents))
+}
+
+/// `params` of an ERBS: each of α, β, γ, λ, σ one value or one per knot interval, and the
+/// reading of the centre.
+fn erbs_params(params: &Map<String, Value>, nonempty: &[bool]) -> Result<BasisParams, InputError> {
+    let mut known = ERBS_FIELDS.to_vec();
+    known.push("centre");
+    input::only_fields(params, &known)
+        .map_err(|e| InputError(e.0.replacen("input:", "field \"params\":", 1)))?;
+    let centre = input::choice(
+        params,
+        "centre",
+        &[
+            ("cited", CentreReading::Cited),
+            ("printed", CentreReading::AsPrinted),
+        ],
+        Some(CentreReading::Cited),
+    )
+    .map_err(|e| InputError(e.0.replacen("\"centre\"", "\"params.centre\"", 1)))?;
+    let intervals = nonempty.len();
+    let filled = nonempty.iter().filter(|&&b| b).count();
+    // Each field: one value, or one per interval.
+    let mut columns: Vec<Option<Vec<RealInput>>> = Vec::new();
+    let mut single = Vec::new();
+    for (name, (n, d)) in ERBS_FIELDS.iter().zip(ERBS_DEFAULTS) {
+        let path = format!("params.{name}");
+        match params.get(*name) {
+            None => {
+                single.push(RealInput::Exact(BigRational::new(n.into(), d.into())));
+                columns.push(None);
+            }
+            Some(Value::Array(items)) => {
+                let values: Vec<RealInput> = items
+                    .iter()
+                    .enumerate()
+                    .map(|(k, v)| input::real(v, &format!("{path}[{k}]")))
+                    .collect::<Result<_, _>>()?;
+                let per_interval = if values.len() == intervals {
+                    values
+                } else if values.len() == filled {
+                    spread(&values, nonempty)
+                } else {
+                    return fail(format!(
+                        "field \"{path}\": expected one value per knot interval ({intervals}, or {filled} without the empty ones), found {}",
+                        values.len()
+                    ));
+                };
+                single.push(per_interval[0].clone());
+                columns.push(Some(per_interval));
+            }
+            Some(v) => {
+                single.push(input::real(v, &path)?);
+                columns.push(None);
+            }
         }
     }
+    let sets = if columns.iter().all(Option::is_none) {
+        vec![array5(single)]
+    } else {
+        (0..intervals)
+            .map(|j| {
+                array5(
+                    columns
+                        .iter()
+                        .zip(&single)
+                        .map(|(c, s)| c.as_ref().map_or(s, |c| &c[j]).clone())
+                        .collect(),
+                )
+            })
+            .collect()
+    };
+    Ok(BasisParams::Erbs { sets, centre })
 }
 
 fn array5(v: Vec<RealInput>) -> [RealInput; 5] {

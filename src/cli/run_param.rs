@@ -1,15 +1,13 @@
 //! `run marin-1d`, `run natural-spline` and `run marin`: the JSON shapes of issue 5.
 
 use super::budget::{check_output, Rates};
-use super::dispatch::{run_field, FieldJob};
+use super::dispatch::{run_field, run_real, FieldJob, RealJob};
 use super::input::{self, fail, InputError, RunError};
 use super::output::Out;
 use super::Rendered;
-use crate::algo::param::descent::{descend, polish};
+use crate::algo::param::descent::{descend, refine, Descent};
 use crate::algo::param::natural::NaturalCubicSpline;
-use crate::algo::param::objective::{
-    chord_length_spacing, knots_from_spacing, objective, Objective,
-};
+use crate::algo::param::objective::{chord_length_spacing, Objective};
 use crate::algo::param::one_d::{
     chord_length_1d, classify, minimizing_parametrization, Case, ParamError,
 };
@@ -266,7 +264,7 @@ pub fn run_marin(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendere
     )?;
     let spline_error =
         |e: crate::algo::param::natural::SplineError| InputError(format!("field \"points\": {e}"));
-    // The descent runs in f64: it only has to land in Newton's basin.
+    // The descent runs once, in f64: it only has to land in Newton's basin.
     let z64: Vec<Vec<f64>> = data
         .z
         .iter()
@@ -281,101 +279,51 @@ pub fn run_marin(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendere
         &mut |_, _| {},
     )
     .map_err(spline_error)?;
-    let finish = |ctx_bits: Option<u32>| -> Result<Out<Float>, InputError> {
-        let bits = ctx_bits.unwrap_or(53);
-        let z: Vec<Vec<Float>> = data
+    run_real(
+        &MarinJob { data, rough },
+        scalar,
+        "option --scalar: the minimizer is irrational in general; use f64 or mpfr:<bits>",
+    )
+}
+
+/// Newton's refinement of the f64 descent's end point in the chosen number type.
+struct MarinJob {
+    data: MarinInput,
+    rough: Descent<f64>,
+}
+
+impl RealJob for MarinJob {
+    fn run<T: Real>(&self, ctx: &T::Ctx) -> Result<Out<T>, InputError> {
+        let to_t = |q: &BigRational| T::from_rational(q, ctx);
+        let z: Vec<Vec<T>> = self
+            .data
             .z
             .iter()
-            .map(|c| c.iter().map(|q| Float::from_rational(q, &bits)).collect())
+            .map(|c| c.iter().map(to_t).collect())
             .collect();
-        let a: Vec<Float> = data
-            .alpha
-            .iter()
-            .map(|q| Float::from_rational(q, &bits))
-            .collect();
-        let h = polish(&rough, &z, &a, data.form).map_err(spline_error)?;
-        let g = objective(&h, &z, &a, data.form).map_err(spline_error)?;
-        let g_chord =
-            objective(&chord_length_spacing(&z), &z, &a, data.form).map_err(spline_error)?;
-        let p = crate::algo::param::gradient::project(
-            &crate::algo::param::gradient::gradient(&h, &z, &a, data.form).map_err(spline_error)?,
-        );
-        let norm = p
-            .iter()
-            .fold(Float::with_val(bits, 0), |acc, x| acc + x.clone() * x)
-            .sqrt();
+        let a: Vec<T> = self.data.alpha.iter().map(to_t).collect();
+        let m = refine(&self.rough, &z, &a, self.data.form)
+            .map_err(|e| InputError(format!("field \"points\": {e}")))?;
+        let objective = if self.data.form == Objective::Exact {
+            "exact (Eq. 31)"
+        } else {
+            "approx (Eq. 34)"
+        };
         Ok(Out::object(vec![
-            ("t", Out::nums(knots_from_spacing(&h, &bits))),
-            ("G", Out::Num(g)),
-            ("G_chord", Out::Num(g_chord)),
+            ("t", Out::nums(m.knots)),
+            ("G", Out::Num(m.objective)),
+            ("G_chord", Out::Num(m.chord_objective)),
             // ‖π_B(∇G)‖ at the result: the stopping rule's quantity, at the working precision after Newton.
-            ("projected_gradient_norm", Out::F64(norm.to_f64())),
-        ]))
-    };
-    let extra = |out: Out<Float>| {
-        out.with_field("iterations", Out::Int(rough.iterations as i64))
-            .with_field("descent_converged", Out::Text(rough.converged.to_string()))
-            .with_field(
-                "objective",
-                Out::Text(
-                    if data.form == Objective::Exact {
-                        "exact (Eq. 31)"
-                    } else {
-                        "approx (Eq. 34)"
-                    }
-                    .into(),
-                ),
-            )
-            .with_field("scalar", Out::Text(scalar.to_string()))
-    };
-    Ok(match scalar {
-        ScalarKind::Rational => {
-            return fail(
-                "option --scalar: the minimizer is irrational in general; use f64 or mpfr:<bits>",
-            )
-        }
-        // f64: the same Newton refinement at 53 bits, printed as doubles.
-        ScalarKind::F64 => {
-            let out = finish(None)?;
-            let as_f64 = |o: &Out<Float>| -> Out<f64> { to_f64_tree(o) };
-            Rendered::plain(extra_f64(as_f64(&out), &rough, data.form))
-        }
-        ScalarKind::Mpfr(bits) => {
-            Rendered::certified(extra(finish(Some(bits))?), extra(finish(Some(2 * bits))?))
-        }
-    })
-}
-
-fn to_f64_tree(o: &Out<Float>) -> Out<f64> {
-    match o {
-        Out::Num(x) => Out::Num(x.to_f64()),
-        Out::MaybeZero(x, scale) => Out::MaybeZero(x.to_f64(), scale.to_f64()),
-        Out::List(v) => Out::List(v.iter().map(to_f64_tree).collect()),
-        Out::Object(f) => Out::Object(f.iter().map(|(k, v)| (k.clone(), to_f64_tree(v))).collect()),
-        Out::Int(i) => Out::Int(*i),
-        Out::Text(s) => Out::Text(s.clone()),
-        Out::F64(x) => Out::F64(*x),
-        Out::Null => Out::Null,
-    }
-}
-
-fn extra_f64(
-    out: Out<f64>,
-    rough: &crate::algo::param::descent::Descent<f64>,
-    form: Objective,
-) -> Out<f64> {
-    out.with_field("iterations", Out::Int(rough.iterations as i64))
-        .with_field("descent_converged", Out::Text(rough.converged.to_string()))
-        .with_field(
-            "objective",
-            Out::Text(
-                if form == Objective::Exact {
-                    "exact (Eq. 31)"
-                } else {
-                    "approx (Eq. 34)"
-                }
-                .into(),
+            (
+                "projected_gradient_norm",
+                Out::F64(m.projected_gradient_norm.to_f64()),
             ),
-        )
-        .with_field("scalar", Out::Text("f64".into()))
+            ("iterations", Out::Int(self.rough.iterations as i64)),
+            (
+                "descent_converged",
+                Out::Text(self.rough.converged.to_string()),
+            ),
+            ("objective", Out::Text(objective.into())),
+        ]))
+    }
 }

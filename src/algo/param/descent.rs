@@ -18,7 +18,7 @@
 
 use super::gradient::{gradient, project};
 use super::natural::SplineError;
-use super::objective::{objective, Objective};
+use super::objective::{chord_length_spacing, knots_from_spacing, objective, Objective};
 use crate::scalar::{Field, Real};
 
 /// Where and how the iteration stopped.
@@ -90,6 +90,44 @@ pub fn polish<T: Real>(
     let ctx = alpha[0].ctx();
     let start = rough.h.iter().map(|x| T::from_f64(*x, &ctx)).collect();
     newton_polish(start, z, alpha, form, NEWTON_MAX_STEPS)
+}
+
+/// A minimizing parametrization with the quantities that describe it.
+#[derive(Clone, Debug)]
+pub struct Minimum<T> {
+    /// The knots t_0 = 0 < … < t_N = 1 (Eq. 30's variables accumulated).
+    pub knots: Vec<T>,
+    /// G at the minimizer.
+    pub objective: T,
+    /// G at normalized chord length, the descent's starting point, for comparison.
+    pub chord_objective: T,
+    /// ‖π_B(∇G)‖ at the minimizer: the stopping rule's quantity, at the working precision.
+    pub projected_gradient_norm: T,
+}
+
+/// Stage two with its summary: [`polish`] in the number type of `z`, then G there and at
+/// chord length, and the norm of the projected gradient at the result.
+pub fn refine<T: Real>(
+    rough: &Descent<f64>,
+    z: &[Vec<T>],
+    alpha: &[T],
+    form: Objective,
+) -> Result<Minimum<T>, SplineError> {
+    let ctx = alpha[0].ctx();
+    let h = polish(rough, z, alpha, form)?;
+    let objective_at = objective(&h, z, alpha, form)?;
+    let chord_objective = objective(&chord_length_spacing(z), z, alpha, form)?;
+    let p = project(&gradient(&h, z, alpha, form)?);
+    let projected_gradient_norm = p
+        .iter()
+        .fold(T::zero_in(&ctx), |acc, x| acc + x.clone() * x)
+        .sqrt();
+    Ok(Minimum {
+        knots: knots_from_spacing(&h, &ctx),
+        objective: objective_at,
+        chord_objective,
+        projected_gradient_norm,
+    })
 }
 
 /// Minimize G from `h0` (a point of B with all hᵢ > 0).
