@@ -5,6 +5,7 @@
 //! A log axis is drawn as log₁₀ of the data on a linear axis with ticks labelled 1eK, which
 //! keeps one code path for both kinds of axis.
 
+use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 use plotters::style::RGBColor;
 
@@ -165,21 +166,8 @@ fn draw_panel<DB: DrawingBackend>(
         .iter()
         .map(|s| transformed(panel, &s.points))
         .collect();
-    let (mut x0, mut x1) = bounds(data.iter().flatten().map(|p| p.0));
-    let (mut y0, mut y1) = bounds(data.iter().flatten().map(|p| p.1));
-    if panel.log_y {
-        (y0, y1) = (y0.floor(), y1.ceil());
-    }
     let (margin, label_area) = (12u32, 50u32);
-    if panel.equal_aspect {
-        let (w, h) = area.dim_in_pixel();
-        let plot_w = w.saturating_sub(margin * 2 + label_area).max(1) as f64;
-        let plot_h = h.saturating_sub(margin * 2 + label_area + 24).max(1) as f64;
-        let scale = ((x1 - x0) / plot_w).max((y1 - y0) / plot_h);
-        let (cx, cy) = ((x0 + x1) / 2.0, (y0 + y1) / 2.0);
-        (x0, x1) = (cx - scale * plot_w / 2.0, cx + scale * plot_w / 2.0);
-        (y0, y1) = (cy - scale * plot_h / 2.0, cy + scale * plot_h / 2.0);
-    }
+    let ((x0, x1), (y0, y1)) = axis_ranges(panel, &data, area.dim_in_pixel(), margin, label_area);
     let mut chart = ChartBuilder::on(area)
         .caption(&panel.title, ("sans-serif", 16))
         .margin(margin)
@@ -207,45 +195,7 @@ fn draw_panel<DB: DrawingBackend>(
     }
     mesh.draw().map_err(err)?;
     for (series, points) in panel.series.iter().zip(data) {
-        let color = PALETTE[series.color % PALETTE.len()];
-        let line = color.stroke_width(2);
-        let anno = match series.style {
-            Style::Solid => chart
-                .draw_series(LineSeries::new(points, line))
-                .map_err(err)?,
-            Style::Dashed => chart
-                .draw_series(DashedLineSeries::new(points, 8, 5, line))
-                .map_err(err)?,
-            Style::Dotted => chart
-                .draw_series(DashedLineSeries::new(points, 2, 4, line))
-                .map_err(err)?,
-            Style::Markers => chart
-                .draw_series(
-                    points
-                        .into_iter()
-                        .map(|p| Circle::new(p, 3, color.filled())),
-                )
-                .map_err(err)?,
-            Style::LineMarkers => {
-                chart
-                    .draw_series(LineSeries::new(points.clone(), line))
-                    .map_err(err)?;
-                chart
-                    .draw_series(
-                        points
-                            .into_iter()
-                            .map(|p| Circle::new(p, 3, color.filled())),
-                    )
-                    .map_err(err)?
-            }
-        };
-        if !series.name.is_empty() {
-            let style = series.style;
-            anno.label(series.name.as_str()).legend(move |(x, y)| {
-                let ([a, b, c], dot) = legend_sample(style, color);
-                EmptyElement::at((x, y)) + a + b + c + dot
-            });
-        }
+        draw_series(&mut chart, series, points)?;
     }
     if panel.series.iter().any(|s| !s.name.is_empty()) {
         let position = match panel.legend {
@@ -261,6 +211,80 @@ fn draw_panel<DB: DrawingBackend>(
             .border_style(BLACK)
             .draw()
             .map_err(err)?;
+    }
+    Ok(())
+}
+
+/// The axis ranges of `panel` over its transformed `data`: padded data bounds, whole decades
+/// on a log axis, and equal units on both axes for an equal-aspect panel of `size` pixels.
+fn axis_ranges(
+    panel: &Panel,
+    data: &[Vec<(f64, f64)>],
+    size: (u32, u32),
+    margin: u32,
+    label_area: u32,
+) -> ((f64, f64), (f64, f64)) {
+    let (mut x0, mut x1) = bounds(data.iter().flatten().map(|p| p.0));
+    let (mut y0, mut y1) = bounds(data.iter().flatten().map(|p| p.1));
+    if panel.log_y {
+        (y0, y1) = (y0.floor(), y1.ceil());
+    }
+    if panel.equal_aspect {
+        let (w, h) = size;
+        let plot_w = w.saturating_sub(margin * 2 + label_area).max(1) as f64;
+        let plot_h = h.saturating_sub(margin * 2 + label_area + 24).max(1) as f64;
+        let scale = ((x1 - x0) / plot_w).max((y1 - y0) / plot_h);
+        let (cx, cy) = ((x0 + x1) / 2.0, (y0 + y1) / 2.0);
+        (x0, x1) = (cx - scale * plot_w / 2.0, cx + scale * plot_w / 2.0);
+        (y0, y1) = (cy - scale * plot_h / 2.0, cy + scale * plot_h / 2.0);
+    }
+    ((x0, x1), (y0, y1))
+}
+
+/// One series in its style, with its legend entry drawn in the same style.
+fn draw_series<'a, DB: DrawingBackend + 'a>(
+    chart: &mut ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>,
+    series: &Series,
+    points: Vec<(f64, f64)>,
+) -> Result<(), PlotError> {
+    let color = PALETTE[series.color % PALETTE.len()];
+    let line = color.stroke_width(2);
+    let anno = match series.style {
+        Style::Solid => chart
+            .draw_series(LineSeries::new(points, line))
+            .map_err(err)?,
+        Style::Dashed => chart
+            .draw_series(DashedLineSeries::new(points, 8, 5, line))
+            .map_err(err)?,
+        Style::Dotted => chart
+            .draw_series(DashedLineSeries::new(points, 2, 4, line))
+            .map_err(err)?,
+        Style::Markers => chart
+            .draw_series(
+                points
+                    .into_iter()
+                    .map(|p| Circle::new(p, 3, color.filled())),
+            )
+            .map_err(err)?,
+        Style::LineMarkers => {
+            chart
+                .draw_series(LineSeries::new(points.clone(), line))
+                .map_err(err)?;
+            chart
+                .draw_series(
+                    points
+                        .into_iter()
+                        .map(|p| Circle::new(p, 3, color.filled())),
+                )
+                .map_err(err)?
+        }
+    };
+    if !series.name.is_empty() {
+        let style = series.style;
+        anno.label(series.name.as_str()).legend(move |(x, y)| {
+            let ([a, b, c], dot) = legend_sample(style, color);
+            EmptyElement::at((x, y)) + a + b + c + dot
+        });
     }
     Ok(())
 }
