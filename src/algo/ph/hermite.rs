@@ -233,8 +233,28 @@ pub fn interpolate_with<T: Real>(
         .map_err(|_| PhHermiteError::ZeroTangent("v_b"))?;
     a[n] = solve_quadratic(&h_end[0], &free.theta_end)
         .map_err(|_| PhHermiteError::ZeroTangent("v_e"))?;
-    // Step 4: A_k from h_k (start) and A_{n−k} from h_{2n−k} (end); A_1 … A_{k−1} of the
-    // same side are known by then.
+    end_preimages(&mut a, h_start, h_end, free)?;
+    middle_preimage(&mut a, &displacement, middle, &free.theta_mid);
+    // Step 6.
+    let back = u.conj();
+    for aj in &mut a {
+        *aj = back.mul(aj);
+    }
+    Ok(PhCurve::new(a, data.p_b.clone()))
+}
+
+/// Step 4 of Algorithm 1: A_k from h_k (start) and A_{n−k} from h_{2n−k} (end), k = 1 … m−1,
+/// with the free parameters τ; `a` holds A_0 and A_n on entry.
+fn end_preimages<T: Real>(
+    a: &mut [Quat<T>],
+    h_start: &[[T; 3]],
+    h_end: &[[T; 3]],
+    free: &FreeParameters<T>,
+) -> Result<(), PhHermiteError> {
+    let (m, n) = (h_start.len(), a.len() - 1);
+    let big = 2 * n;
+    let ctx = a[0].ctx();
+    // A_1 … A_{k−1} of the same side are known by the time A_k is solved for.
     for k in 1..m {
         for (side, h, tau) in [
             (0usize, &h_start, &free.tau_start),
@@ -256,16 +276,29 @@ pub fn interpolate_with<T: Real>(
             a[index(k)] = x;
         }
     }
-    // Step 5: the middle control point.
+    Ok(())
+}
+
+/// Step 5 of Algorithm 1: the middle control point A_m from the others, so that the curve
+/// ends at p_e (`MiddleRule::Derived`) or as Eq. (18) prints it.
+fn middle_preimage<T: Real>(
+    a: &mut [Quat<T>],
+    displacement: &[T; 3],
+    middle: MiddleRule,
+    theta_mid: &T,
+) {
+    let n = a.len() - 1;
+    let m = n / 2;
+    let ctx = a[0].ctx();
     let weights = middle_weights(n);
-    let c_p = c_p(weights, &a);
+    let c_p = c_p(weights, a);
     let target = match middle {
         MiddleRule::Derived => {
-            vec3::sub(&vec3::scale(&displacement, &weights.lambda.to(&ctx)), &c_p)
+            vec3::sub(&vec3::scale(displacement, &weights.lambda.to(&ctx)), &c_p)
         }
         MiddleRule::AsPrintedEq18 => c_p,
     };
-    let x = match solve_quadratic(&target, &free.theta_mid) {
+    let x = match solve_quadratic(&target, theta_mid) {
         Ok(x) => x,
         Err(_) => Quat::zero(&ctx), // A_p ⋆ A_p = 0 has the single solution A_p = 0.
     };
@@ -275,12 +308,6 @@ pub fn interpolate_with<T: Real>(
     }
     // α_m = λ, so dividing by it is multiplying by the exact 1/λ.
     a[m] = (x - &rest).scale(&weights.inverse_lambda.to(&ctx));
-    // Step 6.
-    let back = u.conj();
-    for aj in &mut a {
-        *aj = back.mul(aj);
-    }
-    Ok(PhCurve::new(a, data.p_b.clone()))
 }
 
 /// The unit quaternion U with U d U* a positive multiple of i: the shortest rotation
