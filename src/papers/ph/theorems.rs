@@ -157,97 +157,113 @@ fn max_distance(a: &[[Float; 3]], b: &[[Float; 3]]) -> f64 {
         .fold(0.0, f64::max)
 }
 
+/// One random data set of [`theorems`]: the largest planarity, rigid-motion, reflection and
+/// reversion differences, and the distance of the reversed data as printed.
+fn trial(rng: &mut SplitMix64) -> [f64; 5] {
+    let one = Float::with_val(BITS, 1);
+    let d = into::<Float>(&random_data(rng), &BITS);
+    let f = free_into::<Float>(&random_free(rng), &BITS);
+    let zero_free = FreeParameters::zero(4, &BITS);
+    // Theorem 2: data in the plane through p_b spanned by two random directions.
+    let rot = random_rotation(rng);
+    let flat = d.map(
+        |p| rot.sandwich(&[p[0].clone(), p[1].clone(), Float::with_val(BITS, 0)]),
+        |v| rot.sandwich(&[v[0].clone(), v[1].clone(), Float::with_val(BITS, 0)]),
+    );
+    let normal = rot.sandwich(&[
+        Float::with_val(BITS, 0),
+        Float::with_val(BITS, 0),
+        one.clone(),
+    ]);
+    let c = interpolate(&flat, &zero_free).expect("planar data");
+    let planar = c
+        .control_points()
+        .iter()
+        .map(|p| vec3::dot(p, &normal).abs().to_f64())
+        .fold(0.0, f64::max);
+    // Theorem 3: rotation, translation and scaling (φ* = 0 for the scaling) and any φ
+    // for the rotation.
+    let shift = [
+        Float::with_val(BITS, rng.int(-5, 5)),
+        Float::with_val(BITS, 2),
+        Float::with_val(BITS, -1),
+    ];
+    let scale = Float::with_val(BITS, rng.int(1, 30)) / 10u32;
+    let moved = d.map(|p| vec3::add(&rot.sandwich(p), &shift), |v| rot.sandwich(v));
+    let base = interpolate(&d, &f).expect("data").control_points();
+    let image: Vec<[Float; 3]> = base
+        .iter()
+        .map(|p| vec3::add(&rot.sandwich(p), &shift))
+        .collect();
+    let rigid = max_distance(
+        &interpolate(&moved, &f).expect("data").control_points(),
+        &image,
+    );
+    let scaled = d.map(|p| vec3::scale(p, &scale), |v| vec3::scale(v, &scale));
+    let base0 = interpolate(&d, &zero_free).expect("data").control_points();
+    let image0: Vec<[Float; 3]> = base0.iter().map(|p| vec3::scale(p, &scale)).collect();
+    let rigid = rigid.max(max_distance(
+        &interpolate(&scaled, &zero_free)
+            .expect("data")
+            .control_points(),
+        &image0,
+    ));
+    // Reflection in the plane x = 0 after the rotation: φ → −φ.
+    let mirror = |v: &[Float; 3]| {
+        let r = rot.sandwich(v);
+        [-r[0].clone(), r[1].clone(), r[2].clone()]
+    };
+    let reflected = d.map(mirror, mirror);
+    let image: Vec<[Float; 3]> = base.iter().map(mirror).collect();
+    let reflect = max_distance(
+        &interpolate(&reflected, &f.negated())
+            .expect("data")
+            .control_points(),
+        &image,
+    );
+    // Theorem 4: the reversed data, interpolated with −φ, traced backwards. The roles of
+    // the two ends swap, so θ_0 ↔ θ_8 and τ_k ↔ τ_{8−k}.
+    let swapped = FreeParameters {
+        theta_start: f.theta_end.clone(),
+        theta_mid: f.theta_mid.clone(),
+        theta_end: f.theta_start.clone(),
+        tau_start: f.tau_end.clone(),
+        tau_end: f.tau_start.clone(),
+    };
+    let rev = interpolate(&d.reversed(), &swapped.negated()).expect("data");
+    let mut pts = rev.control_points();
+    pts.reverse();
+    let reverse = max_distance(&pts, &base);
+    // The reversed data as printed (no sign change of odd derivatives), with φ* = 0.
+    let as_printed = HermiteData {
+        p_b: d.p_e.clone(),
+        p_e: d.p_b.clone(),
+        start: d.end.clone(),
+        end: d.start.clone(),
+    };
+    let printed = interpolate(&as_printed, &zero_free).map_or(f64::INFINITY, |c| {
+        let mut pts = c.control_points();
+        pts.reverse();
+        max_distance(&pts, &base0)
+    });
+    [planar, rigid, reflect, reverse, printed]
+}
+
 /// Theorems 2, 3 (rigid motions and scaling; reflections with φ → −φ) and 4 (reversion),
 /// and the reversed data exactly as printed.
 pub fn theorems() -> [Outcome; 5] {
     let mut rng = SplitMix64::new(0x01b2);
-    let one = Float::with_val(BITS, 1);
     let (mut planar, mut rigid, mut reflect, mut reverse, mut printed) =
         (0.0f64, 0.0f64, 0.0f64, 0.0f64, f64::INFINITY);
     for _ in 0..20 {
-        let d = into::<Float>(&random_data(&mut rng), &BITS);
-        let f = free_into::<Float>(&random_free(&mut rng), &BITS);
-        let zero_free = FreeParameters::zero(4, &BITS);
-        // Theorem 2: data in the plane through p_b spanned by two random directions.
-        let rot = random_rotation(&mut rng);
-        let flat = d.map(
-            |p| rot.sandwich(&[p[0].clone(), p[1].clone(), Float::with_val(BITS, 0)]),
-            |v| rot.sandwich(&[v[0].clone(), v[1].clone(), Float::with_val(BITS, 0)]),
+        let [p, g, f, r, q] = trial(&mut rng);
+        (planar, rigid, reflect, reverse, printed) = (
+            planar.max(p),
+            rigid.max(g),
+            reflect.max(f),
+            reverse.max(r),
+            printed.min(q),
         );
-        let normal = rot.sandwich(&[
-            Float::with_val(BITS, 0),
-            Float::with_val(BITS, 0),
-            one.clone(),
-        ]);
-        let c = interpolate(&flat, &zero_free).expect("planar data");
-        for p in c.control_points() {
-            planar = planar.max(vec3::dot(&p, &normal).abs().to_f64());
-        }
-        // Theorem 3: rotation, translation and scaling (φ* = 0 for the scaling) and any φ
-        // for the rotation.
-        let shift = [
-            Float::with_val(BITS, rng.int(-5, 5)),
-            Float::with_val(BITS, 2),
-            Float::with_val(BITS, -1),
-        ];
-        let scale = Float::with_val(BITS, rng.int(1, 30)) / 10u32;
-        let moved = d.map(|p| vec3::add(&rot.sandwich(p), &shift), |v| rot.sandwich(v));
-        let base = interpolate(&d, &f).expect("data").control_points();
-        let image: Vec<[Float; 3]> = base
-            .iter()
-            .map(|p| vec3::add(&rot.sandwich(p), &shift))
-            .collect();
-        rigid = rigid.max(max_distance(
-            &interpolate(&moved, &f).expect("data").control_points(),
-            &image,
-        ));
-        let scaled = d.map(|p| vec3::scale(p, &scale), |v| vec3::scale(v, &scale));
-        let base0 = interpolate(&d, &zero_free).expect("data").control_points();
-        let image0: Vec<[Float; 3]> = base0.iter().map(|p| vec3::scale(p, &scale)).collect();
-        rigid = rigid.max(max_distance(
-            &interpolate(&scaled, &zero_free)
-                .expect("data")
-                .control_points(),
-            &image0,
-        ));
-        // Reflection in the plane x = 0 after the rotation: φ → −φ.
-        let mirror = |v: &[Float; 3]| {
-            let r = rot.sandwich(v);
-            [-r[0].clone(), r[1].clone(), r[2].clone()]
-        };
-        let reflected = d.map(mirror, mirror);
-        let image: Vec<[Float; 3]> = base.iter().map(mirror).collect();
-        reflect = reflect.max(max_distance(
-            &interpolate(&reflected, &f.negated())
-                .expect("data")
-                .control_points(),
-            &image,
-        ));
-        // Theorem 4: the reversed data, interpolated with −φ, traced backwards. The roles of
-        // the two ends swap, so θ_0 ↔ θ_8 and τ_k ↔ τ_{8−k}.
-        let swapped = FreeParameters {
-            theta_start: f.theta_end.clone(),
-            theta_mid: f.theta_mid.clone(),
-            theta_end: f.theta_start.clone(),
-            tau_start: f.tau_end.clone(),
-            tau_end: f.tau_start.clone(),
-        };
-        let rev = interpolate(&d.reversed(), &swapped.negated()).expect("data");
-        let mut pts = rev.control_points();
-        pts.reverse();
-        reverse = reverse.max(max_distance(&pts, &base));
-        // The reversed data as printed (no sign change of odd derivatives), with φ* = 0.
-        let as_printed = HermiteData {
-            p_b: d.p_e.clone(),
-            p_e: d.p_b.clone(),
-            start: d.end.clone(),
-            end: d.start.clone(),
-        };
-        if let Ok(c) = interpolate(&as_printed, &zero_free) {
-            let mut pts = c.control_points();
-            pts.reverse();
-            printed = printed.min(max_distance(&pts, &base0));
-        }
     }
     let tol = 1e-60;
     [
