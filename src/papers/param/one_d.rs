@@ -302,75 +302,9 @@ fn corollary_three() -> Outcome {
     for i in 0..4 {
         sets.push(random_ordinates(&mut rng, 7 + i, i % 2 == 0));
     }
-    let bits = 192;
     let mut problems = Vec::new();
     for (s, z) in sets.iter().enumerate() {
-        let zf = to_float(z, bits);
-        let Ok((t, _)) = minimizing_parametrization(&zf) else {
-            problems.push(format!("set {s}: no parametrization"));
-            continue;
-        };
-        let Ok(spline) = NaturalCubicSpline::new(t.clone(), zf.clone()) else {
-            problems.push(format!("set {s}: spline"));
-            continue;
-        };
-        let tol = Float::with_val(bits, 1e-40);
-        // (i) no overshoot: on every interval θ stays between its end values (50 samples each).
-        for i in 1..t.len() {
-            let (lo, hi) = if zf[i - 1] < zf[i] {
-                (&zf[i - 1], &zf[i])
-            } else {
-                (&zf[i], &zf[i - 1])
-            };
-            for k in 1..50u32 {
-                let x = t[i - 1].clone() + (t[i].clone() - &t[i - 1]) * k / 50u32;
-                let v = spline.eval_all(&x)[0].clone();
-                if v < lo.clone() - &tol || v > hi.clone() + &tol {
-                    problems.push(format!("set {s}: overshoot on interval {i}"));
-                    break;
-                }
-            }
-        }
-        // (ii) the third derivative jumps only at extremes.
-        let idx = extreme_indices(&zf).unwrap_or_default();
-        let m = spline.second_derivatives_at_knots();
-        let third = |i: usize| (m[i].clone() - &m[i - 1]) / (t[i].clone() - &t[i - 1]);
-        for j in 1..t.len() - 1 {
-            if !idx.contains(&j) && (third(j + 1) - third(j)).abs() > Float::with_val(bits, 1e-30) {
-                problems.push(format!(
-                    "set {s}: third-derivative jump at non-extreme knot {j}"
-                ));
-            }
-        }
-        // (iii) θ″ at the interior extremes: −3 sgn(D)(Σ ε_j √|D_j|)².
-        let d: Vec<Float> = idx
-            .windows(2)
-            .map(|w| zf[w[1]].clone() - &zf[w[0]])
-            .collect();
-        let mm = d.len();
-        let root2 = Float::with_val(bits, 2).sqrt();
-        let sum = d
-            .iter()
-            .enumerate()
-            .fold(Float::with_val(bits, 0), |acc, (j, x)| {
-                let r = x.clone().abs().sqrt();
-                acc + if j == 0 || j == mm - 1 { r } else { r * &root2 }
-            });
-        let peak = sum.square() * 3u32;
-        for k in 1..mm {
-            let expected = if d[k - 1] > 0 {
-                -peak.clone()
-            } else {
-                peak.clone()
-            };
-            let rel = ((m[idx[k]].clone() - &expected) / &expected).abs();
-            if rel > Float::with_val(bits, 1e-40) {
-                problems.push(format!(
-                    "set {s}: θ'' at extreme {k} off by {}",
-                    format_float_digits(&rel, 3)
-                ));
-            }
-        }
+        corollary_three_on(s, &to_float(z, COROLLARY_BITS), &mut problems);
     }
     Outcome::new(
         format!("(i)–(iii) hold on Table I and 4 random data sets ({} violations)", problems.len()),
@@ -383,4 +317,78 @@ fn corollary_three() -> Outcome {
              random case III sets. Violations: {problems:?}"
         ),
     )
+}
+
+/// The precision of the Corollary 3 checks.
+const COROLLARY_BITS: u32 = 192;
+
+/// Corollary 3 (i)–(iii) on data set `s` with ordinates `zf`; each violation is pushed to
+/// `problems`.
+fn corollary_three_on(s: usize, zf: &[Float], problems: &mut Vec<String>) {
+    let bits = COROLLARY_BITS;
+    let Ok((t, _)) = minimizing_parametrization(zf) else {
+        problems.push(format!("set {s}: no parametrization"));
+        return;
+    };
+    let Ok(spline) = NaturalCubicSpline::new(t.clone(), zf.to_vec()) else {
+        problems.push(format!("set {s}: spline"));
+        return;
+    };
+    let tol = Float::with_val(bits, 1e-40);
+    // (i) no overshoot: on every interval θ stays between its end values (50 samples each).
+    for i in 1..t.len() {
+        let (lo, hi) = if zf[i - 1] < zf[i] {
+            (&zf[i - 1], &zf[i])
+        } else {
+            (&zf[i], &zf[i - 1])
+        };
+        for k in 1..50u32 {
+            let x = t[i - 1].clone() + (t[i].clone() - &t[i - 1]) * k / 50u32;
+            let v = spline.eval_all(&x)[0].clone();
+            if v < lo.clone() - &tol || v > hi.clone() + &tol {
+                problems.push(format!("set {s}: overshoot on interval {i}"));
+                break;
+            }
+        }
+    }
+    // (ii) the third derivative jumps only at extremes.
+    let idx = extreme_indices(zf).unwrap_or_default();
+    let m = spline.second_derivatives_at_knots();
+    let third = |i: usize| (m[i].clone() - &m[i - 1]) / (t[i].clone() - &t[i - 1]);
+    for j in 1..t.len() - 1 {
+        if !idx.contains(&j) && (third(j + 1) - third(j)).abs() > Float::with_val(bits, 1e-30) {
+            problems.push(format!(
+                "set {s}: third-derivative jump at non-extreme knot {j}"
+            ));
+        }
+    }
+    // (iii) θ″ at the interior extremes: −3 sgn(D)(Σ ε_j √|D_j|)².
+    let d: Vec<Float> = idx
+        .windows(2)
+        .map(|w| zf[w[1]].clone() - &zf[w[0]])
+        .collect();
+    let mm = d.len();
+    let root2 = Float::with_val(bits, 2).sqrt();
+    let sum = d
+        .iter()
+        .enumerate()
+        .fold(Float::with_val(bits, 0), |acc, (j, x)| {
+            let r = x.clone().abs().sqrt();
+            acc + if j == 0 || j == mm - 1 { r } else { r * &root2 }
+        });
+    let peak = sum.square() * 3u32;
+    for k in 1..mm {
+        let expected = if d[k - 1] > 0 {
+            -peak.clone()
+        } else {
+            peak.clone()
+        };
+        let rel = ((m[idx[k]].clone() - &expected) / &expected).abs();
+        if rel > Float::with_val(bits, 1e-40) {
+            problems.push(format!(
+                "set {s}: θ'' at extreme {k} off by {}",
+                format_float_digits(&rel, 3)
+            ));
+        }
+    }
 }
