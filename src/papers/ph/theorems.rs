@@ -221,6 +221,20 @@ fn trial(rng: &mut SplitMix64) -> [f64; 5] {
             .control_points(),
         &image,
     );
+    let (reverse, printed) = reversion(&d, &f, &base, &base0);
+    [planar, rigid, reflect, reverse, printed]
+}
+
+/// Theorem 4 on data `d` with free parameters `f`: the distance of the reversed interpolant
+/// (traced backwards) from `base`, and that of the reversed data as printed (φ* = 0) from
+/// `base0`.
+fn reversion(
+    d: &HermiteData<Float>,
+    f: &FreeParameters<Float>,
+    base: &[[Float; 3]],
+    base0: &[[Float; 3]],
+) -> (f64, f64) {
+    let zero_free = FreeParameters::zero(4, &BITS);
     // Theorem 4: the reversed data, interpolated with −φ, traced backwards. The roles of
     // the two ends swap, so θ_0 ↔ θ_8 and τ_k ↔ τ_{8−k}.
     let swapped = FreeParameters {
@@ -233,7 +247,7 @@ fn trial(rng: &mut SplitMix64) -> [f64; 5] {
     let rev = interpolate(&d.reversed(), &swapped.negated()).expect("data");
     let mut pts = rev.control_points();
     pts.reverse();
-    let reverse = max_distance(&pts, &base);
+    let reverse = max_distance(&pts, base);
     // The reversed data as printed (no sign change of odd derivatives), with φ* = 0.
     let as_printed = HermiteData {
         p_b: d.p_e.clone(),
@@ -244,9 +258,9 @@ fn trial(rng: &mut SplitMix64) -> [f64; 5] {
     let printed = interpolate(&as_printed, &zero_free).map_or(f64::INFINITY, |c| {
         let mut pts = c.control_points();
         pts.reverse();
-        max_distance(&pts, &base0)
+        max_distance(&pts, base0)
     });
-    [planar, rigid, reflect, reverse, printed]
+    (reverse, printed)
 }
 
 /// Theorems 2, 3 (rigid motions and scaling; reflections with φ → −φ) and 4 (reversion),
