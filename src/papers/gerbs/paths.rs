@@ -58,6 +58,47 @@ fn knot_data<B: Blend<Float>>(path: &GerbsPath<Float, B>, bits: u32) -> KnotData
     }
 }
 
+/// Algorithm 2 interpolates the waypoints: the largest error at 128 and 256 bits.
+fn interpolation_outcome(worst: &(Float, Float)) -> Outcome {
+    Outcome::new(
+        format!(
+            "max |p(t_k) − W_(k−1)| over the 5 waypoints, both bases and arc conventions: {} (256 bits), {} (128 bits)",
+            fmt_e(&worst.1),
+            fmt_e(&worst.0)
+        ),
+        "mpfr:128, mpfr:256",
+        Verdict::holds(worst.1 < Float::with_val(HI, 1e-70)),
+        "at t_k, B_k = 1 and the local curve passes through its waypoint at u = 1/2 (arcs) or the line's end",
+    )
+}
+
+/// The tangent at each waypoint against m_i, for both arc conventions.
+fn tangent_outcome(printed_backwards: &[String], fixed_backwards: usize) -> Outcome {
+    Outcome::new(
+        format!(
+            "with Eqs. (21)–(22) as printed the path runs against m_i at {}; sweeping each arc in its turn direction (θ₁,₂ = φ − sπ/2 ∓ sθ_o) gives p′ · m_i > 0 at every waypoint ({} failures)",
+            if printed_backwards.is_empty() { "no waypoint".into() } else { printed_backwards.join(", ") },
+            fixed_backwards
+        ),
+        "mpfr:256",
+        if printed_backwards.is_empty() && fixed_backwards == 0 { Verdict::Reproduced } else { Verdict::Discrepancy },
+        "p′(t_k) = c′(t_k) since B_k′(t_k) = 0; the printed angles decrease from θ₁ to θ₂ (clockwise), right for a right turn (s = −1), backwards for a left turn (s = +1): the cosine of the angle between p′ and m_i is −1 there",
+    )
+}
+
+/// Curvature continuity at the interior knots.
+fn curvature_outcome(kappa: &[String], kappa_ok: bool) -> Outcome {
+    Outcome::new(
+        format!(
+            "largest one-sided curvature jump at the interior knots: {}",
+            kappa.join("; ")
+        ),
+        "mpfr:128, mpfr:256",
+        Verdict::holds(kappa_ok),
+        "κ from Taylor series of the path to order 3 at each knot from both sides; the jump of dκ/dt is in the table (BFBS i = 2 is C² only, so κ′ may jump)",
+    )
+}
+
 /// Interpolation, tangent direction (both arc conventions) and curvature continuity.
 pub fn algorithm2() -> (Outcome, Outcome, Outcome, Vec<Vec<String>>) {
     let mut table = Vec::new();
@@ -115,36 +156,46 @@ pub fn algorithm2() -> (Outcome, Outcome, Outcome, Vec<Vec<String>>) {
             ]);
         }
     }
-    let interp = Outcome::new(
-        format!(
-            "max |p(t_k) − W_(k−1)| over the 5 waypoints, both bases and arc conventions: {} (256 bits), {} (128 bits)",
-            fmt_e(&worst_interp.1),
-            fmt_e(&worst_interp.0)
-        ),
-        "mpfr:128, mpfr:256",
-        Verdict::holds(worst_interp.1 < Float::with_val(HI, 1e-70)),
-        "at t_k, B_k = 1 and the local curve passes through its waypoint at u = 1/2 (arcs) or the line's end",
-    );
-    let tangent = Outcome::new(
-        format!(
-            "with Eqs. (21)–(22) as printed the path runs against m_i at {}; sweeping each arc in its turn direction (θ₁,₂ = φ − sπ/2 ∓ sθ_o) gives p′ · m_i > 0 at every waypoint ({} failures)",
-            if printed_backwards.is_empty() { "no waypoint".into() } else { printed_backwards.join(", ") },
-            fixed_backwards
-        ),
-        "mpfr:256",
-        if printed_backwards.is_empty() && fixed_backwards == 0 { Verdict::Reproduced } else { Verdict::Discrepancy },
-        "p′(t_k) = c′(t_k) since B_k′(t_k) = 0; the printed angles decrease from θ₁ to θ₂ (clockwise), right for a right turn (s = −1), backwards for a left turn (s = +1): the cosine of the angle between p′ and m_i is −1 there",
-    );
-    let curvature = Outcome::new(
-        format!(
-            "largest one-sided curvature jump at the interior knots: {}",
-            kappa.join("; ")
-        ),
-        "mpfr:128, mpfr:256",
-        Verdict::holds(kappa_ok),
-        "κ from Taylor series of the path to order 3 at each knot from both sides; the jump of dκ/dt is in the table (BFBS i = 2 is C² only, so κ′ may jump)",
-    );
-    (interp, tangent, curvature, table)
+    (
+        interpolation_outcome(&worst_interp),
+        tangent_outcome(&printed_backwards, fixed_backwards),
+        curvature_outcome(&kappa, kappa_ok),
+        table,
+    )
+}
+
+/// The largest distance between the BFBS and ERBS paths (turn-direction arcs) and where it
+/// is, at `bits`: the golden section finds t* only to about √ε, so the maximum is found by
+/// Newton's method on D′(t) = 0, D = |p_B − p_E|², from `t_star`.
+fn largest_gap(t_star: f64, bits: u32) -> (Float, Float) {
+    let conv = ArcConvention::TurnDirection;
+    let bp = bfbs_path::<Float>(&bits, conv);
+    let ep = erbs_path::<Float>(&bits, ErbsSet::Smooth, conv);
+    let mut t = Float::with_val(bits, t_star);
+    let diff = |u: &[Float; 2], v: &[Float; 2]| [u[0].clone() - &v[0], u[1].clone() - &v[1]];
+    let dot = |u: &[Float; 2], v: &[Float; 2]| u[0].clone() * &v[0] + u[1].clone() * &v[1];
+    let small = Float::with_val(bits, Float::i_exp(1, 8 - bits as i32));
+    for _ in 0..40 {
+        let (a, b) = (bp.at(&t, Side::Right), ep.at(&t, Side::Right));
+        let (d0, d1, d2) = (
+            diff(&a.point, &b.point),
+            diff(&a.d1, &b.d1),
+            diff(&a.d2, &b.d2),
+        );
+        // D′/2 and D″/2.
+        let slope = dot(&d0, &d1);
+        let bend = dot(&d1, &d1) + dot(&d0, &d2);
+        let step = slope / bend;
+        t -= &step;
+        if step.abs() < small {
+            break;
+        }
+    }
+    let (a, b) = (bp.at(&t, Side::Right), ep.at(&t, Side::Right));
+    (
+        dot(&diff(&a.point, &b.point), &diff(&a.point, &b.point)).sqrt(),
+        t,
+    )
 }
 
 /// Fig. 6: BFBS against ERBS at the same parameter.
@@ -177,38 +228,7 @@ pub fn bfbs_vs_erbs() -> (Outcome, Vec<PathPoint<f64>>, Vec<PathPoint<f64>>) {
         }
     }
     let t_star = 0.5 * (lo + hi);
-    // The golden section finds t* only to about √ε; the maximum itself is certified by
-    // Newton's method on D′(t) = 0, D = |p_B − p_E|², at each precision, from t*.
-    let at = |bits: u32| {
-        let bp = bfbs_path::<Float>(&bits, conv);
-        let ep = erbs_path::<Float>(&bits, ErbsSet::Smooth, conv);
-        let mut t = Float::with_val(bits, t_star);
-        let diff = |u: &[Float; 2], v: &[Float; 2]| [u[0].clone() - &v[0], u[1].clone() - &v[1]];
-        let dot = |u: &[Float; 2], v: &[Float; 2]| u[0].clone() * &v[0] + u[1].clone() * &v[1];
-        let small = Float::with_val(bits, Float::i_exp(1, 8 - bits as i32));
-        for _ in 0..40 {
-            let (a, b) = (bp.at(&t, Side::Right), ep.at(&t, Side::Right));
-            let (d0, d1, d2) = (
-                diff(&a.point, &b.point),
-                diff(&a.d1, &b.d1),
-                diff(&a.d2, &b.d2),
-            );
-            // D′/2 and D″/2.
-            let slope = dot(&d0, &d1);
-            let bend = dot(&d1, &d1) + dot(&d0, &d2);
-            let step = slope / bend;
-            t -= &step;
-            if step.abs() < small {
-                break;
-            }
-        }
-        let (a, b) = (bp.at(&t, Side::Right), ep.at(&t, Side::Right));
-        (
-            dot(&diff(&a.point, &b.point), &diff(&a.point, &b.point)).sqrt(),
-            t,
-        )
-    };
-    let ((v_lo, t_lo), (v_hi, t_hi)) = (at(LO), at(HI));
+    let ((v_lo, t_lo), (v_hi, t_hi)) = (largest_gap(t_star, LO), largest_gap(t_star, HI));
     let c = certify(&v_lo, &v_hi);
     let ct = certify(&t_lo, &t_hi);
     let peak = |s: &[PathPoint<f64>]| s.iter().map(|p| p.curvature.abs()).fold(0.0, f64::max);
