@@ -166,25 +166,14 @@ pub struct LimitRow {
 /// The largest exponent of the w → ∞ table (exact rationals make huge w free).
 pub const LIMIT_MAX_EXPONENT: u32 = 24;
 
-/// Eq. 15 with w → ∞: ‖τ̂(w) − τ*‖ for w = 10⁰…10²⁴, exactly then rounded.
-pub fn smoothing_limit() -> (Outcome, Vec<LimitRow>) {
+/// ‖τ̂(w) − τ*‖ for w = 1e0 … 1e{LIMIT_MAX_EXPONENT} on random rational data, exact and rounded.
+fn limit_rows() -> Result<Vec<LimitRow>, &'static str> {
     let mut rng = SplitMix64::new(15);
-    let space = match SplineSpace::<Q>::new(3, 10, &()) {
-        Ok(s) => s,
-        Err(_) => {
-            return (
-                Outcome::new("", "rational", Verdict::Failed, "spline space"),
-                Vec::new(),
-            )
-        }
-    };
+    let space = SplineSpace::<Q>::new(3, 10, &()).map_err(|_| "spline space")?;
     let (times, values) = random_data(&mut rng, 10, 6);
-    let Ok(tau) = space.interpolate(&times, &values) else {
-        return (
-            Outcome::new("", "rational", Verdict::Failed, "interpolation failed"),
-            Vec::new(),
-        );
-    };
+    let tau = space
+        .interpolate(&times, &values)
+        .map_err(|_| "interpolation failed")?;
     let mut rows = Vec::new();
     for e in 0..=LIMIT_MAX_EXPONENT {
         let w = Q::from_integer(num_traits::Pow::pow(crate::scalar::BigInt::from(10), e));
@@ -199,6 +188,20 @@ pub fn smoothing_limit() -> (Outcome, Vec<LimitRow>) {
             distance: Float::from_rational(&sq, &128).sqrt(),
         });
     }
+    Ok(rows)
+}
+
+/// Eq. 15 with w → ∞: ‖τ̂(w) − τ*‖ for w = 10⁰…10²⁴, exactly then rounded.
+pub fn smoothing_limit() -> (Outcome, Vec<LimitRow>) {
+    let rows = match limit_rows() {
+        Ok(rows) => rows,
+        Err(why) => {
+            return (
+                Outcome::new("", "rational", Verdict::Failed, why),
+                Vec::new(),
+            )
+        }
+    };
     let complete = rows.len() == LIMIT_MAX_EXPONENT as usize + 1;
     let increases: Vec<String> = rows
         .windows(2)

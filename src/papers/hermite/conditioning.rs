@@ -188,6 +188,20 @@ pub fn f64_breakdown(rows: &[KappaRow]) -> Option<usize> {
 /// The Fig. 5 claims: the certified table, growth, interval dependence.
 pub fn claims(rows: &[KappaRow]) -> [Outcome; 3] {
     let certified: Vec<&Kappa> = rows.iter().filter_map(|r| r.unit.as_ref()).collect();
+    let max_bits = certified.iter().map(|k| k.bits).max().unwrap_or(0);
+    let increasing = certified.windows(2).all(|w| w[1].exact > w[0].exact);
+    let grows = Outcome::new(
+        if increasing { format!("strictly increasing for m = 0…{MAX_M}") } else { "not monotone".to_string() },
+        format!("mpfr:{max_bits}"),
+        if increasing { Verdict::Reproduced } else { Verdict::Discrepancy },
+        format!("certified κ2 compared consecutively (their certified digits separate them). Growth law: {}", growth_law(rows)),
+    );
+    [table_outcome(rows), grows, interval_outcome(rows, max_bits)]
+}
+
+/// The Fig. 5 table as a claim: every κ2 present and certified to the target digits.
+fn table_outcome(rows: &[KappaRow]) -> Outcome {
+    let certified: Vec<&Kappa> = rows.iter().filter_map(|r| r.unit.as_ref()).collect();
     let min_digits = certified.iter().map(|k| k.value.digits).min().unwrap_or(0);
     let max_bits = certified.iter().map(|k| k.bits).max().unwrap_or(0);
     let blocks = rows.iter().all(|r| r.block_structure);
@@ -206,7 +220,7 @@ pub fn claims(rows: &[KappaRow]) -> [Outcome; 3] {
         .last()
         .and_then(|r| r.unit.as_ref())
         .map_or(String::new(), |k| k.value.text.clone());
-    let table_claim = Outcome::new(
+    Outcome::new(
         format!(
             "κ2 for m = 0…{MAX_M} with ≥ {min_digits} certified digits (κ2(m={MAX_M}) = {}); nalgebra f64 SVD has no correct digit from m = {}",
             format_float_digits(&Float::with_val(64, certified.last().map_or(0.0, |k| k.value.approx)), 6),
@@ -224,14 +238,11 @@ pub fn claims(rows: &[KappaRow]) -> [Outcome; 3] {
             if blocks { "holds" } else { "FAILS" },
             breakdown.map_or("— (never)".to_string(), |m| m.to_string())
         ),
-    );
-    let increasing = certified.windows(2).all(|w| w[1].exact > w[0].exact);
-    let grows = Outcome::new(
-        if increasing { format!("strictly increasing for m = 0…{MAX_M}") } else { "not monotone".to_string() },
-        format!("mpfr:{max_bits}"),
-        if increasing { Verdict::Reproduced } else { Verdict::Discrepancy },
-        format!("certified κ2 compared consecutively (their certified digits separate them). Growth law: {}", growth_law(rows)),
-    );
+    )
+}
+
+/// κ2 depends on the interval [0, T] for every m ≥ 1.
+fn interval_outcome(rows: &[KappaRow], max_bits: u32) -> Outcome {
     // The interval: κ differs from the unit-interval value for every m ≥ 1 and each duration.
     let mut same = Vec::new();
     for r in rows.iter().filter(|r| r.m >= 1) {
@@ -258,7 +269,7 @@ pub fn claims(rows: &[KappaRow]) -> [Outcome; 3] {
         }
         parts.join(", ")
     });
-    let interval = Outcome::new(
+    Outcome::new(
         format!("κ2 changes with the interval for every m ≥ 1; at m = 10: {}", at10.clone().unwrap_or_default()),
         format!("mpfr:{max_bits}"),
         if same.is_empty() { Verdict::Reproduced } else { Verdict::Discrepancy },
@@ -267,8 +278,7 @@ pub fn claims(rows: &[KappaRow]) -> [Outcome; 3] {
              matrix is the identity for every T (κ2 = 1)",
             same.len()
         ),
-    );
-    [table_claim, grows, interval]
+    )
 }
 
 fn fmt_k(k: &Option<Kappa>) -> String {
