@@ -185,3 +185,185 @@ fn the_check_sees_a_violation() {
         Some("numeric::quat")
     );
 }
+
+/// `text` with comments, string literals and character literals blanked out (newlines kept),
+/// so that braces and keywords can be counted on what is left.
+fn code_only(text: &str) -> String {
+    let chars: Vec<char> = text.chars().collect();
+    let mut out = String::with_capacity(text.len());
+    let blank = |c: char| if c == '\n' { '\n' } else { ' ' };
+    let mut i = 0;
+    while i < chars.len() {
+        let c = chars[i];
+        let next = chars.get(i + 1).copied();
+        if c == '/' && next == Some('/') {
+            while i < chars.len() && chars[i] != '\n' {
+                out.push(' ');
+                i += 1;
+            }
+        } else if c == '/' && next == Some('*') {
+            while i < chars.len() && !(chars[i] == '*' && chars.get(i + 1) == Some(&'/')) {
+                out.push(blank(chars[i]));
+                i += 1;
+            }
+            out.push_str("  ");
+            i += 2;
+        } else if c == '"' {
+            out.push(' ');
+            i += 1;
+            while i < chars.len() && chars[i] != '"' {
+                let skip = if chars[i] == '\\' { 2 } else { 1 };
+                for k in 0..skip {
+                    if let Some(&ch) = chars.get(i + k) {
+                        out.push(blank(ch));
+                    }
+                }
+                i += skip;
+            }
+            out.push(' ');
+            i += 1;
+        } else if c == '\'' && (chars.get(i + 2) == Some(&'\'') || next == Some('\\')) {
+            // A character literal ('x' or '\n', '\''); a lifetime ('a) has no closing quote.
+            let end = (i + 2..chars.len())
+                .find(|&k| chars[k] == '\'' && (k > i + 2 || next != Some('\\')))
+                .unwrap_or(i + 2);
+            for _ in i..=end {
+                out.push(' ');
+            }
+            i = end + 1;
+        } else {
+            out.push(c);
+            i += 1;
+        }
+    }
+    out
+}
+
+/// (name, first line, number of lines) of every function with a body in `code`.
+fn function_lengths(code: &str) -> Vec<(String, usize, usize)> {
+    let lines: Vec<&str> = code.lines().collect();
+    let mut found = Vec::new();
+    for (n, line) in lines.iter().enumerate() {
+        let words: Vec<&str> = line
+            .split(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+            .collect();
+        let Some(at) = words.iter().position(|w| *w == "fn") else {
+            continue;
+        };
+        let Some(name) = words.get(at + 1).filter(|w| !w.is_empty()) else {
+            continue; // a function-pointer type such as `fn() -> T`
+        };
+        // From the `fn` line: the first `{` opens the body unless a `;` ends a declaration.
+        let (mut depth, mut opened) = (0i64, false);
+        'scan: for (k, l) in lines.iter().enumerate().skip(n) {
+            let start = if k == n {
+                line.find("fn ").unwrap_or(0)
+            } else {
+                0
+            };
+            for ch in l[start..].chars() {
+                match ch {
+                    ';' if !opened => break 'scan,
+                    '{' => {
+                        depth += 1;
+                        opened = true;
+                    }
+                    '}' => {
+                        depth -= 1;
+                        if opened && depth == 0 {
+                            found.push((name.to_string(), n + 1, k - n + 1));
+                            break 'scan;
+                        }
+                    }
+                    _ => {}
+                }
+            }
+        }
+    }
+    found
+}
+
+/// The longest function the house style allows (tables of published data are constants,
+/// not functions, so they are not limited).
+const MAX_FUNCTION_LINES: usize = 80;
+
+#[test]
+fn no_function_is_longer_than_eighty_lines() {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut files = Vec::new();
+    rust_files(&src, &mut files);
+    files.sort();
+    let mut long = Vec::new();
+    for file in &files {
+        let text = std::fs::read_to_string(file).expect("readable");
+        for (name, line, count) in function_lengths(&code_only(&text)) {
+            if count > MAX_FUNCTION_LINES {
+                long.push(format!(
+                    "{}:{line}: fn {name} has {count} lines",
+                    file.display()
+                ));
+            }
+        }
+    }
+    assert!(
+        long.is_empty(),
+        "functions over {MAX_FUNCTION_LINES} lines:\n{}",
+        long.join("\n")
+    );
+}
+
+#[test]
+fn the_length_check_counts_bodies_and_ignores_braces_in_text() {
+    let code = code_only(
+        "/// fn doc() {\nfn short(x: u8) -> u8 {\n    let s = \"{{\"; // }\n    let c = '{';\n    x\n}\ntrait T {\n    fn declared(&self);\n}\nstruct P { f: fn() -> u8 }\nfn generic<'a>(s: &'a str) -> &'a str {\n    s\n}\n",
+    );
+    assert_eq!(
+        function_lengths(&code),
+        vec![("short".to_string(), 2, 5), ("generic".to_string(), 11, 3)]
+    );
+}
+
+/// What only a paper's renderers (`render.rs`, `figures.rs`) may use: Markdown tables and
+/// sections, and plotting.
+const RENDERING: &[&str] = &[
+    "report::table",
+    "report::plot",
+    "report::{",
+    "claims_section",
+    "not_checked_section",
+    "report_heading",
+];
+
+#[test]
+fn paper_checks_return_data_and_only_renderers_draw() {
+    let papers = Path::new(env!("CARGO_MANIFEST_DIR")).join("src/papers");
+    let mut files = Vec::new();
+    rust_files(&papers, &mut files);
+    files.sort();
+    let mut violations = Vec::new();
+    let mut renderers = 0;
+    for file in &files {
+        let name = file.file_name().and_then(|n| n.to_str()).unwrap_or("");
+        if name == "render.rs" || name == "figures.rs" {
+            renderers += 1;
+            continue;
+        }
+        let code = code_only(&std::fs::read_to_string(file).expect("readable"));
+        for (n, line) in code.lines().enumerate() {
+            for pattern in RENDERING.iter().chain(&["md.push_str(", "Panel {"]) {
+                if line.contains(pattern) && !file.ends_with("papers/mod.rs") {
+                    violations.push(format!("{}:{}: {pattern}", file.display(), n + 1));
+                }
+            }
+        }
+    }
+    assert_eq!(
+        renderers, 10,
+        "each of the five papers has render.rs and figures.rs"
+    );
+    assert!(
+        violations.is_empty(),
+        "checks that write Markdown or draw:\n{}",
+        violations.join("\n")
+    );
+}
