@@ -8,19 +8,19 @@
 //! is part of their method (the certified error of `convergence`, the segment count chosen at
 //! the lower precision in `phodcos`, the exact extras of `bang-bang`) dispatch themselves.
 
-use super::input::{fail, InputError, RunError};
+use super::input::{fail, RunError};
 use super::output::Out;
 use super::Rendered;
 use crate::scalar::{BigRational, Field, Float, Real, ScalarKind};
 
 /// A computation that needs only `+ − × ÷`: runs in f64, rationals and MPFR.
 pub trait FieldJob {
-    fn run<T: Field>(&self, ctx: &T::Ctx) -> Result<Out<T>, InputError>;
+    fn run<T: Field>(&self, ctx: &T::Ctx) -> Result<Out<T>, RunError>;
 }
 
 /// A computation that needs square roots or transcendental functions: f64 and MPFR.
 pub trait RealJob {
-    fn run<T: Real>(&self, ctx: &T::Ctx) -> Result<Out<T>, InputError>;
+    fn run<T: Real>(&self, ctx: &T::Ctx) -> Result<Out<T>, RunError>;
 }
 
 fn named<T>(out: Out<T>, scalar: ScalarKind) -> Out<T> {
@@ -31,7 +31,7 @@ fn named<T>(out: Out<T>, scalar: ScalarKind) -> Out<T> {
 fn certified(
     scalar: ScalarKind,
     bits: u32,
-    run: impl Fn(u32) -> Result<Out<Float>, InputError>,
+    run: impl Fn(u32) -> Result<Out<Float>, RunError>,
 ) -> Result<Rendered, RunError> {
     Ok(Rendered::certified(
         named(run(bits)?, scalar),

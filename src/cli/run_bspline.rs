@@ -1,7 +1,7 @@
 //! `run bspline-basis`, `bspline-gram`, `spline-fit` and `bang-bang`: the JSON shapes of issue 4.
 
 use super::budget::Rates;
-use super::dispatch::{run_field, FieldJob};
+use super::dispatch::{run_field, run_real, FieldJob, RealJob};
 use super::input::{self, fail, InputError, RunError};
 use super::output::Out;
 use super::Rendered;
@@ -10,7 +10,7 @@ use crate::algo::bspline::fit::SplineSpace;
 use crate::algo::bspline::gram::gram_entries;
 use crate::algo::bspline::CardinalBSpline;
 use crate::scalar::qsqrt2::QSqrt2;
-use crate::scalar::{BigRational, Field, Float, ScalarKind};
+use crate::scalar::{BigRational, Field, Real, ScalarKind};
 use serde_json::{Map, Value};
 
 /// The highest degree accepted by the basis and Gram commands (exact polynomials of degree k).
@@ -205,8 +205,8 @@ pub fn run_fit(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered,
 }
 
 impl FieldJob for FitInput {
-    fn run<T: Field>(&self, ctx: &T::Ctx) -> Result<Out<T>, InputError> {
-        fit_in(self, ctx)
+    fn run<T: Field>(&self, ctx: &T::Ctx) -> Result<Out<T>, RunError> {
+        Ok(fit_in(self, ctx)?)
     }
 }
 
@@ -214,8 +214,6 @@ impl FieldJob for FitInput {
 pub fn run_bang_bang(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, RunError> {
     input::only_fields(doc, &["xi"])?;
     let xi = input::number(input::field(doc, "xi")?, "xi")?;
-    // The switching times do not depend on ξ: a failure here is the method's, not the input's.
-    let no_solution = RunError::internal;
     let Some(exact_times) = bang_bang::exact_switching_times() else {
         return Err(RunError::internal(
             "the exact switching times failed their check",
@@ -227,26 +225,23 @@ pub fn run_bang_bang(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Ren
         ("switching_times", Out::nums(exact_times.to_vec())),
         ("amplitude", Out::Num(exact_u)),
     ]));
-    let numeric = |bits: u32| -> Result<Out<Float>, RunError> {
-        let t = bang_bang::switching_times::<Float>(&bits).map_err(no_solution)?;
-        let u = bang_bang::amplitude(&t, &Float::from_rational(&xi, &bits));
+    let refusal = "option --scalar: the switching times are irrational (2 ± √2); use f64 or mpfr:<bits>, and see \"exact\"";
+    Ok(run_real(&BangBangJob { xi }, scalar, refusal)?.with_extra("exact", exact_json))
+}
+
+/// The switching times by Newton's method and the amplitude for x(2) = ξ, in one number type.
+struct BangBangJob {
+    xi: BigRational,
+}
+
+impl RealJob for BangBangJob {
+    fn run<T: Real>(&self, ctx: &T::Ctx) -> Result<Out<T>, RunError> {
+        // The switching times do not depend on ξ: a failure here is the method's, not the input's.
+        let t = bang_bang::switching_times::<T>(ctx).map_err(RunError::internal)?;
+        let u = bang_bang::amplitude(&t, &T::from_rational(&self.xi, ctx));
         Ok(Out::object(vec![
             ("switching_times", Out::nums(t.to_vec())),
             ("amplitude", Out::Num(u)),
         ]))
-    };
-    Ok(match scalar {
-        ScalarKind::Rational => return fail("option --scalar: the switching times are irrational (2 ± √2); use f64 or mpfr:<bits>, and see \"exact\""),
-        ScalarKind::F64 => {
-            let t = bang_bang::switching_times::<f64>(&()).map_err(no_solution)?;
-            let u = bang_bang::amplitude(&t, &f64::from_rational(&xi, &()));
-            let out = Out::object(vec![("switching_times", Out::nums(t.to_vec())), ("amplitude", Out::Num(u)), ("scalar", Out::Text("f64".into()))]);
-            Rendered::with_extra(Rendered::plain(out), "exact", exact_json)
-        }
-        ScalarKind::Mpfr(bits) => {
-            let name = Out::Text(format!("mpfr:{bits}"));
-            let pair = Rendered::certified(numeric(bits)?.with_field("scalar", name.clone()), numeric(2 * bits)?.with_field("scalar", name));
-            Rendered::with_extra(pair, "exact", exact_json)
-        }
-    })
+    }
 }

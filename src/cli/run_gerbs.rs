@@ -351,7 +351,7 @@ impl BasisJob {
 }
 
 impl RealJob for BasisJob {
-    fn run<T: Real>(&self, ctx: &T::Ctx) -> Result<Out<T>, InputError> {
+    fn run<T: Real>(&self, ctx: &T::Ctx) -> Result<Out<T>, RunError> {
         let knots = self.knots_in::<T>(ctx)?;
         Ok(match &self.params {
             BasisParams::Bfbs(i) => {
@@ -592,7 +592,7 @@ impl PathJob {
 }
 
 impl RealJob for PathJob {
-    fn run<T: Real>(&self, ctx: &T::Ctx) -> Result<Out<T>, InputError> {
+    fn run<T: Real>(&self, ctx: &T::Ctx) -> Result<Out<T>, RunError> {
         let spec = PathSpec {
             waypoints: to_points(&self.waypoints, ctx),
             radius: T::from_rational(&self.radius, ctx),
@@ -767,7 +767,7 @@ struct DubinsJob {
 }
 
 impl RealJob for DubinsJob {
-    fn run<T: Real>(&self, ctx: &T::Ctx) -> Result<Out<T>, InputError> {
+    fn run<T: Real>(&self, ctx: &T::Ctx) -> Result<Out<T>, RunError> {
         let w = to_points::<T>(&self.waypoints, ctx);
         let radius = T::from_rational(&self.radius, ctx);
         let headings = match &self.headings {

@@ -61,8 +61,8 @@ fn read_hermite(doc: &Map<String, Value>) -> Result<HermiteInput, InputError> {
 }
 
 impl FieldJob for HermiteInput {
-    fn run<T: Field>(&self, ctx: &T::Ctx) -> Result<Out<T>, InputError> {
-        hermite_in(self, ctx)
+    fn run<T: Field>(&self, ctx: &T::Ctx) -> Result<Out<T>, RunError> {
+        Ok(hermite_in(self, ctx)?)
     }
 }
 

@@ -136,8 +136,8 @@ struct NaturalSplineJob {
 }
 
 impl FieldJob for NaturalSplineJob {
-    fn run<T: Field>(&self, ctx: &T::Ctx) -> Result<Out<T>, InputError> {
-        eval(&self.t, &self.z, &self.at, self.is_point, ctx)
+    fn run<T: Field>(&self, ctx: &T::Ctx) -> Result<Out<T>, RunError> {
+        Ok(eval(&self.t, &self.z, &self.at, self.is_point, ctx)?)
     }
 }
 
@@ -293,7 +293,7 @@ struct MarinJob {
 }
 
 impl RealJob for MarinJob {
-    fn run<T: Real>(&self, ctx: &T::Ctx) -> Result<Out<T>, InputError> {
+    fn run<T: Real>(&self, ctx: &T::Ctx) -> Result<Out<T>, RunError> {
         let to_t = |q: &BigRational| T::from_rational(q, ctx);
         let z: Vec<Vec<T>> = self
             .data

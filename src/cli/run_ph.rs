@@ -122,8 +122,8 @@ struct PhHermiteJob {
 }
 
 impl RealJob for PhHermiteJob {
-    fn run<T: Real>(&self, ctx: &T::Ctx) -> Result<Out<T>, InputError> {
-        ph_hermite_in(&self.vectors, &self.free, ctx)
+    fn run<T: Real>(&self, ctx: &T::Ctx) -> Result<Out<T>, RunError> {
+        Ok(ph_hermite_in(&self.vectors, &self.free, ctx)?)
     }
 }
 
