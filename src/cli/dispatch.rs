@@ -4,9 +4,11 @@
 //! operations only: it also runs exactly in rationals) or a [`RealJob`] (square roots and
 //! transcendental functions: f64 and MPFR only). [`run_field`] and [`run_real`] then run it
 //! in f64, in rationals, or in MPFR at p and at 2p bits (printed with the digits the two
-//! agree on), and add the `"scalar"` field to the output. Commands whose precision handling
-//! is part of their method (the certified error of `convergence`, the segment count chosen at
-//! the lower precision in `phodcos`, the exact extras of `bang-bang`) dispatch themselves.
+//! agree on), and add the `"scalar"` field to the output. A command whose method uses its two
+//! precisions together (the certified error search of `convergence`, the Jacobi of
+//! `hermite-condition` raised until digits agree, checked against MPFR in f64) is a
+//! [`TwoPrecisionJob`], run by [`run_two_precision`]. This is the only `match` on the
+//! number type in `run`.
 
 use super::input::{fail, RunError};
 use super::output::Out;
@@ -27,7 +29,8 @@ fn named<T>(out: Out<T>, scalar: ScalarKind) -> Out<T> {
     out.with_field("scalar", Out::Text(scalar.to_string()))
 }
 
-/// MPFR at `bits` and `2·bits`, to be printed with the digits the two agree on.
+/// MPFR at `bits` and then at `2·bits` (in that order: a job may carry a choice made at the
+/// lower precision to the higher), to be printed with the digits the two agree on.
 fn certified(
     scalar: ScalarKind,
     bits: u32,
@@ -58,5 +61,27 @@ pub fn run_real(
         ScalarKind::F64 => Ok(Rendered::plain(named(job.run::<f64>(&())?, scalar))),
         ScalarKind::Rational => fail(rational_refusal),
         ScalarKind::Mpfr(bits) => certified(scalar, bits, |p| job.run::<Float>(&p)),
+    }
+}
+
+/// A computation whose method uses its two MPFR precisions together, so it renders its own
+/// certified output; this module still chooses which number type runs.
+pub trait TwoPrecisionJob {
+    /// The computation in f64.
+    fn f64(&self) -> Result<Rendered, RunError>;
+    /// The computation at `bits` (and whatever higher precision its method certifies with).
+    fn mpfr(&self, bits: u32) -> Result<Rendered, RunError>;
+}
+
+/// `job` in f64 or MPFR; `rational_refusal` is the one-line error for `--scalar rational`.
+pub fn run_two_precision(
+    job: &impl TwoPrecisionJob,
+    scalar: ScalarKind,
+    rational_refusal: &str,
+) -> Result<Rendered, RunError> {
+    match scalar {
+        ScalarKind::F64 => job.f64(),
+        ScalarKind::Rational => fail(rational_refusal),
+        ScalarKind::Mpfr(bits) => job.mpfr(bits),
     }
 }

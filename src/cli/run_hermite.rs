@@ -1,7 +1,7 @@
 //! `run hermite` and `run hermite-condition`: the JSON shapes of issue 2.
 
 use super::budget::{check_output, Rates};
-use super::dispatch::{run_field, FieldJob};
+use super::dispatch::{run_field, run_two_precision, FieldJob, TwoPrecisionJob};
 use super::input::{self, fail, InputError, RunError};
 use super::output::Out;
 use super::Rendered;
@@ -159,24 +159,30 @@ pub fn run_condition(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Ren
         Some(k) if k.is_infinite() => "nalgebra's f64 SVD returns σmin = 0",
         Some(_) => "nalgebra's f64 SVD of the correctly rounded matrix",
     };
-    let ConditionValue {
-        value,
-        digits,
-        scalar_name,
-        note,
-    } = condition_value(m, &t0, &t1, kind, scalar)?;
-    let mut out: Out<f64> = Out::object(vec![
-        ("condition_number", value.map_or(Out::Null, Out::Text)),
-        ("certified_digits", Out::Int(digits as i64)),
-        ("f64", reference.map_or(Out::Null, Out::F64)),
-        ("f64_note", Out::Text(f64_note.into())),
-        ("scalar", Out::Text(scalar_name)),
-        ("size", Out::Int(2 * m as i64 + 2)),
-    ]);
-    if let Some(note) = note {
-        out = out.with_field("note", Out::Text(note));
-    }
-    Ok(Rendered::plain(out))
+    let job = ConditionJob {
+        m,
+        t0,
+        t1,
+        kind,
+        reference,
+        f64_note,
+    };
+    run_two_precision(
+        &job,
+        scalar,
+        "option --scalar: rational cannot take the square roots of an SVD; use f64 or mpfr:<bits>",
+    )
+}
+
+/// κ₂ of the transform for m derivatives on [t0, t1], with nalgebra's f64 value beside it.
+struct ConditionJob {
+    m: usize,
+    t0: BigRational,
+    t1: BigRational,
+    kind: TransformKind,
+    /// nalgebra's f64 κ₂ (`None`: overflow or σmin = 0), and what it is.
+    reference: Option<f64>,
+    f64_note: &'static str,
 }
 
 /// κ₂ as `run hermite-condition` prints it in the chosen number type.
@@ -191,72 +197,73 @@ struct ConditionValue {
     note: Option<String>,
 }
 
-/// κ₂ of the transform for m derivatives on [t0, t1] in `scalar`.
-fn condition_value(
-    m: usize,
-    t0: &BigRational,
-    t1: &BigRational,
-    kind: TransformKind,
-    scalar: ScalarKind,
-) -> Result<ConditionValue, RunError> {
-    let jacobi_failed = RunError::internal;
-    let (value, digits, scalar_name, note) = match scalar {
-        ScalarKind::Rational => {
-            return fail("option --scalar: rational cannot take the square roots of an SVD; use f64 or mpfr:<bits>");
+impl ConditionJob {
+    fn rendered(&self, v: ConditionValue) -> Rendered {
+        let mut out: Out<f64> = Out::object(vec![
+            ("condition_number", v.value.map_or(Out::Null, Out::Text)),
+            ("certified_digits", Out::Int(v.digits as i64)),
+            ("f64", self.reference.map_or(Out::Null, Out::F64)),
+            ("f64_note", Out::Text(self.f64_note.into())),
+            ("scalar", Out::Text(v.scalar_name)),
+            ("size", Out::Int(2 * self.m as i64 + 2)),
+        ]);
+        if let Some(note) = v.note {
+            out = out.with_field("note", Out::Text(note));
         }
-        ScalarKind::Mpfr(bits) => {
-            let (c, _): (Certified, Float) =
-                condition::certified(m, t0, t1, kind, bits).map_err(jacobi_failed)?;
-            if c.digits == 0 {
-                return fail(format!(
-                        "output \"condition_number\": no digit agrees between {bits} and {} bits; raise the precision",
-                        2 * bits
-                    ));
+        Rendered::plain(out)
+    }
+}
+
+impl TwoPrecisionJob for ConditionJob {
+    fn mpfr(&self, bits: u32) -> Result<Rendered, RunError> {
+        let (c, _): (Certified, Float) =
+            condition::certified(self.m, &self.t0, &self.t1, self.kind, bits)
+                .map_err(RunError::internal)?;
+        if c.digits == 0 {
+            return fail(format!(
+                "output \"condition_number\": no digit agrees between {bits} and {} bits; raise the precision",
+                2 * bits
+            ));
+        }
+        Ok(self.rendered(ConditionValue {
+            value: Some(c.text),
+            digits: c.digits,
+            scalar_name: format!("mpfr:{bits}"),
+            note: None,
+        }))
+    }
+
+    fn f64(&self) -> Result<Rendered, RunError> {
+        let (m, t0, t1, kind) = (self.m, &self.t0, &self.t1, self.kind);
+        let Some(k) = f64_matrix_condition(m, t0, t1, kind) else {
+            return fail(format!(
+                "field \"derivatives\": the factorials n!/(n−j)! of {m} derivatives overflow f64; use --scalar mpfr:<bits>"
+            ));
+        };
+        let (value, digits, note) = match k {
+            Ok(k) if k.is_finite() => {
+                // Digits of the f64 result that a certified MPFR value confirms.
+                let (exact, reference_value) =
+                    condition::certified(m, t0, t1, kind, 256).map_err(RunError::internal)?;
+                let confirmed = correct_digits(k, &reference_value).min(exact.digits);
+                (Some(crate::scalar::float_text(k)), confirmed, None)
             }
-            (Some(c.text), c.digits, format!("mpfr:{bits}"), None)
-        }
-        ScalarKind::F64 => {
-            let Some(k) = f64_matrix_condition(m, t0, t1, kind) else {
-                return fail(format!(
-                        "field \"derivatives\": the factorials n!/(n−j)! of {m} derivatives overflow f64; use --scalar mpfr:<bits>"
-                    ));
-            };
-            match k {
-                Ok(k) if k.is_finite() => {
-                    // Digits of the f64 result that a certified MPFR value confirms.
-                    let (exact, reference_value) =
-                        condition::certified(m, t0, t1, kind, 256).map_err(jacobi_failed)?;
-                    let confirmed = correct_digits(k, &reference_value).min(exact.digits);
-                    (
-                        Some(crate::scalar::float_text(k)),
-                        confirmed,
-                        "f64".into(),
-                        None,
-                    )
-                }
-                Ok(_) => (
-                    None,
-                    0,
-                    "f64".into(),
-                    Some("our f64 Jacobi finds σmin = 0".to_string()),
-                ),
-                Err(e) => (
-                    None,
-                    0,
-                    "f64".into(),
-                    Some(format!(
-                        "our f64 Jacobi: {e}: f64 cannot resolve this matrix"
-                    )),
-                ),
-            }
-        }
-    };
-    Ok(ConditionValue {
-        value,
-        digits,
-        scalar_name,
-        note,
-    })
+            Ok(_) => (None, 0, Some("our f64 Jacobi finds σmin = 0".to_string())),
+            Err(e) => (
+                None,
+                0,
+                Some(format!(
+                    "our f64 Jacobi: {e}: f64 cannot resolve this matrix"
+                )),
+            ),
+        };
+        Ok(self.rendered(ConditionValue {
+            value,
+            digits,
+            scalar_name: "f64".into(),
+            note,
+        }))
+    }
 }
 
 /// Our generic Jacobi in f64 on the f64 matrix, or `None` when an entry is not finite.

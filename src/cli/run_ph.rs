@@ -1,19 +1,20 @@
 //! `run ph-hermite`, `run phodcos` and `run convergence`: the JSON shapes of issue 3.
 
 use super::budget::{self, Rates};
-use super::dispatch::{run_real, RealJob};
+use super::dispatch::{run_real, run_two_precision, RealJob, TwoPrecisionJob};
 use super::input::{self, fail, InputError, RunError};
 use super::output::{agreed_text, flush, largest, noise_level, Out};
 use super::Rendered;
 use crate::algo::ph::hermite::{interpolate, FreeParameters, HermiteData, PhHermiteError};
 use crate::algo::ph::piecewise::{
-    certified_error, conversion_error, convert, phodcos, DEFAULT_SAMPLES,
+    certified_error, conversion_error, convert, observed_order, phodcos, DEFAULT_SAMPLES,
 };
 use crate::algo::ph::PhCurve;
 use crate::curve::{Curve, ExprCurve};
 use crate::scalar::certify::format_float_digits;
 use crate::scalar::{BigRational, Field, Float, Real, ScalarKind};
 use serde_json::{json, Map, Value};
+use std::cell::Cell;
 
 /// The most segments `run phodcos` accepts (directly or as the tolerance search's limit).
 pub const MAX_SEGMENTS: usize = 1 << 16;
@@ -67,13 +68,6 @@ fn ph_error(e: PhHermiteError) -> InputError {
 /// The refusal of `--scalar rational` for the PH commands.
 const NEEDS_REAL: &str =
     "option --scalar: PH interpolation takes square roots (Lemma 2); use f64 or mpfr:<bits>";
-
-fn needs_real(scalar: ScalarKind) -> Result<(), InputError> {
-    if scalar == ScalarKind::Rational {
-        return fail(NEEDS_REAL);
-    }
-    Ok(())
-}
 
 /// A list of vectors with every entry below the rounding level of the largest one set to 0
 /// (see [`noise_level`]: components that vanish mathematically, such as the real part of A_0
@@ -254,6 +248,22 @@ fn phodcos_in<T: Real>(
     ))
 }
 
+/// The conversion of `run phodcos`. In MPFR the higher precision uses the number of segments
+/// the lower one chose (dispatch runs p bits first), so that the two outputs have the same
+/// shape and a tolerance search is certified on one segmentation.
+struct PhodcosJob {
+    input: PhodcosInput,
+    chosen: Cell<Option<usize>>,
+}
+
+impl RealJob for PhodcosJob {
+    fn run<T: Real>(&self, ctx: &T::Ctx) -> Result<Out<T>, RunError> {
+        let (n, out) = phodcos_in::<T>(&self.input, ctx, self.chosen.get())?;
+        self.chosen.set(Some(n));
+        Ok(out)
+    }
+}
+
 /// `run phodcos`: a curve on uniform segments (or the fewest meeting a tolerance).
 pub fn run_phodcos(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, RunError> {
     input::only_fields(
@@ -287,7 +297,6 @@ pub fn run_phodcos(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rende
     if max_segments == 0 {
         return fail("field \"max_segments\": at least 1 segment");
     }
-    needs_real(scalar)?;
     // One conversion and error search per segment (measured on the README's curve: 65536
     // segments in 2.1 s in f64, 1024 in 1.3 s at mpfr:256); a tolerance search may convert
     // up to twice max_segments. Output: 36 numbers per segment.
@@ -316,90 +325,124 @@ pub fn run_phodcos(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rende
         tolerance,
         max_segments,
     };
-    let name = scalar.to_string();
-    match scalar {
-        ScalarKind::Mpfr(bits) => {
-            // The higher precision uses the number of segments the lower one chose.
-            let (n, lo) = phodcos_in::<Float>(&input, &bits, None)?;
-            let (_, hi) = phodcos_in::<Float>(&input, &(2 * bits), Some(n))?;
-            Ok(Rendered::certified(
-                lo.with_field("scalar", Out::Text(name.clone())),
-                hi.with_field("scalar", Out::Text(name)),
-            ))
+    let job = PhodcosJob {
+        input,
+        chosen: Cell::new(None),
+    };
+    run_real(&job, scalar, NEEDS_REAL)
+}
+
+/// The levels of `run convergence` and what each one converts.
+struct ConvergenceJob {
+    curve: ExprCurve,
+    a: BigRational,
+    b: BigRational,
+    levels: Vec<u32>,
+    free: FreeParameters<BigRational>,
+}
+
+impl ConvergenceJob {
+    /// One row per level: the printed error, the ratio to the previous level's error and the
+    /// observed order (both `null` when an error is zero), `show` printing a pair of values.
+    fn rows<T: Real>(
+        &self,
+        mut level: impl FnMut(usize) -> Result<(String, (T, T)), RunError>,
+        show: impl Fn(&T, &T) -> String,
+    ) -> Result<Vec<Value>, RunError> {
+        let mut rows = Vec::new();
+        let mut previous: Option<(T, T)> = None;
+        for &n in &self.levels {
+            let segments = 1usize << n;
+            let (text, pair) = level(segments)?;
+            let orders = previous.as_ref().and_then(|(plo, phi)| {
+                Some((observed_order(plo, &pair.0)?, observed_order(phi, &pair.1)?))
+            });
+            let (ratio, order) = match orders {
+                Some(((rlo, olo), (rhi, ohi))) => (
+                    Value::String(show(&rlo, &rhi)),
+                    Value::String(show(&olo, &ohi)),
+                ),
+                None => (Value::Null, Value::Null),
+            };
+            rows.push(json!({"segments": segments, "error": text, "ratio": ratio, "order": order}));
+            previous = Some(pair);
         }
-        _ => Ok(Rendered::plain(
-            phodcos_in::<f64>(&input, &(), None)?
-                .1
-                .with_field("scalar", Out::Text(name)),
-        )),
+        Ok(rows)
+    }
+
+    fn rendered(&self, rows: Vec<Value>, scalar: ScalarKind) -> Rendered {
+        Rendered::json(json!({"rows": rows, "scalar": scalar.to_string()}))
     }
 }
 
-/// The conversion error of `curve` on `segments` uniform segments, printed (certified digits
-/// in MPFR, shortest decimal in f64), with the values at the two precisions (twice the f64
-/// value in f64) for the ratios; 0 at both when the error is noise at both precisions.
-fn level_error(
-    curve: &ExprCurve,
-    a: &BigRational,
-    b: &BigRational,
-    segments: usize,
-    free: &FreeParameters<BigRational>,
-    scalar: ScalarKind,
-) -> Result<(String, (Float, Float)), InputError> {
-    Ok(match scalar {
-        ScalarKind::Mpfr(bits) => {
-            let c = curve.compile::<Float>(&bits);
-            let scale = check_finite(
-                &c,
-                &Float::from_rational(a, &bits),
-                &Float::from_rational(b, &bits),
-                segments,
-            )?;
-            let e = certified_error(
-                |p| curve.compile::<Float>(&p),
-                a,
-                b,
-                segments,
-                4,
-                free,
-                bits,
-                2 * bits,
-            )
-            .map_err(ph_error)?;
-            // A straight line is converted exactly: its computed error is noise of about 2^-p,
-            // printed as 0 (Out::MaybeZero's rule) rather than refused.
-            let hi_scale = Float::with_val(2 * bits, &scale);
-            let Some((text, zero)) = agreed_text(&e.lo, &e.hi, Some((&scale, &hi_scale))) else {
-                return fail(format!("output \"rows\": the error on {segments} segments has no digit that {bits} and {} bits agree on; raise the precision", 2 * bits));
-            };
-            let pair = if zero {
-                (Float::new(bits), Float::new(2 * bits))
-            } else {
-                (e.lo, e.hi)
-            };
-            (text, pair)
-        }
-        _ => {
-            let c = curve.compile::<f64>(&());
-            let (fa, fb) = (f64::from_rational(a, &()), f64::from_rational(b, &()));
-            check_finite(&c, &fa, &fb, segments)?;
-            let pw = convert(
-                &c,
-                &fa,
-                &fb,
-                segments,
-                4,
-                &free.map(|q| f64::from_rational(q, &())),
-                true,
-            )
-            .map_err(ph_error)?;
-            let e = conversion_error(&c, &pw, DEFAULT_SAMPLES).max;
-            (
-                crate::scalar::float_text(e),
-                (Float::with_val(53, e), Float::with_val(53, e)),
-            )
-        }
-    })
+impl TwoPrecisionJob for ConvergenceJob {
+    fn f64(&self) -> Result<Rendered, RunError> {
+        let c = self.curve.compile::<f64>(&());
+        let (fa, fb) = (
+            f64::from_rational(&self.a, &()),
+            f64::from_rational(&self.b, &()),
+        );
+        let free = self.free.map(|q| f64::from_rational(q, &()));
+        let rows = self.rows(
+            |segments| {
+                check_finite(&c, &fa, &fb, segments)?;
+                let pw = convert(&c, &fa, &fb, segments, 4, &free, true).map_err(ph_error)?;
+                let e = conversion_error(&c, &pw, DEFAULT_SAMPLES).max;
+                Ok((crate::scalar::float_text(e), (e, e)))
+            },
+            |_, hi| crate::scalar::float_text(*hi),
+        )?;
+        Ok(self.rendered(rows, ScalarKind::F64))
+    }
+
+    fn mpfr(&self, bits: u32) -> Result<Rendered, RunError> {
+        let rows = self.rows(
+            |segments| self.certified_level(segments, bits),
+            |lo: &Float, hi| crate::scalar::certify::certify(lo, hi).text,
+        )?;
+        Ok(self.rendered(rows, ScalarKind::Mpfr(bits)))
+    }
+}
+
+impl ConvergenceJob {
+    /// The conversion error on `segments` uniform segments certified at `bits` and `2·bits`,
+    /// printed with its agreed digits, with the two values for the ratios; 0 at both when the
+    /// error is noise at both precisions.
+    fn certified_level(
+        &self,
+        segments: usize,
+        bits: u32,
+    ) -> Result<(String, (Float, Float)), RunError> {
+        let c = self.curve.compile::<Float>(&bits);
+        let scale = check_finite(
+            &c,
+            &Float::from_rational(&self.a, &bits),
+            &Float::from_rational(&self.b, &bits),
+            segments,
+        )?;
+        let e = certified_error(
+            |p| self.curve.compile::<Float>(&p),
+            &self.a,
+            &self.b,
+            segments,
+            4,
+            &self.free,
+            bits,
+            2 * bits,
+        )
+        .map_err(ph_error)?;
+        // A straight line is converted exactly: its computed error is noise of about 2^-p,
+        // printed as 0 (Out::MaybeZero's rule) rather than refused.
+        let hi_scale = Float::with_val(2 * bits, &scale);
+        let Some((text, zero)) = agreed_text(&e.lo, &e.hi, Some((&scale, &hi_scale))) else {
+            return fail(format!("output \"rows\": the error on {segments} segments has no digit that {bits} and {} bits agree on; raise the precision", 2 * bits));
+        };
+        Ok(if zero {
+            (text, (Float::new(bits), Float::new(2 * bits)))
+        } else {
+            (text, (e.lo, e.hi))
+        })
+    }
 }
 
 /// `run convergence`: the error on 2ⁿ segments for each level, with ratios and orders.
@@ -415,7 +458,6 @@ pub fn run_convergence(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<R
         return fail("field \"levels\": at least one level");
     }
     let free = free_parameters(doc)?;
-    needs_real(scalar)?;
     // Conversion and certified error on 2ⁿ segments per level (measured on the README's
     // curve: 65536 segments in 1 s in f64, 4096 in 0.9 s at mpfr:128).
     let segments: f64 = levels.iter().map(|&n| (n as f64).exp2()).sum();
@@ -431,33 +473,12 @@ pub fn run_convergence(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<R
         "levels",
         &format!("{segments} segments over the levels at {scalar}"),
     )?;
-    let mut rows = Vec::new();
-    let mut previous: Option<(Float, Float)> = None;
-    for &n in &levels {
-        let segments = 1usize << n;
-        let (text, pair) = level_error(&curve.curve, &a, &b, segments, &free, scalar)?;
-        let (ratio, order) = match &previous {
-            // A zero error (a curve the method reproduces exactly) has no ratio.
-            Some((plo, phi))
-                if !(plo.is_zero() || phi.is_zero() || pair.0.is_zero() || pair.1.is_zero()) =>
-            {
-                let (rlo, rhi) = (plo.clone() / &pair.0, phi.clone() / &pair.1);
-                let (olo, ohi) = (rlo.clone().log2(), rhi.clone().log2());
-                let show = |lo: &Float, hi: &Float| match scalar {
-                    ScalarKind::Mpfr(_) => crate::scalar::certify::certify(lo, hi).text,
-                    _ => crate::scalar::float_text(hi.to_f64()),
-                };
-                (
-                    Value::String(show(&rlo, &rhi)),
-                    Value::String(show(&olo, &ohi)),
-                )
-            }
-            _ => (Value::Null, Value::Null),
-        };
-        rows.push(json!({"segments": segments, "error": text, "ratio": ratio, "order": order}));
-        previous = Some(pair);
-    }
-    Ok(Rendered::json(
-        json!({"rows": rows, "scalar": scalar.to_string()}),
-    ))
+    let job = ConvergenceJob {
+        curve: curve.curve,
+        a,
+        b,
+        levels,
+        free,
+    };
+    run_two_precision(&job, scalar, NEEDS_REAL)
 }

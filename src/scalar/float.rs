@@ -77,6 +77,9 @@ impl Real for f64 {
     fn ln(&self) -> Self {
         f64::ln(*self)
     }
+    fn log2(&self) -> Self {
+        f64::log2(*self)
+    }
     fn pi(_: &()) -> Self {
         std::f64::consts::PI
     }

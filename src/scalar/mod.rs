@@ -133,6 +133,10 @@ pub trait Real: Field {
     fn exp(&self) -> Self;
     /// ln x.
     fn ln(&self) -> Self;
+    /// log₂ x (correctly rounded in MPFR; the default divides by ln 2).
+    fn log2(&self) -> Self {
+        self.ln() / &Self::from_i64(2, &self.ctx()).ln()
+    }
     /// π in `ctx`.
     fn pi(ctx: &Self::Ctx) -> Self;
     /// The unit roundoff scale 2^(1−p) of the context (p = 53 for f64).

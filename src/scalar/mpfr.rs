@@ -112,6 +112,9 @@ impl Real for Float {
     fn ln(&self) -> Self {
         self.clone().ln()
     }
+    fn log2(&self) -> Self {
+        self.clone().log2()
+    }
     fn pi(bits: &u32) -> Self {
         Float::with_val(*bits, Constant::Pi)
     }

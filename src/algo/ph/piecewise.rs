@@ -545,6 +545,18 @@ impl CertifiedError {
     }
 }
 
+/// The observed convergence between two refinement levels (segments doubled): the ratio
+/// E_coarse/E_fine and the observed order log₂ of it (Theorem 1 predicts 6 for C⁴ data).
+/// `None` when either error is zero: a curve the method reproduces exactly has no rate.
+pub fn observed_order<T: Real>(coarse: &T, fine: &T) -> Option<(T, T)> {
+    if coarse.is_zero() || fine.is_zero() {
+        return None;
+    }
+    let ratio = coarse.clone() / fine;
+    let order = ratio.log2();
+    Some((ratio, order))
+}
+
 /// The conversion error of `segments` uniform C^m pieces on [a, b] with free parameters
 /// `free`, at `bits` and re-derived at `hi_bits` (see [`CertifiedError`]). `make` builds the
 /// curve at a precision (numbers rounded once into it). The location of the maximum is a
