@@ -57,9 +57,19 @@ pub fn run_real(
     scalar: ScalarKind,
     rational_refusal: &str,
 ) -> Result<Rendered, RunError> {
+    run_real_or_exact(job, scalar, || fail(rational_refusal))
+}
+
+/// `job` in f64 or MPFR, and for `--scalar rational` the computation's exact form `exact`,
+/// for the inputs that have one (it returns the refusal for the others).
+pub fn run_real_or_exact(
+    job: &impl RealJob,
+    scalar: ScalarKind,
+    exact: impl FnOnce() -> Result<Out<BigRational>, RunError>,
+) -> Result<Rendered, RunError> {
     match scalar {
         ScalarKind::F64 => Ok(Rendered::plain(named(job.run::<f64>(&())?, scalar))),
-        ScalarKind::Rational => fail(rational_refusal),
+        ScalarKind::Rational => Ok(Rendered::plain(named(exact()?, scalar))),
         ScalarKind::Mpfr(bits) => certified(scalar, bits, |p| job.run::<Float>(&p)),
     }
 }

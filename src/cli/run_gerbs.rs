@@ -6,7 +6,7 @@
 //! p and 2p bits with the agreeing digits printed; the BFBS basis also runs exactly.
 
 use super::budget::{self, check_time, Rates};
-use super::dispatch::{run_real, RealJob};
+use super::dispatch::{run_real, run_real_or_exact, RealJob};
 use super::input::{self, fail, InputError, RealInput, RunError};
 use super::output::{flush, largest, noise_level, Out};
 use super::Rendered;
@@ -387,19 +387,19 @@ pub fn run_gerbs_basis(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<R
         derivatives,
         side: side(doc)?,
     };
-    match (&job.params, scalar) {
-        (BasisParams::Bfbs(i), ScalarKind::Rational) => {
+    // The BFBS is an exact polynomial: rationals take the Real job's field operations only.
+    let exact = || {
+        match &job.params {
+        BasisParams::Bfbs(i) => {
             let bfbs = Bfbs::new(i.clone()).map_err(gerbs_error)?;
-            Ok(Rendered::plain(
-                job.values(&job.knots, &bfbs)
-                    .with_field("scalar", Out::Text("rational".into())),
-            ))
+            Ok(job.values(&job.knots, &bfbs))
         }
-        (BasisParams::Erbs { .. }, ScalarKind::Rational) => fail(
+        BasisParams::Erbs { .. } => fail(
             "option --scalar: the ERBS basis is an integral of exp(…) (quadrature); use f64 or mpfr:<bits>",
         ),
-        _ => run_real(&job, scalar, &needs_real("the ERBS basis")),
     }
+    };
+    run_real_or_exact(&job, scalar, exact)
 }
 
 /// The points `at`, each inside the knots, read exactly.

@@ -1,7 +1,7 @@
 //! `run marin-1d`, `run natural-spline` and `run marin`: the JSON shapes of issue 5.
 
 use super::budget::{check_output, Rates};
-use super::dispatch::{run_field, run_real, FieldJob, RealJob};
+use super::dispatch::{run_field, run_real, run_real_or_exact, FieldJob, RealJob};
 use super::input::{self, fail, InputError, RunError};
 use super::output::Out;
 use super::Rendered;
@@ -11,7 +11,7 @@ use crate::algo::param::objective::{chord_length_spacing, Objective};
 use crate::algo::param::one_d::{
     chord_length_1d, classify, minimizing_parametrization, Case, ParamError,
 };
-use crate::scalar::{BigRational, Field, Float, Real, ScalarKind};
+use crate::scalar::{BigRational, Field, Real, ScalarKind};
 use serde_json::{Map, Value};
 
 /// The most points accepted by `marin` (a dense Newton step on N unknowns).
@@ -53,28 +53,33 @@ pub fn run_marin_1d(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rend
         "z",
         &format!("{} ordinates at {scalar}", z.len()),
     )?;
-    fn real<T: Real>(z: &[BigRational], ctx: &T::Ctx) -> Result<Out<T>, InputError> {
-        let zt: Vec<T> = z.iter().map(|q| T::from_rational(q, ctx)).collect();
+    let exact = || -> Result<Out<BigRational>, RunError> {
+        if case != Case::I {
+            return fail(format!("option --scalar: rational covers only case I; these data are case {} and need square roots (use f64 or mpfr:<bits>)", case.name()));
+        }
+        let t = chord_length_1d(&z).map_err(|e| param_error(e, "z"))?;
+        Ok(Out::object(vec![
+            ("t", Out::nums(t)),
+            ("case", Out::Text("I".into())),
+        ]))
+    };
+    run_real_or_exact(&MarinOneDJob { z: z.clone() }, scalar, exact)
+}
+
+/// The exact minimizing parametrization of scalar ordinates (Sec. 2) in one number type.
+struct MarinOneDJob {
+    z: Vec<BigRational>,
+}
+
+impl RealJob for MarinOneDJob {
+    fn run<T: Real>(&self, ctx: &T::Ctx) -> Result<Out<T>, RunError> {
+        let zt: Vec<T> = self.z.iter().map(|q| T::from_rational(q, ctx)).collect();
         let (t, case) = minimizing_parametrization(&zt).map_err(|e| param_error(e, "z"))?;
         Ok(Out::object(vec![
             ("t", Out::nums(t)),
             ("case", Out::Text(case.name().into())),
         ]))
     }
-    Ok(match scalar {
-        ScalarKind::Rational if case == Case::I => {
-            let t = chord_length_1d(&z).map_err(|e| param_error(e, "z"))?;
-            Rendered::plain(Out::object(vec![("t", Out::nums(t)), ("case", Out::Text("I".into())), ("scalar", Out::Text("rational".into()))]))
-        }
-        ScalarKind::Rational => {
-            return fail(format!("option --scalar: rational covers only case I; these data are case {} and need square roots (use f64 or mpfr:<bits>)", case.name()))
-        }
-        ScalarKind::F64 => Rendered::plain(real::<f64>(&z, &())?.with_field("scalar", Out::Text("f64".into()))),
-        ScalarKind::Mpfr(bits) => Rendered::certified(
-            real::<Float>(&z, &bits)?.with_field("scalar", Out::Text(scalar.to_string())),
-            real::<Float>(&z, &(2 * bits))?.with_field("scalar", Out::Text(scalar.to_string())),
-        ),
-    })
 }
 
 /// `run natural-spline`: values and first and second derivatives at requested parameters.
