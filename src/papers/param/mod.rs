@@ -117,3 +117,20 @@ pub fn verify() -> PaperOutput {
     };
     render::report(&results, ledger.finish())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::data::*;
+
+    #[test]
+    fn every_transcribed_number_parses() {
+        let all = TABLE1
+            .iter()
+            .flat_map(|(a, b)| [*a, *b])
+            .chain(TABLE2.iter().flat_map(|(a, b)| [*a, *b]))
+            .chain(TABLE3.iter().flat_map(|(a, b, c)| [*a, *b, *c]));
+        for s in all {
+            assert!(crate::scalar::parse::parse_rational(s).is_ok(), "{s}");
+        }
+    }
+}

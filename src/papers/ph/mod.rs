@@ -4,7 +4,7 @@
 //! `coefficients`: the printed coefficient tables against their exact derivation;
 //! `table1`: Theorem 1 and Table 1 to 8192 segments, certified; `theorems`: Algorithm 1,
 //! Theorems 2–4, the roll correction, Eqs. (13), (18), (22b); `nrho`: Sec. 6A. The checks
-//! return their results ([`Results`]); `render` writes the report from them and `figures`
+//! return their results (`Results`); `render` writes the report from them and `figures`
 //! draws the figures.
 
 mod coefficients;
