@@ -8,7 +8,7 @@
 pub mod number;
 pub mod plot;
 
-use crate::ledger::{Claim, Verdict};
+use crate::ledger::{Claim, PaperOutput, Verdict};
 use serde::Serialize;
 use std::path::Path;
 
@@ -73,6 +73,23 @@ pub fn table(headers: &[&str], rows: &[Vec<String>]) -> String {
         ));
     }
     out
+}
+
+/// A paper's output: its report `markdown`, closed by the "Not checked" section and the
+/// claims table, with its figures.
+pub fn paper_output(
+    mut markdown: String,
+    not_checked: &[(&str, &str)],
+    claims: Vec<Claim>,
+    figures: Vec<(String, String)>,
+) -> PaperOutput {
+    markdown.push_str(&not_checked_section(not_checked));
+    markdown.push_str(&claims_section(&claims));
+    PaperOutput {
+        claims,
+        markdown,
+        figures,
+    }
 }
 
 /// The section of a paper report that lists what is *not* checked: each figure, table or

@@ -2,7 +2,7 @@
 
 use super::{figures, fitting, Results, ID, NOT_CHECKED, SHORT, TITLE};
 use crate::ledger::{Claim, PaperOutput};
-use crate::report::{claims_section, not_checked_section, plot, table};
+use crate::report::{paper_output, plot, table};
 use crate::scalar::certify::format_float_digits;
 use crate::scalar::{Field, Float};
 
@@ -39,13 +39,7 @@ pub fn report(r: &Results, claims: Vec<Claim>) -> PaperOutput {
         }
         None => md.push_str("The reconstruction failed.\n\n"),
     }
-    md.push_str(&not_checked_section(NOT_CHECKED));
-    md.push_str(&claims_section(&claims));
-    PaperOutput {
-        claims,
-        markdown: md,
-        figures,
-    }
+    paper_output(md, NOT_CHECKED, claims, figures)
 }
 
 fn table1(r: &Results) -> String {

@@ -4,7 +4,7 @@ use super::setup::{self, ErbsSet};
 use super::{figures, Results, ID, NOT_CHECKED, SHORT, TITLE};
 use crate::algo::gerbs::path::ArcConvention;
 use crate::ledger::{Claim, PaperOutput};
-use crate::report::{claims_section, not_checked_section, table};
+use crate::report::{paper_output, table};
 
 fn figure_name(n: u32) -> String {
     super::super::figure_file(ID, n)
@@ -43,13 +43,7 @@ pub fn report(r: &Results, claims: Vec<Claim>) -> PaperOutput {
     for (n, caption) in CAPTIONS {
         md.push_str(&format!("![{caption}]({})\n\n", figure_name(n)));
     }
-    md.push_str(&not_checked_section(NOT_CHECKED));
-    md.push_str(&claims_section(&claims));
-    PaperOutput {
-        claims,
-        markdown: md,
-        figures: figures(r),
-    }
+    paper_output(md, NOT_CHECKED, claims, figures(r))
 }
 
 /// The figures in file-name order.

@@ -4,7 +4,7 @@ use super::{
     conditioning, examples, figures, Results, FIG2_FAST, FIG2_SLOW, ID, NOT_CHECKED, SHORT, TITLE,
 };
 use crate::ledger::{Claim, PaperOutput};
-use crate::report::{claims_section, not_checked_section, plot, table};
+use crate::report::{paper_output, plot, table};
 use crate::scalar::certify::format_float_digits;
 use crate::scalar::{Field, Float};
 
@@ -36,13 +36,7 @@ pub fn report(r: &Results, claims: Vec<Claim>) -> PaperOutput {
         figure_name(5),
         plot::render_or_note(&figures::fig5_panels(&r.kappa), (1, 1), (900, 560)),
     ));
-    md.push_str(&not_checked_section(NOT_CHECKED));
-    md.push_str(&claims_section(&claims));
-    PaperOutput {
-        claims,
-        markdown: md,
-        figures,
-    }
+    paper_output(md, NOT_CHECKED, claims, figures)
 }
 
 fn fig2(r: &Results) -> String {

@@ -8,7 +8,7 @@ use super::robot::{RobotSection, NAMES};
 use super::{figures, Results, ID, NOT_CHECKED, SHORT, TITLE};
 use crate::ledger::{Claim, PaperOutput};
 use crate::report::number::sig as fmt;
-use crate::report::{claims_section, not_checked_section, table};
+use crate::report::{paper_output, table};
 use crate::scalar::certify::format_float_digits;
 use crate::scalar::{Field, Float};
 
@@ -34,13 +34,7 @@ pub fn report(r: &Results, claims: Vec<Claim>) -> PaperOutput {
         figures.push((figure_file(6), figures::corner(c)));
     }
     md.push_str(&robot(&r.robot));
-    md.push_str(&not_checked_section(NOT_CHECKED));
-    md.push_str(&claims_section(&claims));
-    PaperOutput {
-        claims,
-        markdown: md,
-        figures,
-    }
+    paper_output(md, NOT_CHECKED, claims, figures)
 }
 
 fn h1(rows: &[H1Row]) -> String {

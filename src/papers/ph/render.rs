@@ -3,7 +3,7 @@
 use super::{figures, table1, Results, ID, NOT_CHECKED, SHORT, TITLE};
 use crate::ledger::{Claim, PaperOutput};
 use crate::report::number::sig as fmt;
-use crate::report::{claims_section, not_checked_section, table};
+use crate::report::{paper_output, table};
 use crate::scalar::certify::format_float_digits;
 use crate::scalar::Float;
 
@@ -29,8 +29,6 @@ pub fn report(r: &Results, claims: Vec<Claim>) -> PaperOutput {
         figure_name("fig1"),
         figure_name("fig4")
     ));
-    md.push_str(&not_checked_section(NOT_CHECKED));
-    md.push_str(&claims_section(&claims));
     let t = &r.table1;
     let figures = vec![
         (
@@ -49,11 +47,7 @@ pub fn report(r: &Results, claims: Vec<Claim>) -> PaperOutput {
         (figure_name("fig1"), figures::nrho_figure1(&r.nrho)),
         (figure_name("fig4"), figures::nrho_figure4(&r.nrho)),
     ];
-    PaperOutput {
-        claims,
-        markdown: md,
-        figures,
-    }
+    paper_output(md, NOT_CHECKED, claims, figures)
 }
 
 fn coefficients(r: &Results) -> String {
