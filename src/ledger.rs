@@ -6,33 +6,80 @@
 //! checks produce these values, renderers read them, and neither imports the other's
 //! internals through it (DESIGN.md, "Layers").
 //!
-//! Verdicts (DESIGN.md): `reproduced` — the computed value agrees with the printed one within
-//! the precision printed, or the property holds to the stated digits; `discrepancy` — the
-//! paper's own method, computed to certified precision, does not give what is printed (a
-//! finding, with evidence); `failed` — something that must hold does not.
+//! Verdicts ([`Verdict`], README "Reading the ledger"): `reproduced`, `reproduced-rounding`
+//! (last printed digit), `metric` (agrees under the metric the paper's method uses),
+//! `typo` (evidently garbled print, with the reading used), `undetermined` (the paper does not
+//! give enough data), `discrepancy` (material: the paper's own method contradicts the printed
+//! value) and `failed` (something that must hold does not).
 
 use serde::Serialize;
 
-/// The verdict of one claim.
+/// The verdict of one claim: what kind of agreement or disagreement it is.
+///
+/// The order is by severity, from full agreement to a property that fails; a report lists
+/// the material findings ([`Verdict::is_material`]) first.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, PartialOrd, Ord)]
-#[serde(rename_all = "lowercase")]
 pub enum Verdict {
-    /// The computed value agrees with the printed one, or the property holds.
+    /// The computed value agrees with the printed one within half a unit of its last printed
+    /// digit, or the property holds.
+    #[serde(rename = "reproduced")]
     Reproduced,
-    /// The paper's own method, computed to certified precision, contradicts what is printed.
+    /// Agrees within one unit of the last printed digit but not within half a unit in some
+    /// cells: a last-digit rounding difference; the evidence says how many cells.
+    #[serde(rename = "reproduced-rounding")]
+    ReproducedRounding,
+    /// Agrees under the metric the paper's method actually uses (e.g. a maximum over a sample
+    /// grid), which differs from the one it states; the evidence names both and gives both
+    /// values.
+    #[serde(rename = "metric")]
+    Metric,
+    /// A printed symbol or digit that is evidently garbled (in the paper or in its text
+    /// extraction); the evidence gives the reading used and why it is the evident one.
+    #[serde(rename = "typo")]
+    Typo,
+    /// The paper does not give enough data to decide; the evidence says what was assumed and
+    /// what each reading gives.
+    #[serde(rename = "undetermined")]
+    Undetermined,
+    /// Material: the paper's own method, computed to certified precision, contradicts the
+    /// printed value.
+    #[serde(rename = "discrepancy")]
     Discrepancy,
     /// Something that must hold does not (or the check did not run).
+    #[serde(rename = "failed")]
     Failed,
 }
 
 impl Verdict {
+    /// Every verdict, in severity order.
+    pub const ALL: [Verdict; 7] = [
+        Verdict::Reproduced,
+        Verdict::ReproducedRounding,
+        Verdict::Metric,
+        Verdict::Typo,
+        Verdict::Undetermined,
+        Verdict::Discrepancy,
+        Verdict::Failed,
+    ];
+
     /// The verdict as written in claims.json and the reports.
     pub fn as_str(self) -> &'static str {
         match self {
             Verdict::Reproduced => "reproduced",
+            Verdict::ReproducedRounding => "reproduced-rounding",
+            Verdict::Metric => "metric",
+            Verdict::Typo => "typo",
+            Verdict::Undetermined => "undetermined",
             Verdict::Discrepancy => "discrepancy",
             Verdict::Failed => "failed",
         }
+    }
+
+    /// Whether the finding is material: the paper's content is wrong (`discrepancy`) or a
+    /// property fails (`failed`), as opposed to rounding, metric, garbled print or missing
+    /// data.
+    pub fn is_material(self) -> bool {
+        matches!(self, Verdict::Discrepancy | Verdict::Failed)
     }
 
     /// `Reproduced` when `ok`, else `Failed`: for properties that must hold.
@@ -41,6 +88,20 @@ impl Verdict {
             Verdict::Reproduced
         } else {
             Verdict::Failed
+        }
+    }
+
+    /// The verdict of printed values compared with computed ones, from the largest
+    /// difference in units of each value's last printed digit: within half a unit is
+    /// `Reproduced` (the printed value is the rounded computed one), within one unit
+    /// `ReproducedRounding` (the last digit differs), beyond that `Discrepancy`.
+    pub fn by_printed_units(largest_units: f64) -> Verdict {
+        if largest_units <= 0.5 {
+            Verdict::Reproduced
+        } else if largest_units <= 1.0 {
+            Verdict::ReproducedRounding
+        } else {
+            Verdict::Discrepancy
         }
     }
 }

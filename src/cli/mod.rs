@@ -317,12 +317,12 @@ fn verify(papers: &[Paper], out_dir: &std::path::Path) -> Result<String, Failure
     let mut summary = String::new();
     for paper in papers {
         let output = (paper.verify)();
-        let (r, d, f) = report::counts(&output.claims);
         summary.push_str(&format!(
-            "{} ({}): {} claims: {r} reproduced, {d} discrepancy, {f} failed\n",
+            "{} ({}): {} claims: {}\n",
             paper.id,
             paper.short,
-            output.claims.len()
+            output.claims.len(),
+            report::counts_text(&output.claims)
         ));
         for c in output
             .claims
@@ -343,7 +343,10 @@ fn verify(papers: &[Paper], out_dir: &std::path::Path) -> Result<String, Failure
         files.len(),
         out_dir.display()
     ));
-    let (_, _, failed) = report::counts(&all_claims);
+    let failed = all_claims
+        .iter()
+        .filter(|c| c.verdict == Verdict::Failed)
+        .count();
     if failed > 0 {
         Err(Failure::Run(format!("{summary}{failed} claim(s) failed")))
     } else {

@@ -15,9 +15,8 @@ use std::path::Path;
 #[derive(Serialize)]
 struct Summary {
     total: usize,
-    reproduced: usize,
-    discrepancy: usize,
-    failed: usize,
+    /// Claims per verdict, every verdict present (zero counts included).
+    verdicts: serde_json::Map<String, serde_json::Value>,
 }
 
 #[derive(Serialize)]
@@ -26,25 +25,34 @@ struct LedgerFile<'a> {
     claims: &'a [Claim],
 }
 
-/// Counts of claims by verdict: (reproduced, discrepancy, failed).
-pub fn counts(claims: &[Claim]) -> (usize, usize, usize) {
-    let n = |v| claims.iter().filter(|c| c.verdict == v).count();
-    (
-        n(Verdict::Reproduced),
-        n(Verdict::Discrepancy),
-        n(Verdict::Failed),
-    )
+/// The number of claims of each verdict, in [`Verdict::ALL`] order (zero counts included).
+pub fn counts(claims: &[Claim]) -> Vec<(Verdict, usize)> {
+    Verdict::ALL
+        .iter()
+        .map(|&v| (v, claims.iter().filter(|c| c.verdict == v).count()))
+        .collect()
+}
+
+/// The non-zero counts as text: "80 reproduced, 3 reproduced-rounding, 2 discrepancy".
+pub fn counts_text(claims: &[Claim]) -> String {
+    counts(claims)
+        .iter()
+        .filter(|(_, n)| *n > 0)
+        .map(|(v, n)| format!("{n} {}", v.as_str()))
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 /// The contents of `claims.json`: a summary of counts by verdict and every claim.
 pub fn ledger_json(claims: &[Claim]) -> String {
-    let (reproduced, discrepancy, failed) = counts(claims);
+    let verdicts = counts(claims)
+        .into_iter()
+        .map(|(v, n)| (v.as_str().to_string(), serde_json::Value::from(n)))
+        .collect();
     let file = LedgerFile {
         summary: Summary {
             total: claims.len(),
-            reproduced,
-            discrepancy,
-            failed,
+            verdicts,
         },
         claims,
     };
@@ -52,6 +60,48 @@ pub fn ledger_json(claims: &[Claim]) -> String {
     let mut s = serde_json::to_string_pretty(&file).unwrap_or_default();
     s.push('\n');
     s
+}
+
+/// The opening summary of a paper report: the claims by verdict, then every finding that is
+/// not a plain reproduction, one line each, the material ones (discrepancy, failed) first.
+pub fn summary_section(claims: &[Claim]) -> String {
+    let mut out = format!(
+        "## Summary\n\n{} claims: {}.\n\n",
+        claims.len(),
+        counts_text(claims)
+    );
+    let line = |c: &Claim| {
+        format!(
+            "- **{}** `{}` ({}): {}\n",
+            c.verdict.as_str(),
+            c.id,
+            c.location,
+            c.reproduced
+        )
+    };
+    let material: Vec<&Claim> = claims.iter().filter(|c| c.verdict.is_material()).collect();
+    let mut other: Vec<&Claim> = claims
+        .iter()
+        .filter(|c| !c.verdict.is_material() && c.verdict != Verdict::Reproduced)
+        .collect();
+    other.sort_by_key(|c| std::cmp::Reverse(c.verdict));
+    if material.is_empty() {
+        out.push_str("Material findings: none.\n\n");
+    } else {
+        out.push_str("Material findings (the paper's own method contradicts what it prints, or a property fails):\n\n");
+        let mut material = material;
+        material.sort_by_key(|c| std::cmp::Reverse(c.verdict));
+        out.extend(material.into_iter().map(line));
+        out.push('\n');
+    }
+    if !other.is_empty() {
+        out.push_str(
+            "Other findings (rounding, metric, garbled print, data the paper does not give):\n\n",
+        );
+        out.extend(other.into_iter().map(line));
+        out.push('\n');
+    }
+    out
 }
 
 /// A Markdown table. Cells are escaped for `|` and line breaks.
@@ -75,14 +125,18 @@ pub fn table(headers: &[&str], rows: &[Vec<String>]) -> String {
     out
 }
 
-/// A paper's output: its report `markdown`, closed by the "Not checked" section and the
-/// claims table, with its figures.
+/// A paper's output: its `heading`, the summary of its claims, the report `body`, the "Not
+/// checked" section and the claims table, with its figures.
 pub fn paper_output(
-    mut markdown: String,
+    heading: String,
+    body: String,
     not_checked: &[(&str, &str)],
     claims: Vec<Claim>,
     figures: Vec<(String, String)>,
 ) -> PaperOutput {
+    let mut markdown = heading;
+    markdown.push_str(&summary_section(&claims));
+    markdown.push_str(&body);
     markdown.push_str(&not_checked_section(not_checked));
     markdown.push_str(&claims_section(&claims));
     PaperOutput {

@@ -12,7 +12,8 @@ fn figure_name(n: u32) -> String {
 
 /// The report and figures of paper 002.
 pub fn report(r: &Results, claims: Vec<Claim>) -> PaperOutput {
-    let mut md = super::super::report_heading(ID, SHORT, TITLE);
+    let heading = super::super::report_heading(ID, SHORT, TITLE);
+    let mut md = String::new();
     let mut figures = vec![(
         figure_name(1),
         plot::render_or_note(
@@ -39,7 +40,7 @@ pub fn report(r: &Results, claims: Vec<Claim>) -> PaperOutput {
         }
         None => md.push_str("The reconstruction failed.\n\n"),
     }
-    paper_output(md, NOT_CHECKED, claims, figures)
+    paper_output(heading, md, NOT_CHECKED, claims, figures)
 }
 
 fn table1(r: &Results) -> String {

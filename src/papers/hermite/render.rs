@@ -14,7 +14,8 @@ fn figure_name(n: u32) -> String {
 
 /// The report and figures of paper 000.
 pub fn report(r: &Results, claims: Vec<Claim>) -> PaperOutput {
-    let mut md = super::super::report_heading(ID, SHORT, TITLE);
+    let heading = super::super::report_heading(ID, SHORT, TITLE);
+    let mut md = String::new();
     let mut figures = vec![(
         figure_name(2),
         plot::render_or_note(
@@ -36,7 +37,7 @@ pub fn report(r: &Results, claims: Vec<Claim>) -> PaperOutput {
         figure_name(5),
         plot::render_or_note(&figures::fig5_panels(&r.kappa), (1, 1), (900, 560)),
     ));
-    paper_output(md, NOT_CHECKED, claims, figures)
+    paper_output(heading, md, NOT_CHECKED, claims, figures)
 }
 
 fn fig2(r: &Results) -> String {

@@ -18,7 +18,8 @@ fn figure_file(n: u32) -> String {
 
 /// The report and figures of paper 004.
 pub fn report(r: &Results, claims: Vec<Claim>) -> PaperOutput {
-    let mut md = super::super::report_heading(ID, SHORT, TITLE);
+    let heading = super::super::report_heading(ID, SHORT, TITLE);
+    let mut md = String::new();
     let mut figures = Vec::new();
     md.push_str(&h1(&r.h1));
     md.push_str("## Table I: the minimizing parametrization of scalar data\n\n");
@@ -34,7 +35,7 @@ pub fn report(r: &Results, claims: Vec<Claim>) -> PaperOutput {
         figures.push((figure_file(6), figures::corner(c)));
     }
     md.push_str(&robot(&r.robot));
-    paper_output(md, NOT_CHECKED, claims, figures)
+    paper_output(heading, md, NOT_CHECKED, claims, figures)
 }
 
 fn h1(rows: &[H1Row]) -> String {

@@ -13,7 +13,8 @@ fn figure_name(tag: &str) -> String {
 
 /// The report and figures of paper 001.
 pub fn report(r: &Results, claims: Vec<Claim>) -> PaperOutput {
-    let mut md = super::super::report_heading(ID, SHORT, TITLE);
+    let heading = super::super::report_heading(ID, SHORT, TITLE);
+    let mut md = String::new();
     md.push_str(&coefficients(r));
     md.push_str(&table1_section(&r.table1));
     md.push_str(&other_orders(&r.table1.other));
@@ -47,7 +48,7 @@ pub fn report(r: &Results, claims: Vec<Claim>) -> PaperOutput {
         (figure_name("fig1"), figures::nrho_figure1(&r.nrho)),
         (figure_name("fig4"), figures::nrho_figure4(&r.nrho)),
     ];
-    paper_output(md, NOT_CHECKED, claims, figures)
+    paper_output(heading, md, NOT_CHECKED, claims, figures)
 }
 
 fn coefficients(r: &Results) -> String {
