@@ -226,12 +226,20 @@ pub fn eq8() -> (Outcome, Outcome) {
     let printed = Outcome::new(
         format!("differs from (A2) in {differ} of {compared} entries"),
         "rational",
-        if differ > 0 { Verdict::Discrepancy } else { Verdict::Reproduced },
+        // Garbled print, not a wrong method: the same recursion with the minus sign the left
+        // side carries (Δ^(−j+1) on the right) is exactly (A2) (the claim that follows).
+        match (differ > 0, restored_bad == 0) {
+            (false, _) => Verdict::Reproduced,
+            (true, true) => Verdict::Typo,
+            (true, false) => Verdict::Discrepancy,
+        },
         format!(
             "the extracted text prints Δ^-j(y_i) = Δ^(j+1)(y_(i+1)) + Δ^(j+1)(y_i); taken literally (Δ^(j+1) forward \
              differences of y) it is not the inverse of Eq. 6: compared exactly with (A2) on random rational y for \
-             n = 0…30, every entry j ≥ 1 where it is defined; {}. A minus sign lost in extraction (Δ^(-j+1)) \
-             would explain it: see hermite.eq8.minus_restored.",
+             n = 0…30, every entry j ≥ 1 where it is defined; {}. Reading used: Δ^(−j+1) on the right, the order one \
+             below the left side's Δ^(−j) (a minus sign lost in the superscripts), which makes the recursion exactly \
+             (A2) for every n = 0…30 ({restored_bad} failures; hermite.eq8.minus_restored). The literal superscript j+1 \
+             would make an anti-difference of order −j out of differences of order j+1, so the garbling is evident.",
             example.unwrap_or_default()
         ),
     );

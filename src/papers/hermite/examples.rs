@@ -39,8 +39,30 @@ pub type Curve<T> = Vec<Bernstein<T>>;
 /// The duration factors of Fig. 3.
 pub const TURN_FACTORS: [(i64, i64); 3] = [(1, 5), (1, 1), (3, 1)];
 
+/// Which boundary data a Fig. 3 curve is given. The text says only "identical start and end
+/// speeds but different directions", so both readings are computed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TurnData {
+    /// Positions, velocities and the centripetal accelerations of the circle (m = 2, quintic).
+    WithAcceleration,
+    /// Positions and velocities only (m = 1, cubic).
+    VelocityOnly,
+}
+
+impl TurnData {
+    /// How the report names the reading.
+    pub fn label(self) -> &'static str {
+        match self {
+            TurnData::WithAcceleration => "velocity and acceleration (m = 2)",
+            TurnData::VelocityOnly => "velocity only (m = 1)",
+        }
+    }
+}
+
 /// Measurements of one Fig. 3 curve (from samples; see module doc).
 pub struct TurnMetrics {
+    /// The boundary data the curve is given.
+    pub data: TurnData,
     pub factor: (i64, i64),
     pub duration: f64,
     pub hausdorff_chord: f64,
@@ -49,6 +71,9 @@ pub struct TurnMetrics {
     /// max distance from the terminal point divided by the start's distance from it.
     pub farthest_from_end: f64,
     pub turning_degrees: f64,
+    /// The signed (net) turning of the tangent, in degrees: 90 for a quarter turn that does not
+    /// wind back.
+    pub net_turning_degrees: f64,
     pub max_speed: f64,
     pub samples: Vec<(f64, f64)>,
 }
@@ -123,41 +148,57 @@ fn hausdorff(
     forward.max(backward)
 }
 
-/// Total absolute turning of the tangent along the samples, in degrees (MPFR atan2, so the
-/// result does not depend on the platform's libm).
-fn turning_degrees(velocities: &[(f64, f64)]) -> f64 {
+/// Total absolute and net (signed) turning of the tangent along the samples, in degrees
+/// (MPFR atan2, so the result does not depend on the platform's libm).
+fn turning_degrees(velocities: &[(f64, f64)]) -> (f64, f64) {
     let mut total = Float::with_val(64, 0);
+    let mut net = Float::with_val(64, 0);
     for w in velocities.windows(2) {
         let (a, b) = (w[0], w[1]);
         let cross = Float::with_val(64, a.0 * b.1 - a.1 * b.0);
         let dot = Float::with_val(64, a.0 * b.0 + a.1 * b.1);
-        total += cross.atan2(&dot).abs();
+        let angle = cross.atan2(&dot);
+        net += &angle;
+        total += angle.abs();
     }
-    (total * 180u32 / Float::pi(&64)).to_f64()
+    let degrees = |x: Float| (x * 180u32 / Float::pi(&64)).to_f64();
+    (degrees(total), degrees(net))
 }
 
-/// The Fig. 3 curve for duration factor num/den of the nominal π/2, in MPFR.
-fn turn_curve(factor: (i64, i64)) -> Option<Curve<Float>> {
+/// The Fig. 3 curve for duration factor num/den of the nominal π/2, in MPFR, given `data`.
+fn turn_curve(factor: (i64, i64), data: TurnData) -> Option<Curve<Float>> {
     let bits = TURN_BITS;
     let i = |v: i64| Float::from_i64(v, &bits);
     let duration = Float::pi(&bits) / 2u32 * Float::from_ratio(factor.0, factor.1, &bits);
-    let x = solve_coordinate(
-        vec![i(0), i(1), i(0)],
-        vec![i(1), i(0), i(-1)],
-        i(0),
-        duration.clone(),
-    )?;
-    let y = solve_coordinate(
-        vec![i(0), i(0), i(1)],
-        vec![i(1), i(1), i(0)],
-        i(0),
-        duration,
-    )?;
+    // (position, velocity, acceleration) at both ends, per coordinate, of the quarter turn.
+    let ends = |start: [i64; 3], end: [i64; 3]| {
+        let order = if data == TurnData::WithAcceleration {
+            3
+        } else {
+            2
+        };
+        (
+            start[..order].iter().map(|&v| i(v)).collect::<Vec<_>>(),
+            end[..order].iter().map(|&v| i(v)).collect::<Vec<_>>(),
+        )
+    };
+    let (xs, xe) = ends([0, 1, 0], [1, 0, -1]);
+    let (ys, ye) = ends([0, 0, 1], [1, 1, 0]);
+    let x = solve_coordinate(xs, xe, i(0), duration.clone())?;
+    let y = solve_coordinate(ys, ye, i(0), duration)?;
     Some(vec![x, y])
 }
 
-/// Solve and measure the three Fig. 3 curves.
+/// Solve and measure the three Fig. 3 curves for each reading of the data: first with
+/// accelerations, then velocity only.
 pub fn turn_metrics() -> Option<Vec<TurnMetrics>> {
+    let mut all = turn_metrics_for(TurnData::WithAcceleration)?;
+    all.extend(turn_metrics_for(TurnData::VelocityOnly)?);
+    Some(all)
+}
+
+/// The three Fig. 3 curves given `data`.
+fn turn_metrics_for(data: TurnData) -> Option<Vec<TurnMetrics>> {
     let chord_ref: Vec<(f64, f64)> = (0..401)
         .map(|i| (i as f64 / 400.0, i as f64 / 400.0))
         .collect();
@@ -172,7 +213,7 @@ pub fn turn_metrics() -> Option<Vec<TurnMetrics>> {
     TURN_FACTORS
         .iter()
         .map(|&factor| {
-            let exact = turn_curve(factor)?;
+            let exact = turn_curve(factor, data)?;
             let c = to_f64_curve(&exact);
             let pts: Vec<(f64, f64)> = sample(&c, SAMPLES)
                 .into_iter()
@@ -185,7 +226,9 @@ pub fn turn_metrics() -> Option<Vec<TurnMetrics>> {
                 .collect();
             let end = (1.0, 1.0);
             let start_dist = dist((0.0, 0.0), end);
+            let (turning_degrees, net_turning_degrees) = turning_degrees(&vel);
             Some(TurnMetrics {
+                data,
                 factor,
                 duration: exact[0].duration().to_f64(),
                 hausdorff_chord: hausdorff(
@@ -200,7 +243,8 @@ pub fn turn_metrics() -> Option<Vec<TurnMetrics>> {
                     .fold(0.0, f64::max),
                 farthest_from_end: pts.iter().map(|&p| dist(p, end)).fold(0.0, f64::max)
                     / start_dist,
-                turning_degrees: turning_degrees(&vel),
+                turning_degrees,
+                net_turning_degrees,
                 max_speed: vel.iter().map(|&v| dist(v, (0.0, 0.0))).fold(0.0, f64::max),
                 samples: pts,
             })
@@ -213,51 +257,79 @@ pub fn fmt4(x: f64) -> String {
     format_float_digits(&Float::with_val(53, x), 4)
 }
 
-/// The three Fig. 3 claims from the measurements.
+/// The three Fig. 3 claims from the measurements of both readings of the data (the first
+/// three entries of `m` with accelerations, the next three velocity only). A claim is
+/// `reproduced` when it holds under both readings, `discrepancy` when under neither, and
+/// `undetermined` when the reading decides it: the paper gives speeds and directions only.
 pub fn turn_claims(m: &[TurnMetrics]) -> [Outcome; 3] {
     let describe = |t: &TurnMetrics| {
         format!(
-            "duration {}×π/2: Hausdorff distance to the chord {} and to the arc {}; max radial deviation from the circle {}; \
-             farthest distance from the terminal point {}× the start's; tangent turns {}°; peak speed {}",
+            "{}, duration {}×π/2: Hausdorff distance to the chord {} and to the arc {}; max radial deviation from the circle {}; \
+             farthest distance from the terminal point {}× the start's; tangent turns {}° in total, {}° net; peak speed {}",
+            t.data.label(),
             if t.factor.1 == 1 { t.factor.0.to_string() } else { format!("{}/{}", t.factor.0, t.factor.1) },
             fmt4(t.hausdorff_chord),
             fmt4(t.hausdorff_arc),
             fmt4(t.max_radial_deviation),
             fmt4(t.farthest_from_end),
             fmt4(t.turning_degrees),
+            fmt4(t.net_turning_degrees),
             fmt4(t.max_speed)
         )
     };
-    let verdict = |ok: bool| {
-        if ok {
-            Verdict::Reproduced
-        } else {
-            Verdict::Discrepancy
-        }
+    let method = "data of a uniform quarter turn (R = 1, V = 1), once with the circle's centripetal accelerations (m = 2) and once \
+                  with velocities only (m = 1), since the text states only \"identical start and end speeds but different directions\"; \
+                  solved in MPFR-128 and sampled at 2001 parameters; Hausdorff distances against the sampled chord and arc (401 points each)";
+    let claim = |k: usize,
+                 holds: &dyn Fn(&TurnMetrics) -> bool,
+                 what: &dyn Fn(&TurnMetrics) -> String,
+                 criterion: &str| {
+        let (acc, vel) = (&m[k], &m[k + 3]);
+        let verdict = match (holds(acc), holds(vel)) {
+            (true, true) => Verdict::Reproduced,
+            (false, false) => Verdict::Discrepancy,
+            _ => Verdict::Undetermined,
+        };
+        Outcome::new(
+            format!("with accelerations: {}; velocity only: {}", what(acc), what(vel)),
+            "mpfr:128",
+            verdict,
+            format!(
+                "criterion: {criterion}; reproduced when it holds under both readings of the data, undetermined when only one. {method}. {}. {}",
+                describe(acc),
+                describe(vel)
+            ),
+        )
     };
-    let method = "data of a uniform quarter turn (R = 1, V = 1, centripetal accelerations, m = 2), solved in MPFR-128 \
-                  and sampled at 2001 parameters; Hausdorff distances against the sampled chord and arc (401 points each)";
-    let short = &m[0];
-    let nominal = &m[1];
-    let long = &m[2];
     [
-        Outcome::new(
-            format!("closer to the chord ({}) than to the arc ({})", fmt4(short.hausdorff_chord), fmt4(short.hausdorff_arc)),
-            "mpfr:128",
-            verdict(short.hausdorff_chord < short.hausdorff_arc),
-            format!("criterion: Hausdorff distance to the chord < to the arc. {method}. {}", describe(short)),
+        claim(
+            0,
+            &|t| t.hausdorff_chord < t.hausdorff_arc,
+            &|t| format!("closer to the chord ({}) than to the arc ({})", fmt4(t.hausdorff_chord), fmt4(t.hausdorff_arc)),
+            "Hausdorff distance to the chord < to the arc",
         ),
-        Outcome::new(
-            format!("closer to the arc ({}) than to the chord ({})", fmt4(nominal.hausdorff_arc), fmt4(nominal.hausdorff_chord)),
-            "mpfr:128",
-            verdict(nominal.hausdorff_arc < nominal.hausdorff_chord),
-            format!("criterion: Hausdorff distance to the arc < to the chord. {method}. {}", describe(nominal)),
+        claim(
+            1,
+            &|t| t.hausdorff_arc < t.hausdorff_chord,
+            &|t| format!("closer to the arc ({}) than to the chord ({})", fmt4(t.hausdorff_arc), fmt4(t.hausdorff_chord)),
+            "Hausdorff distance to the arc < to the chord",
         ),
-        Outcome::new(
-            format!("reaches {}× the start's distance from the terminal point", fmt4(long.farthest_from_end)),
-            "mpfr:128",
-            verdict(long.farthest_from_end > 1.0),
-            format!("criterion: the curve gets farther from the terminal point than it started. {method}. {}", describe(long)),
+        claim(
+            2,
+            // The end tangents are fixed, so the net turning is 90° plus whole revolutions: a
+            // loop is a net turning other than 90° (any threshold below 360° is the same test).
+            &|t| (t.net_turning_degrees - 90.0).abs() > 180.0,
+            &|t| {
+                format!(
+                    "net tangent turning {}° ({}), farthest {}× the start's distance from the terminal point",
+                    fmt4(t.net_turning_degrees),
+                    if (t.net_turning_degrees - 90.0).abs() > 180.0 { "a loop" } else { "no loop" },
+                    fmt4(t.farthest_from_end)
+                )
+            },
+            "the curve makes a loop: its tangent turns through a full extra revolution (net turning ≠ 90°). The sentence is cut off in \
+             the text (\"loops away from\" ends the paragraph), so what it loops away from is not given; the earlier criterion, getting \
+             farther from the terminal point than the start, holds under neither reading (both values are shown)",
         ),
     ]
 }

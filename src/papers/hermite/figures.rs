@@ -58,8 +58,13 @@ pub fn fig2_panels(fast: &Bernstein<BigRational>, slow: &Bernstein<BigRational>)
         .collect()
 }
 
-/// Panel of Fig. 3 from the measurements.
+/// Fig. 3 from the measurements: one panel per reading of the data.
 pub fn turn_figure(m: &[TurnMetrics]) -> Vec<Panel> {
+    m.chunks(3).map(turn_panel).collect()
+}
+
+/// One reading of the Fig. 3 data: its three durations, the arc and the end points.
+fn turn_panel(m: &[TurnMetrics]) -> Panel {
     let styles = [Style::Dashed, Style::Solid, Style::Dotted];
     let mut series: Vec<Series> = m
         .iter()
@@ -88,15 +93,16 @@ pub fn turn_figure(m: &[TurnMetrics]) -> Vec<Panel> {
         Style::Markers,
         0,
     ));
-    vec![Panel {
-        title: "Fig. 3: same end conditions, durations 0.2, 1 and 3 × π/2".into(),
+    let data = m.first().map_or("", |t| t.data.label());
+    Panel {
+        title: format!("Fig. 3, {data}: durations 0.2, 1 and 3 × π/2"),
         x_label: "x (length units)".into(),
         y_label: "y (length units)".into(),
         series,
         equal_aspect: true,
         legend: Corner::LowerRight,
         ..Panel::default()
-    }]
+    }
 }
 
 /// Panels of Fig. 4: top view and altitude.

@@ -70,9 +70,10 @@ fn turn(r: &Results, figures: &mut Vec<(String, String)>) -> String {
     let mut md = String::new();
     md.push_str("## Fig. 3: one turn, three durations\n\n");
     md.push_str(
-        "Data (ours; the paper prints none): a uniform quarter turn of radius 1 at speed 1, start (0, 0) with velocity (1, 0) \
-         and acceleration (0, 1), end (1, 1) with velocity (0, 1) and acceleration (−1, 0); m = 2; nominal duration π/2 (the \
-         circle's). Criteria fixed beforehand: *straight* = closer to the chord than to the arc (Hausdorff distance); \
+        "Data (ours; the paper prints none): a uniform quarter turn of radius 1 at speed 1, start (0, 0) with velocity (1, 0), \
+         end (1, 1) with velocity (0, 1); nominal duration π/2 (the circle's). The text gives only \"identical start and end speeds \
+         but different directions\", so two readings are computed: with the circle's accelerations (0, 1) and (−1, 0) as well \
+         (m = 2, quintic), and with velocities only (m = 1, cubic). Criteria fixed beforehand: *straight* = closer to the chord than to the arc (Hausdorff distance); \
          *circular* = closer to the arc than to the chord; *loops away* = gets farther from the terminal point than it started.\n\n",
     );
     match &r.turn {
@@ -81,6 +82,7 @@ fn turn(r: &Results, figures: &mut Vec<(String, String)>) -> String {
                 .iter()
                 .map(|t| {
                     vec![
+                        t.data.label().to_string(),
                         if t.factor.1 == 1 {
                             t.factor.0.to_string()
                         } else {
@@ -92,19 +94,22 @@ fn turn(r: &Results, figures: &mut Vec<(String, String)>) -> String {
                         examples::fmt4(t.max_radial_deviation),
                         examples::fmt4(t.farthest_from_end),
                         examples::fmt4(t.turning_degrees),
+                        examples::fmt4(t.net_turning_degrees),
                         examples::fmt4(t.max_speed),
                     ]
                 })
                 .collect();
             md.push_str(&table(
                 &[
+                    "data",
                     "× nominal",
                     "duration",
                     "Hausdorff to chord",
                     "Hausdorff to arc",
                     "max radial dev.",
                     "max dist. to end / start's",
-                    "tangent turning (°)",
+                    "total tangent turning (°)",
+                    "net turning (°)",
                     "peak speed",
                 ],
                 &rows,
@@ -112,7 +117,7 @@ fn turn(r: &Results, figures: &mut Vec<(String, String)>) -> String {
             md.push_str(&format!("\n![Fig. 3](./{})\n\n", figure_name(3)));
             figures.push((
                 figure_name(3),
-                plot::render_or_note(&figures::turn_figure(metrics), (1, 1), (640, 640)),
+                plot::render_or_note(&figures::turn_figure(metrics), (1, 2), (1200, 640)),
             ));
         }
         None => md.push_str("The Fig. 3 instance failed to solve.\n\n"),

@@ -24,20 +24,51 @@ pub(crate) fn rounds_to(x: &Float, printed: &str) -> bool {
     (x.clone() - &p).abs() <= half_unit
 }
 
-/// A computed column against a printed one: how many entries agree within half a unit of their
-/// last printed decimal, and the largest absolute difference.
-pub(crate) fn compare_with_printed(column: &[Float], printed: &[&str]) -> (usize, f64) {
+/// A computed column against a printed one.
+pub(crate) struct ColumnComparison {
+    /// Entries within half a unit of their last printed decimal.
+    pub agree: usize,
+    /// The largest absolute difference.
+    pub largest: f64,
+    /// The largest difference in units of the entry's last printed decimal.
+    pub largest_units: f64,
+}
+
+impl ColumnComparison {
+    /// The verdict by [`Verdict::by_printed_units`].
+    pub fn verdict(&self) -> Verdict {
+        Verdict::by_printed_units(self.largest_units)
+    }
+}
+
+/// `column` against the printed `printed`, entry by entry.
+pub(crate) fn compare_with_printed(column: &[Float], printed: &[&str]) -> ColumnComparison {
     let agree = column
         .iter()
         .zip(printed)
         .filter(|(x, s)| rounds_to(x, s))
         .count();
-    let dev = column
+    let largest = column
         .iter()
         .zip(printed)
         .map(|(x, s)| (x.to_f64() - num(s).to_f64()).abs())
         .fold(0.0, f64::max);
-    (agree, dev)
+    let largest_units = column
+        .iter()
+        .zip(printed)
+        .map(|(x, s)| {
+            let decimals = s.split_once('.').map_or(0, |(_, f)| f.len()) as i32;
+            let unit: BigRational =
+                num_traits::Pow::pow(BigRational::from_integer(10.into()), -decimals);
+            let diff = x.clone() - &Float::from_rational(&num(s), &x.prec());
+            (diff.abs() / &Float::from_rational(&unit, &x.prec())).to_f64()
+        })
+        .fold(0.0, f64::max);
+    ColumnComparison {
+        agree,
+        largest,
+        largest_units,
+    }
 }
 
 fn table1_z<T: Field>(ctx: &T::Ctx) -> Vec<T> {
