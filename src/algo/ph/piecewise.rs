@@ -545,6 +545,111 @@ impl CertifiedError {
     }
 }
 
+/// The distances |γ(t) − p(t)| at the global parameters `ts` (each in [a, b]), in order:
+/// what a sampled evaluation of the error measures.
+pub fn grid_distances<T: Real, C: Curve<T> + ?Sized>(
+    curve: &C,
+    pw: &PiecewisePh<T>,
+    ts: &[T],
+) -> Vec<T> {
+    let h = pw.step();
+    let mut per_segment: Vec<Vec<(usize, T)>> = vec![Vec::new(); pw.segments.len()];
+    for (i, t) in ts.iter().enumerate() {
+        // locate puts t = b at ξ = 1 of the last segment.
+        let (k, xi) = pw.locate(t);
+        per_segment[k].push((i, xi));
+    }
+    let found: Vec<Vec<(usize, T)>> = pw
+        .segments
+        .par_iter()
+        .enumerate()
+        .map(|(k, seg)| {
+            if per_segment[k].is_empty() {
+                return Vec::new();
+            }
+            let dist = SegmentDistance::new(curve, seg, &pw.knot(k), &h);
+            per_segment[k]
+                .iter()
+                .map(|(i, xi)| (*i, dist.value(xi).sqrt()))
+                .collect()
+        })
+        .collect();
+    let mut out = vec![T::zero_in(&h.ctx()); ts.len()];
+    for (i, d) in found.into_iter().flatten() {
+        out[i] = d;
+    }
+    out
+}
+
+/// The largest of [`grid_distances`]: the error as a maximum over sample points, which can
+/// only be below the true maximum of [`conversion_error`].
+pub fn grid_error<T: Real, C: Curve<T> + ?Sized>(curve: &C, pw: &PiecewisePh<T>, ts: &[T]) -> T {
+    grid_distances(curve, pw, ts)
+        .into_iter()
+        .fold(T::zero_in(&pw.a.ctx()), |m, d| if d > m { d } else { m })
+}
+
+/// The maximum of ‖γ − p‖ over the grid `ts` of [a, b], certified like [`certified_error`]:
+/// every point at `bits`, then the points whose distance comes within the evaluation noise of
+/// the largest (2^(10−bits) relative to the curve's size) again at `hi_bits`, each on its
+/// segment interpolated at `hi_bits`. Returns the two maxima.
+pub fn certified_grid_error<C: Curve<Float>>(
+    make: impl Fn(u32) -> C,
+    interval: (&BigRational, &BigRational),
+    segments: usize,
+    m: usize,
+    free: &FreeParameters<BigRational>,
+    ts: &[BigRational],
+    (bits, hi_bits): (u32, u32),
+) -> Result<(Float, Float), PhHermiteError> {
+    let (a, b) = interval;
+    let lo_curve = make(bits);
+    let (a_lo, b_lo) = (
+        Float::from_rational(a, &bits),
+        Float::from_rational(b, &bits),
+    );
+    let free_lo = free.map(|x| Float::from_rational(x, &bits));
+    let pw = convert(&lo_curve, &a_lo, &b_lo, segments, m, &free_lo, false)?;
+    let ts_lo: Vec<Float> = ts.iter().map(|q| Float::from_rational(q, &bits)).collect();
+    let d = grid_distances(&lo_curve, &pw, &ts_lo);
+    let max_lo = d
+        .iter()
+        .fold(Float::new(bits), |m, x| if *x > m { x.clone() } else { m });
+    let size = vec3::norm(&lo_curve.jet(&a_lo, 0)[0]).max(&Float::with_val(bits, 1));
+    let noise = size * Float::with_val(bits, Float::i_exp(1, 10 - bits as i32));
+    let hi_curve = make(hi_bits);
+    let (a_hi, b_hi) = (
+        Float::from_rational(a, &hi_bits),
+        Float::from_rational(b, &hi_bits),
+    );
+    let free_hi = free.map(|x| Float::from_rational(x, &hi_bits));
+    let h = (b_hi.clone() - &a_hi) / &Float::from_i64(segments as i64, &hi_bits);
+    let mut max_hi = Float::new(hi_bits);
+    for (i, _) in d
+        .iter()
+        .enumerate()
+        .filter(|(_, x)| **x >= max_lo.clone() - &noise)
+    {
+        let (k, _) = pw.locate(&ts_lo[i]);
+        let t0 = knot(&a_hi, &b_hi, segments, k);
+        let jet_at = |j: usize| segment_jet(&hi_curve, &knot(&a_hi, &b_hi, segments, j), &h, m);
+        let seg = interpolate(
+            &HermiteData::from_jets(&jet_at(k), &jet_at(k + 1)),
+            &free_hi,
+        )?;
+        // ξ exactly: (t − t_k)/h from the rational t.
+        let t = Float::from_rational(&ts[i], &hi_bits);
+        let xi_hi = (t - &t0) / &h;
+        let value = SegmentDistance::new(&hi_curve, &seg, &t0, &h)
+            .value(&xi_hi)
+            .sqrt();
+        if value > max_hi {
+            max_hi = value;
+        }
+    }
+    Ok((max_lo, max_hi))
+}
+
 /// The observed convergence between two refinement levels (segments doubled): the ratio
 /// E_coarse/E_fine and the observed order log₂ of it (Theorem 1 predicts 6 for C⁴ data).
 /// `None` when either error is zero: a curve the method reproduces exactly has no rate.
@@ -611,4 +716,52 @@ pub fn certified_error<C: Curve<Float>>(
         segment: k,
         xi: e.xi,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::curve::ExprCurve;
+
+    /// A grid maximum is a sampled maximum: on the sample points of `conversion_error` it
+    /// equals that function's `sampled` value, it never exceeds the true maximum, and the
+    /// certified version agrees with it.
+    #[test]
+    fn grid_maximum_is_the_sampled_maximum_and_below_the_true_one() {
+        let curve = ExprCurve::parse("[cos(3*t), sin(2*t), t^2]").unwrap();
+        let c = curve.compile::<f64>(&());
+        let (n, samples) = (4usize, DEFAULT_SAMPLES);
+        let pw = convert(&c, &0.0, &1.0, n, 4, &FreeParameters::zero(4, &()), false).unwrap();
+        let e = conversion_error(&c, &pw, samples);
+        let grid: Vec<BigRational> = (0..=n * samples)
+            .map(|i| BigRational::new((i as i64).into(), ((n * samples) as i64).into()))
+            .collect();
+        let ts: Vec<f64> = grid.iter().map(|q| q.to_f64()).collect();
+        let g = grid_error(&c, &pw, &ts);
+        assert!(
+            (g - e.sampled).abs() <= 1e-12 * e.sampled,
+            "{g} vs {}",
+            e.sampled
+        );
+        assert!(g <= e.max, "{g} > {}", e.max);
+        let (lo, hi) = certified_grid_error(
+            |bits| curve.compile::<Float>(&bits),
+            (
+                &BigRational::from_integer(0.into()),
+                &BigRational::from_integer(1.into()),
+            ),
+            n,
+            4,
+            &FreeParameters::zero(4, &()),
+            &grid,
+            (64, 128),
+        )
+        .unwrap();
+        assert!((lo.to_f64() - g).abs() <= 1e-9 * g);
+        // The two precisions agree to the lower one's noise on a curve of size 1: 2^(10−64).
+        assert!(
+            (hi.clone() - &lo).abs().to_f64() <= 2f64.powi(10 - 64),
+            "{lo} vs {hi}"
+        );
+    }
 }
