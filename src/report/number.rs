@@ -73,3 +73,16 @@ mod tests {
         assert_eq!(certified(&few, 9), few.text);
     }
 }
+
+/// A printed cell marked by how it compares with the computed value, from the difference in
+/// units of its last printed digit: "✓" within half a unit (it is the rounded value), "≈"
+/// within one unit (the last digit differs), "✗" beyond; unmarked when there is no computed
+/// value.
+pub fn marked(printed: &str, units: Option<f64>) -> String {
+    match units {
+        Some(u) if u.abs() <= 0.5 => format!("{printed} ✓"),
+        Some(u) if u.abs() <= 1.0 => format!("{printed} ≈"),
+        Some(u) if u.is_finite() => format!("{printed} ✗"),
+        _ => printed.to_string(),
+    }
+}

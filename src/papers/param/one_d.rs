@@ -24,6 +24,14 @@ pub(crate) fn rounds_to(x: &Float, printed: &str) -> bool {
     (x.clone() - &p).abs() <= half_unit
 }
 
+/// The difference of `x` from the printed decimal in units of its last printed digit.
+pub(crate) fn printed_units(x: &Float, printed: &str) -> f64 {
+    let decimals = printed.split_once('.').map_or(0, |(_, f)| f.len()) as i32;
+    let unit: BigRational = num_traits::Pow::pow(BigRational::from_integer(10.into()), -decimals);
+    let diff = x.clone() - &Float::from_rational(&num(printed), &x.prec());
+    (diff.abs() / &Float::from_rational(&unit, &x.prec())).to_f64()
+}
+
 /// A computed column against a printed one.
 pub(crate) struct ColumnComparison {
     /// Entries within half a unit of their last printed decimal.
@@ -56,13 +64,7 @@ pub(crate) fn compare_with_printed(column: &[Float], printed: &[&str]) -> Column
     let largest_units = column
         .iter()
         .zip(printed)
-        .map(|(x, s)| {
-            let decimals = s.split_once('.').map_or(0, |(_, f)| f.len()) as i32;
-            let unit: BigRational =
-                num_traits::Pow::pow(BigRational::from_integer(10.into()), -decimals);
-            let diff = x.clone() - &Float::from_rational(&num(s), &x.prec());
-            (diff.abs() / &Float::from_rational(&unit, &x.prec())).to_f64()
-        })
+        .map(|(x, s)| printed_units(x, s))
         .fold(0.0, f64::max);
     ColumnComparison {
         agree,

@@ -2,15 +2,18 @@
 
 use super::data::{TABLE1, TABLE3, TABLE6, TABLE7};
 use super::geometry::{four, CornerCurves, H1Row, CORNER};
-use super::one_d::TableOne;
+use super::one_d::{printed_units, TableOne};
 use super::plane::PlaneSection;
-use super::robot::{RobotSection, NAMES};
+use super::robot::{two_digit_units, RobotSection, NAMES};
 use super::{figures, Results, ID, NOT_CHECKED, SHORT, TITLE};
 use crate::ledger::{Claim, PaperOutput};
-use crate::report::number::sig as fmt;
+use crate::report::number::{marked, sig as fmt};
 use crate::report::{paper_output, table};
 use crate::scalar::certify::format_float_digits;
 use crate::scalar::{Field, Float};
+
+/// How the printed cells of the tables are marked.
+const MARKS: &str = "Printed cells are marked ✓ when the computed value rounds to them, ≈ when only their last digit differs (within one unit), ✗ beyond.\n\n";
 
 fn figure_file(n: u32) -> String {
     super::super::figure_file(ID, n)
@@ -92,11 +95,15 @@ fn plane(p: &PlaneSection, figures: &mut Vec<(String, String)>) -> String {
         .map(|i| {
             let mut row = vec![
                 i.to_string(),
-                TABLE3[i].0.into(),
+                marked(TABLE3[i].0, Some(printed_units(&p.chord[i], TABLE3[i].0))),
                 format_float_digits(&p.chord[i], 6),
             ];
             for (c, col) in p.columns.iter().enumerate() {
-                row.push([TABLE3[i].1, TABLE3[i].2][c].into());
+                let printed = [TABLE3[i].1, TABLE3[i].2][c];
+                row.push(marked(
+                    printed,
+                    col.as_ref().map(|k| printed_units(&k.exact[i], printed)),
+                ));
                 row.push(
                     col.as_ref()
                         .map_or("—".into(), |k| format_float_digits(&k.exact[i], 6)),
@@ -105,6 +112,7 @@ fn plane(p: &PlaneSection, figures: &mut Vec<(String, String)>) -> String {
             row
         })
         .collect();
+    md.push_str(MARKS);
     md.push_str(&table(
         &[
             "i",
@@ -178,11 +186,19 @@ fn robot(r: &RobotSection) -> String {
         .map(|i| {
             vec![
                 i.to_string(),
-                TABLE6[i][0].into(),
+                marked(TABLE6[i][0], Some(printed_units(&r.chord[i], TABLE6[i][0]))),
                 format_float_digits(&r.chord[i], 6),
-                TABLE6[i][1].into(),
+                marked(
+                    TABLE6[i][1],
+                    Some(printed_units(&r.work_centre[i], TABLE6[i][1])),
+                ),
                 format_float_digits(&r.work_centre[i], 6),
-                TABLE6[i][2].into(),
+                marked(
+                    TABLE6[i][2],
+                    r.approx
+                        .get(i)
+                        .map(|x| printed_units(&Float::with_val(53, *x), TABLE6[i][2])),
+                ),
                 r.approx.get(i).map_or("—".into(), |x| fmt(*x, 6)),
             ]
         })
@@ -203,7 +219,11 @@ fn robot(r: &RobotSection) -> String {
         };
         body.push(row(
             format!("{} published", NAMES[c]),
-            TABLE7[c].iter().map(|s| s.to_string()).collect(),
+            TABLE7[c]
+                .iter()
+                .zip(&r.from_printed[c])
+                .map(|(s, x)| marked(s, Some(two_digit_units(*x, s))))
+                .collect(),
         ));
         body.push(row(
             format!("{} computed (printed t)", NAMES[c]),
@@ -224,7 +244,7 @@ fn robot(r: &RobotSection) -> String {
         "axis 6",
     ];
     format!(
-        "## Tables VI–VII: the six-axis robot example\n\n{}\n### Table VII: max |d²θ_j/dt²| on [0, 1]\n\n{}\n",
+        "## Tables VI–VII: the six-axis robot example\n\n{MARKS}{}\n### Table VII: max |d²θ_j/dt²| on [0, 1]\n\n{}\n",
         table(&headers6, &rows),
         table(&headers7, &body)
     )

@@ -58,7 +58,7 @@ fn two_digit_unit(printed: &str) -> f64 {
 
 /// The difference of `x` from the printed value in units of its second significant digit
 /// (within ½: `x` rounds to it, e.g. 314 → "310").
-fn two_digit_units(x: f64, printed: &str) -> f64 {
+pub fn two_digit_units(x: f64, printed: &str) -> f64 {
     (x - num(printed).to_f64()).abs() / two_digit_unit(printed)
 }
 

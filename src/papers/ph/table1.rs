@@ -138,7 +138,7 @@ impl ToF64Lossy for BigRational {
 
 /// A printed Table 1 cell against a computed value: the difference in units of its last
 /// printed digit.
-fn units_off(printed: &str, ours: &Float) -> Option<f64> {
+pub fn units_off(printed: &str, ours: &Float) -> Option<f64> {
     let (value, unit) = printed_value(printed)?;
     let ours = Field::to_rational(ours)?;
     Some(((ours - value) / unit).to_f64_lossy())
