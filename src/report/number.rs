@@ -30,6 +30,19 @@ pub fn certified(c: &Certified, max_digits: u32) -> String {
     }
 }
 
+/// A printed cell marked by how it compares with the computed value, from the difference in
+/// units of its last printed digit: "✓" within half a unit (it is the rounded value), "≈"
+/// within one unit (the last digit differs), "✗" beyond; unmarked when there is no computed
+/// value.
+pub fn marked(printed: &str, units: Option<f64>) -> String {
+    match units {
+        Some(u) if u.abs() <= 0.5 => format!("{printed} ✓"),
+        Some(u) if u.abs() <= 1.0 => format!("{printed} ≈"),
+        Some(u) if u.is_finite() => format!("{printed} ✗"),
+        _ => printed.to_string(),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -72,17 +85,13 @@ mod tests {
         );
         assert_eq!(certified(&few, 9), few.text);
     }
-}
 
-/// A printed cell marked by how it compares with the computed value, from the difference in
-/// units of its last printed digit: "✓" within half a unit (it is the rounded value), "≈"
-/// within one unit (the last digit differs), "✗" beyond; unmarked when there is no computed
-/// value.
-pub fn marked(printed: &str, units: Option<f64>) -> String {
-    match units {
-        Some(u) if u.abs() <= 0.5 => format!("{printed} ✓"),
-        Some(u) if u.abs() <= 1.0 => format!("{printed} ≈"),
-        Some(u) if u.is_finite() => format!("{printed} ✗"),
-        _ => printed.to_string(),
+    #[test]
+    fn cells_are_marked_by_units_of_the_last_digit() {
+        assert_eq!(marked("0.6586", Some(0.4)), "0.6586 ✓");
+        assert_eq!(marked("0.6586", Some(-0.51)), "0.6586 ≈");
+        assert_eq!(marked("470", Some(3.5)), "470 ✗");
+        assert_eq!(marked("-", None), "-");
+        assert_eq!(marked("1", Some(f64::NAN)), "1");
     }
 }

@@ -130,6 +130,26 @@ fn plane(p: &PlaneSection, figures: &mut Vec<(String, String)>) -> String {
          in f64 from chord length (Eq. 30) and refined by Newton's method on the optimality system at 128 and 256 bits (certified; 6 \
          decimals shown).\n\n",
     );
+    md.push_str(&second_derivatives(p));
+    md.push_str(&format!("\n![Fig. 2](./{ID}_fig2.svg)\n\n"));
+    for (n, (name, t)) in p.parametrizations.iter().enumerate() {
+        let file = figure_file(n as u32 + 3);
+        md.push_str(&format!(
+            "![Fig. {}: components with {name}](./{file})\n\n",
+            n + 3
+        ));
+        figures.push((file, figures::component_figure(name, t, &p.data)));
+    }
+    if let Some(ex) = &p.columns[0] {
+        let t: Vec<f64> = ex.exact.iter().map(Field::to_f64).collect();
+        figures.push((figure_file(2), figures::figure2(&t, &p.data)));
+    }
+    md
+}
+
+/// Figs. 3–5 as numbers: the component second derivatives per parametrization.
+fn second_derivatives(p: &PlaneSection) -> String {
+    let mut md = String::new();
     let stat_rows: Vec<Vec<String>> = p
         .parametrizations
         .iter()
@@ -155,19 +175,6 @@ fn plane(p: &PlaneSection, figures: &mut Vec<(String, String)>) -> String {
         ],
         &stat_rows,
     ));
-    md.push_str(&format!("\n![Fig. 2](./{ID}_fig2.svg)\n\n"));
-    for (n, (name, t)) in p.parametrizations.iter().enumerate() {
-        let file = figure_file(n as u32 + 3);
-        md.push_str(&format!(
-            "![Fig. {}: components with {name}](./{file})\n\n",
-            n + 3
-        ));
-        figures.push((file, figures::component_figure(name, t, &p.data)));
-    }
-    if let Some(ex) = &p.columns[0] {
-        let t: Vec<f64> = ex.exact.iter().map(Field::to_f64).collect();
-        figures.push((figure_file(2), figures::figure2(&t, &p.data)));
-    }
     md
 }
 

@@ -154,6 +154,67 @@ fn ratio_interval(x: &str, y: &str) -> Option<(f64, f64)> {
     Some(((x_lo / y_hi).to_f64_lossy(), (x_hi / y_lo).to_f64_lossy()))
 }
 
+/// The evidence of one Table 1 row: every number its verdict rests on.
+#[allow(clippy::too_many_arguments)]
+fn row_evidence(
+    row: &Row,
+    grid: &(Float, Float),
+    printed: &(usize, &str, &str),
+    (true_units, grid_units): (f64, f64),
+    implied_error: Option<(f64, f64)>,
+    error_verdict: Verdict,
+    (ratio_units, grid_ratio, grid_ratio_units): (Option<f64>, Option<&Float>, Option<f64>),
+    printed_ratio: Option<(f64, f64)>,
+    ratio_ok: bool,
+) -> String {
+    let (_, p_err, p_ratio) = *printed;
+    let cert = row.error.certified();
+    let inside = |x: f64, (lo, hi): (f64, f64)| lo <= x && x <= hi;
+    let printed_err = printed_value(p_err).map_or(f64::NAN, |(v, _)| v.to_f64_lossy());
+    let mut evidence = format!(
+        "true maximum over ξ of ‖γ − p‖ ({DEFAULT_SAMPLES} sample intervals per segment, each local maximum refined by Newton; {BITS} bits, \
+         recomputed at {HI_BITS} bits: {} digits agree) and, as the authors' code measures it, the maximum over {PAPER_GRID_PER_SEGMENT}·N \
+         points of linspace(1e-6, 1) (phodcos.py, evaluate_parameterization, n_eval = 100 in examples/hermite_interpolation.py; certified \
+         the same way). Error: printed {p_err}; true maximum {} ({true_units:+.2} units of the last printed digit); grid maximum {} \
+         ({grid_units:+.2} units).",
+        cert.digits,
+        format_float_digits(&row.error.hi, 6),
+        format_float_digits(&grid.1, 6),
+    );
+    if error_verdict == Verdict::Discrepancy {
+        let sampled_units = units_off(p_err, &row.error.sampled).unwrap_or(f64::NAN);
+        evidence.push_str(&format!(
+            " For comparison only: our own search grid ({DEFAULT_SAMPLES} intervals per segment, aligned with the segments, fixed for \
+             locating maxima) has maximum {} ({sampled_units:+.2} units); the paper does not say which grid its Table 1 used, so \
+             this does not decide the verdict.",
+            format_float_digits(&row.error.sampled, 6)
+        ));
+    }
+    if let Some((lo, hi)) = implied_error {
+        evidence.push_str(&format!(
+            " Previous printed error ÷ printed ratio allows E in [{lo:.5e}, {hi:.5e}]: the printed error {} it{}.",
+            if inside(printed_err, (lo, hi)) { "lies in" } else { "contradicts" },
+            if error_verdict == Verdict::Typo {
+                format!("; our value lies in it, so the printed error is garbled and the reading used is the value its ratio column gives ({:.4e})", (lo + hi) / 2.0)
+            } else {
+                String::new()
+            }
+        ));
+    }
+    if row.ratio.is_some() {
+        evidence.push_str(&format!(
+            " Ratio: printed {p_ratio}; ours {} ({:+.2} units); grid {} ({:+.2} units); the printed errors allow {}{}.",
+            row.ratio.as_ref().map_or("–".into(), |(_, hi)| format_float_digits(hi, 6)),
+            ratio_units.unwrap_or(f64::NAN),
+            grid_ratio.as_ref().map_or("–".into(), |r| format_float_digits(r, 6)),
+            grid_ratio_units.unwrap_or(f64::NAN),
+            printed_ratio.map_or("–".into(), |(lo, hi)| format!("[{lo:.4}, {hi:.4}]")),
+            if ratio_ok { "" } else { " — the printed ratio agrees with none of them" }
+        ));
+    }
+    evidence
+}
+
 /// The verdict of one printed row and its evidence.
 ///
 /// The error cell: within half a unit of the last printed digit of the certified true maximum
@@ -211,47 +272,17 @@ pub fn row_outcome(
     } else {
         error_verdict.max(Verdict::Discrepancy)
     };
-    let mut evidence = format!(
-        "true maximum over ξ of ‖γ − p‖ ({DEFAULT_SAMPLES} sample intervals per segment, each local maximum refined by Newton; {BITS} bits, \
-         recomputed at {HI_BITS} bits: {} digits agree) and, as the authors' code measures it, the maximum over {PAPER_GRID_PER_SEGMENT}·N \
-         points of linspace(1e-6, 1) (phodcos.py, evaluate_parameterization, n_eval = 100 in examples/hermite_interpolation.py; certified \
-         the same way). Error: printed {p_err}; true maximum {} ({true_units:+.2} units of the last printed digit); grid maximum {} \
-         ({grid_units:+.2} units).",
-        cert.digits,
-        format_float_digits(&row.error.hi, 6),
-        format_float_digits(&grid.1, 6),
+    let evidence = row_evidence(
+        row,
+        grid,
+        printed,
+        (true_units, grid_units),
+        implied_error,
+        error_verdict,
+        (ratio_units, grid_ratio.as_ref(), grid_ratio_units),
+        printed_ratio,
+        ratio_ok,
     );
-    if error_verdict == Verdict::Discrepancy {
-        let sampled_units = units_off(p_err, &row.error.sampled).unwrap_or(f64::NAN);
-        evidence.push_str(&format!(
-            " For comparison only: our own search grid ({DEFAULT_SAMPLES} intervals per segment, aligned with the segments, fixed for \
-             locating maxima) has maximum {} ({sampled_units:+.2} units); the paper does not say which grid its Table 1 used, so \
-             this does not decide the verdict.",
-            format_float_digits(&row.error.sampled, 6)
-        ));
-    }
-    if let Some((lo, hi)) = implied_error {
-        evidence.push_str(&format!(
-            " Previous printed error ÷ printed ratio allows E in [{lo:.5e}, {hi:.5e}]: the printed error {} it{}.",
-            if inside(printed_err, (lo, hi)) { "lies in" } else { "contradicts" },
-            if error_verdict == Verdict::Typo {
-                format!("; our value lies in it, so the printed error is garbled and the reading used is the value its ratio column gives ({:.4e})", (lo + hi) / 2.0)
-            } else {
-                String::new()
-            }
-        ));
-    }
-    if row.ratio.is_some() {
-        evidence.push_str(&format!(
-            " Ratio: printed {p_ratio}; ours {} ({:+.2} units); grid {} ({:+.2} units); the printed errors allow {}{}.",
-            row.ratio.as_ref().map_or("–".into(), |(_, hi)| format_float_digits(hi, 6)),
-            ratio_units.unwrap_or(f64::NAN),
-            grid_ratio.as_ref().map_or("–".into(), |r| format_float_digits(r, 6)),
-            grid_ratio_units.unwrap_or(f64::NAN),
-            printed_ratio.map_or("–".into(), |(lo, hi)| format!("[{lo:.4}, {hi:.4}]")),
-            if ratio_ok { "" } else { " — the printed ratio agrees with none of them" }
-        ));
-    }
     let reproduced = match &row.ratio_certified() {
         Some(r) => format!("error {}, ratio {}", cert.text, r.text),
         None => format!("error {}", cert.text),
