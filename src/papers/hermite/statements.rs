@@ -1,0 +1,169 @@
+//! Statements of the prose of paper 000 that no equation number carries: the meaning of n in
+//! Sec. 3, the first-derivative relation of Sec. 3.1, the order count of Sec. 2.3 and the
+//! accelerations of Fig. 2. All exact in rationals.
+
+use super::super::{Outcome, Verdict};
+use crate::algo::hermite::HermiteData;
+use crate::numeric::poly::{binomial, Bernstein};
+use crate::scalar::{BigRational, Field};
+
+type Q = BigRational;
+
+fn q(n: i64) -> Q {
+    Q::from_integer(n.into())
+}
+
+/// Eqs. 16–17 with the symbol n of Eqs. 12–15 set to `n`: the control points the start data
+/// fix (p_0 … p_m) and those the end data fix (p_(n−m) … p_n), on an interval of length `t`.
+fn eq16_17(start: &[Q], end: &[Q], t: &Q, n: usize) -> (Vec<Q>, Vec<Q>) {
+    // q_j = T^j (n−j)!/n! x^(j): the scaled derivatives of Eq. 16 (Q^0) and Eq. 17 (Q^1).
+    let scaled = |x: &[Q]| -> Vec<Q> {
+        let mut factor = q(1);
+        x.iter()
+            .enumerate()
+            .map(|(j, v)| {
+                if j > 0 {
+                    factor = factor.clone() * t / q((n + 1 - j) as i64);
+                }
+                v.clone() * &factor
+            })
+            .collect()
+    };
+    let (qs, qe) = (scaled(start), scaled(end));
+    let fixed = |qv: &[Q], sign: i64| -> Vec<Q> {
+        (0..qv.len())
+            .map(|k| {
+                (0..=k).fold(q(0), |acc, j| {
+                    let s = if j % 2 == 1 { sign } else { 1 };
+                    acc + qv[j].clone() * q(s) * Q::from_integer(binomial(k, j))
+                })
+            })
+            .collect()
+    };
+    (fixed(&qs, 1), fixed(&qe, -1).into_iter().rev().collect())
+}
+
+/// Sec. 3: "n = 2(m + 1)" for the map f : R^n → R^n, while Eqs. 12–18 use n as the degree.
+pub fn n_is_count(printed_fig2: &str) -> Outcome {
+    let (start, end, t) = (vec![q(0), q(0), q(0)], vec![q(1), q(1), q(0)], q(1));
+    let m = 2;
+    let show = |v: &[Q]| {
+        v.iter()
+            .map(|x| x.to_string())
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let (s6, e6) = eq16_17(&start, &end, &t, 2 * (m + 1));
+    let (s5, e5) = eq16_17(&start, &end, &t, 2 * m + 1);
+    let as_degree_5: Vec<Q> = s5.iter().chain(&e5).cloned().collect();
+    let printed: Vec<Option<Q>> = printed_fig2
+        .split_whitespace()
+        .map(|s| crate::scalar::parse::parse_rational(s).ok())
+        .collect();
+    let degree_5_matches = printed.len() == as_degree_5.len()
+        && printed
+            .iter()
+            .zip(&as_degree_5)
+            .all(|(p, c)| p.as_ref() == Some(c));
+    Outcome::new(
+        format!(
+            "with n = 2(m+1) = 6 in Eqs. 14–17 the Fig. 2 data fix p_0…p_2 = {} and p_4…p_6 = {}, leaving p_3 free (7 control points, 6 conditions); with n = 2m+1 = 5 they give [{}], the printed vector",
+            show(&s6),
+            show(&e6),
+            show(&as_degree_5)
+        ),
+        "rational",
+        if degree_5_matches { Verdict::Typo } else { Verdict::Discrepancy },
+        "Sec. 3 says f : H ∈ R^n → P ∈ R^n with n = 2(m+1): there n counts the control points. Eqs. 12–18 use n as the degree (n!/(n−j)!, \
+         p_0…p_n). Eqs. 16–17 computed exactly with each value for the Fig. 2 data (m = 2, T = 1). Reading used: n is the degree 2m+1 in \
+         Eqs. 12–18 and the dimension of H and P is n+1 = 2(m+1); one symbol with two meanings, which the printed Fig. 2 vector settles",
+    )
+}
+
+/// Sec. 3.1: "x_0^(1) = nΔ¹(p_0) = n(p_1 − p_0)", printed without Eq. 14's 1/(t_1 − t_0).
+pub fn first_derivative_factor() -> Outcome {
+    // A documented instance on an interval of length 3.
+    let data = HermiteData::new(vec![q(1), q(2)], vec![q(4), q(-1)], q(0), q(3));
+    let Ok(curve) = data.and_then(|d| d.solve()) else {
+        return Outcome::new(
+            "",
+            "rational",
+            Verdict::Failed,
+            "the instance did not solve",
+        );
+    };
+    let n = curve.degree();
+    let p = &curve.control_points;
+    let printed = q(n as i64) * (p[1].clone() - &p[0]);
+    let actual = curve.derivative_at_start(1);
+    let with_factor = printed.clone() / q(3);
+    let verdict = match (printed == actual, with_factor == actual) {
+        (true, _) => Verdict::Reproduced,
+        (false, true) => Verdict::Typo,
+        (false, false) => Verdict::Discrepancy,
+    };
+    Outcome::new(
+        format!("on [0, 3]: n(p_1 − p_0) = {printed}, the derivative x_0^(1) = {actual}; n(p_1 − p_0)/(t_1 − t_0) = {with_factor}"),
+        "rational",
+        verdict,
+        "start (x, x′) = (1, 2), end (4, −1) on [0, 3], solved exactly (cubic). The prose drops the factor 1/(t_1 − t_0) that Eq. 14, two \
+         lines above, carries; as printed the relation holds only on intervals of length 1. Reading used: Eq. 14's, which holds exactly",
+    )
+}
+
+/// Sec. 2.3: each derivative constraint raises the order by two; the tenth derivative gives
+/// order twenty-one.
+pub fn order_count() -> Outcome {
+    let mut degrees = Vec::new();
+    for m in 0..=10usize {
+        let start: Vec<Q> = (0..=m).map(|j| q(j as i64 + 1)).collect();
+        let end: Vec<Q> = (0..=m).map(|j| q(2 * j as i64 - 3)).collect();
+        match HermiteData::new(start, end, q(0), q(1)).and_then(|d| d.solve()) {
+            Ok(c) => degrees.push(c.degree()),
+            Err(_) => degrees.push(usize::MAX),
+        }
+    }
+    let steps_of_two = degrees.windows(2).all(|w| w[1] == w[0] + 2);
+    let last = degrees.last().copied().unwrap_or(0);
+    Outcome::new(
+        format!("degrees for m = 0…10: {degrees:?}; up to the tenth derivative: {last}"),
+        "rational",
+        Verdict::holds(steps_of_two && last == 21),
+        "the exact Hermite map solved for constraints up to the m-th derivative at both ends, m = 0…10 (unique solutions): the degree is \
+         2m+1, two more per derivative, 21 for m = 10; the paper's \"order\" is this degree",
+    )
+}
+
+/// The extremes of x″ over [0, T] of an exact curve, sampled at 1001 points in rationals.
+fn acceleration_range(c: &Bernstein<Q>) -> (Q, Q) {
+    let a = c.nth_derivative(2);
+    let (t0, t1) = (a.t0.clone(), a.t1.clone());
+    (0..=1000)
+        .map(|i| a.eval(&(t0.clone() + (t1.clone() - &t0) * Q::new(i.into(), 1000.into()))))
+        .fold((q(0), q(0)), |(lo, hi), v| {
+            (
+                if v < lo { v.clone() } else { lo },
+                if v > hi { v } else { hi },
+            )
+        })
+}
+
+/// Fig. 2: "the lower duration curve must have … larger acceleration (and deceleration)".
+pub fn shorter_accelerates_more(fast: &Bernstein<Q>, slow: &Bernstein<Q>) -> Outcome {
+    let ((f_lo, f_hi), (s_lo, s_hi)) = (acceleration_range(fast), acceleration_range(slow));
+    let holds = f_hi > s_hi && f_lo < s_lo;
+    let f = |x: &Q| x.to_f64();
+    Outcome::new(
+        format!(
+            "duration 1: x″ from {} to {}; duration 2: from {} to {}",
+            f(&f_lo),
+            f(&f_hi),
+            f(&s_lo),
+            f(&s_hi)
+        ),
+        "rational",
+        if holds { Verdict::Reproduced } else { Verdict::Discrepancy },
+        "the exact Fig. 2 curves (H = [0 0 0 | 1 1 0]); x″ evaluated exactly at 1001 equally spaced times of each interval; criterion: the \
+         shorter curve's largest acceleration is larger and its largest deceleration (most negative x″) more negative",
+    )
+}
