@@ -11,7 +11,7 @@ use crate::scalar::certify::{certify, Certified};
 use crate::scalar::{Field, Float};
 
 /// The two components (x, y) in a number type.
-fn components<T: Field>(ctx: &T::Ctx) -> Vec<Vec<T>> {
+pub(crate) fn components<T: Field>(ctx: &T::Ctx) -> Vec<Vec<T>> {
     vec![
         TABLE2
             .iter()
