@@ -589,6 +589,44 @@ pub fn grid_error<T: Real, C: Curve<T> + ?Sized>(curve: &C, pw: &PiecewisePh<T>,
         .fold(T::zero_in(&pw.a.ctx()), |m, d| if d > m { d } else { m })
 }
 
+/// A uniform piecewise conversion of `curve` on [a, b] (given exactly) at `bits`, without the
+/// roll correction (positions do not depend on it).
+fn convert_at<C: Curve<Float>>(
+    curve: &C,
+    (a, b): (&BigRational, &BigRational),
+    segments: usize,
+    m: usize,
+    free: &FreeParameters<BigRational>,
+    bits: u32,
+) -> Result<PiecewisePh<Float>, PhHermiteError> {
+    let (a, b) = (
+        Float::from_rational(a, &bits),
+        Float::from_rational(b, &bits),
+    );
+    let free = free.map(|x| Float::from_rational(x, &bits));
+    convert(curve, &a, &b, segments, m, &free, false)
+}
+
+/// Segment k of that conversion alone, at `bits`: the PH curve, its start t_k and the step h.
+fn segment_at<C: Curve<Float>>(
+    curve: &C,
+    (a, b): (&BigRational, &BigRational),
+    (segments, k): (usize, usize),
+    m: usize,
+    free: &FreeParameters<BigRational>,
+    bits: u32,
+) -> Result<(PhCurve<Float>, Float, Float), PhHermiteError> {
+    let (a, b) = (
+        Float::from_rational(a, &bits),
+        Float::from_rational(b, &bits),
+    );
+    let free = free.map(|x| Float::from_rational(x, &bits));
+    let h = (b.clone() - &a) / &Float::from_i64(segments as i64, &bits);
+    let jet_at = |j: usize| segment_jet(curve, &knot(&a, &b, segments, j), &h, m);
+    let seg = interpolate(&HermiteData::from_jets(&jet_at(k), &jet_at(k + 1)), &free)?;
+    Ok((seg, knot(&a, &b, segments, k), h))
+}
+
 /// The maximum of ‖γ − p‖ over the grid `ts` of [a, b], certified like [`certified_error`]:
 /// every point at `bits`, then the points whose distance comes within the evaluation noise of
 /// the largest (2^(10−bits) relative to the curve's size) again at `hi_bits`, each on its
@@ -602,28 +640,16 @@ pub fn certified_grid_error<C: Curve<Float>>(
     ts: &[BigRational],
     (bits, hi_bits): (u32, u32),
 ) -> Result<(Float, Float), PhHermiteError> {
-    let (a, b) = interval;
     let lo_curve = make(bits);
-    let (a_lo, b_lo) = (
-        Float::from_rational(a, &bits),
-        Float::from_rational(b, &bits),
-    );
-    let free_lo = free.map(|x| Float::from_rational(x, &bits));
-    let pw = convert(&lo_curve, &a_lo, &b_lo, segments, m, &free_lo, false)?;
+    let pw = convert_at(&lo_curve, interval, segments, m, free, bits)?;
     let ts_lo: Vec<Float> = ts.iter().map(|q| Float::from_rational(q, &bits)).collect();
     let d = grid_distances(&lo_curve, &pw, &ts_lo);
     let max_lo = d
         .iter()
         .fold(Float::new(bits), |m, x| if *x > m { x.clone() } else { m });
-    let size = vec3::norm(&lo_curve.jet(&a_lo, 0)[0]).max(&Float::with_val(bits, 1));
+    let size = vec3::norm(&lo_curve.jet(&pw.a, 0)[0]).max(&Float::with_val(bits, 1));
     let noise = size * Float::with_val(bits, Float::i_exp(1, 10 - bits as i32));
     let hi_curve = make(hi_bits);
-    let (a_hi, b_hi) = (
-        Float::from_rational(a, &hi_bits),
-        Float::from_rational(b, &hi_bits),
-    );
-    let free_hi = free.map(|x| Float::from_rational(x, &hi_bits));
-    let h = (b_hi.clone() - &a_hi) / &Float::from_i64(segments as i64, &hi_bits);
     let mut max_hi = Float::new(hi_bits);
     for (i, _) in d
         .iter()
@@ -631,15 +657,9 @@ pub fn certified_grid_error<C: Curve<Float>>(
         .filter(|(_, x)| **x >= max_lo.clone() - &noise)
     {
         let (k, _) = pw.locate(&ts_lo[i]);
-        let t0 = knot(&a_hi, &b_hi, segments, k);
-        let jet_at = |j: usize| segment_jet(&hi_curve, &knot(&a_hi, &b_hi, segments, j), &h, m);
-        let seg = interpolate(
-            &HermiteData::from_jets(&jet_at(k), &jet_at(k + 1)),
-            &free_hi,
-        )?;
+        let (seg, t0, h) = segment_at(&hi_curve, interval, (segments, k), m, free, hi_bits)?;
         // ξ exactly: (t − t_k)/h from the rational t.
-        let t = Float::from_rational(&ts[i], &hi_bits);
-        let xi_hi = (t - &t0) / &h;
+        let xi_hi = (Float::from_rational(&ts[i], &hi_bits) - &t0) / &h;
         let value = SegmentDistance::new(&hi_curve, &seg, &t0, &h)
             .value(&xi_hi)
             .sqrt();
@@ -680,35 +700,14 @@ pub fn certified_error<C: Curve<Float>>(
     hi_bits: u32,
 ) -> Result<CertifiedError, PhHermiteError> {
     let lo_curve = make(bits);
-    let (a_lo, b_lo) = (
-        Float::from_rational(a, &bits),
-        Float::from_rational(b, &bits),
-    );
-    let free_lo = free.map(|x| Float::from_rational(x, &bits));
-    let pw = convert(&lo_curve, &a_lo, &b_lo, segments, m, &free_lo, false)?;
+    let pw = convert_at(&lo_curve, (a, b), segments, m, free, bits)?;
     let e = conversion_error(&lo_curve, &pw, DEFAULT_SAMPLES);
-
     let hi_curve = make(hi_bits);
-    let (a_hi, b_hi) = (
-        Float::from_rational(a, &hi_bits),
-        Float::from_rational(b, &hi_bits),
-    );
-    let free_hi = free.map(|x| Float::from_rational(x, &hi_bits));
     let k = e.segment;
-    let h = (b_hi.clone() - &a_hi) / &Float::from_i64(segments as i64, &hi_bits);
-    let jet_at = |j: usize| segment_jet(&hi_curve, &knot(&a_hi, &b_hi, segments, j), &h, m);
-    let data = HermiteData::from_jets(&jet_at(k), &jet_at(k + 1));
-    let seg = interpolate(&data, &free_hi)?;
+    let (seg, t0, h) = segment_at(&hi_curve, (a, b), (segments, k), m, free, hi_bits)?;
     let xi_hi = Float::with_val(hi_bits, &e.xi);
     let width = Float::from_ratio(1, DEFAULT_SAMPLES as i64, &hi_bits);
-    let (hi, _) = refine_local_max(
-        &hi_curve,
-        &seg,
-        &knot(&a_hi, &b_hi, segments, k),
-        &h,
-        &xi_hi,
-        &width,
-    );
+    let (hi, _) = refine_local_max(&hi_curve, &seg, &t0, &h, &xi_hi, &width);
     Ok(CertifiedError {
         lo: e.max,
         hi,
