@@ -9,7 +9,7 @@ use super::plane::components;
 use crate::algo::param::descent::descend;
 use crate::algo::param::natural::NaturalCubicSpline;
 use crate::algo::param::objective::{chord_length_spacing, objective, Objective};
-use crate::scalar::{BigRational, Field};
+use crate::scalar::{BigRational, Field, Float};
 
 type Q = BigRational;
 
@@ -89,5 +89,84 @@ pub fn nonincreasing_objective() -> Outcome {
             "gradient projection with exact line search from chord length on the Table II data (α = 1), every iterate h⁽ⁱ⁾ read exactly \
              as rationals and G(h⁽ⁱ⁾) evaluated exactly, so the comparison has no rounding; increases: {increases:?}"
         ),
+    )
+}
+
+/// G(h) as h_i = ε → 0 with the other spacings those of chord length rescaled to sum 1 − ε,
+/// at 256 bits, for ε = 10⁻², 10⁻⁴, …, 10⁻¹⁰.
+fn scaled_objective(z: &[Vec<Float>], i: usize) -> Option<Vec<Float>> {
+    let bits = 256;
+    let chord = chord_length_spacing(z);
+    let others: Float = chord
+        .iter()
+        .enumerate()
+        .filter(|(k, _)| *k != i)
+        .fold(Float::with_val(bits, 0), |acc, (_, x)| acc + x);
+    let ones = vec![Float::with_val(bits, 1); z.len()];
+    (1..=5)
+        .map(|e| {
+            let eps = Float::with_val(bits, rug::ops::Pow::pow(Float::with_val(bits, 10), -2 * e));
+            let rest = (Float::with_val(bits, 1) - &eps) / &others;
+            let h: Vec<Float> = chord
+                .iter()
+                .enumerate()
+                .map(|(k, x)| {
+                    if k == i {
+                        eps.clone()
+                    } else {
+                        x.clone() * &rest
+                    }
+                })
+                .collect();
+            objective(&h, z, &ones, Objective::Exact).ok()
+        })
+        .collect()
+}
+
+/// Sec. 2, Remark (existence): z_i ≠ z_(i+1) makes G infinite as any h_i → 0.
+pub fn existence() -> Outcome {
+    let z = components::<Float>(&256);
+    let mut repeated = z.clone();
+    for c in repeated.iter_mut() {
+        c[10] = c[9].clone(); // points 9 and 10 made equal
+    }
+    // The observed power p of G ~ ε^(−p) over the last decade pair (ε from 1e-8 to 1e-10).
+    let power = |g: &[Float]| {
+        let n = g.len();
+        (g[n - 1].clone() / &g[n - 2]).log10().to_f64() / 2.0
+    };
+    let mut rows = Vec::new();
+    let mut grows = true;
+    for i in [0usize, 9, 18] {
+        let Some(g) = scaled_objective(&z, i) else {
+            return Outcome::new("", "mpfr:256", Verdict::Failed, "a spline did not solve");
+        };
+        // Unbounded: G increases at every step and like a positive power of 1/ε at the end.
+        let increasing = g.windows(2).all(|w| w[1] > w[0]);
+        grows &= increasing && power(&g) > 0.5;
+        rows.push(format!(
+            "h_{} → 0: G = {:.3e} at ε = 1e-10, G ~ ε^(−{:.3})",
+            i + 1,
+            g[g.len() - 1].to_f64(),
+            power(&g)
+        ));
+    }
+    let Some(gq) = scaled_objective(&repeated, 9) else {
+        return Outcome::new("", "mpfr:256", Verdict::Failed, "a spline did not solve");
+    };
+    let bounded = power(&gq).abs() < 0.01;
+    Outcome::new(
+        format!(
+            "{}; with z_9 = z_10 and h_10 → 0, G → {:.4} (bounded, power {:.1e})",
+            rows.join("; "),
+            gq[gq.len() - 1].to_f64(),
+            power(&gq)
+        ),
+        "mpfr:256",
+        Verdict::holds(grows && bounded),
+        "Table II data, exact objective (31) at 256 bits, h_i = ε = 1e-2, 1e-4, …, 1e-10 with the other spacings those of chord length \
+         rescaled to sum 1 − ε, for the first, a middle and the last interval. Criterion: G increases at every step and grows like a \
+         positive power of 1/ε over the last two decades (the observed power is in the result). The converse shows the assumption matters: with two equal consecutive points the same limit leaves G bounded (its power over \
+         the last decades below 0.01 in modulus)",
     )
 }
