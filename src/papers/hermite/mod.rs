@@ -49,6 +49,7 @@ pub const SPECS: &[ClaimSpec] = &[
     ClaimSpec { id: "hermite.fig5.kappa_table", location: "Sec. 4, Fig. 5; Eq. 10", statement: "the condition number κ2 = σmax/σmin of the transform for m derivatives on the unit interval (Fig. 5)", published: None },
     ClaimSpec { id: "hermite.fig5.kappa_grows", location: "Sec. 4, Fig. 5", statement: "the condition number grows with the number of derivatives", published: None },
     ClaimSpec { id: "hermite.fig5.interval_changes_kappa", location: "Sec. 4, text after Fig. 4", statement: "increasing or decreasing the interval will have an impact on the condition number", published: None },
+    ClaimSpec { id: "hermite.eq4.basis_endpoints", location: "Sec. 2.1, Eqs. 3–4", statement: "the basis on [t0, t1] is Eq. 4, the standard basis at ζ(t) of Eq. 3, and the curve interpolates its first and last control points", published: None },
     ClaimSpec { id: "hermite.sec23.order_count", location: "Sec. 2.3", statement: "each derivative constraint raises the order by two: constraints up to the tenth derivative give order twenty-one", published: Some("twenty-one") },
     ClaimSpec { id: "hermite.sec3.n_is_count", location: "Sec. 3, after Eq. 11", statement: "f : H ∈ R^n → P ∈ R^n with n = 2(m + 1), the n of Eqs. 12–18", published: Some("n = 2(m + 1)") },
     ClaimSpec { id: "hermite.sec31.first_derivative", location: "Sec. 3.1, after Eq. 15", statement: "x_0^(1) = nΔ¹(p_0) = n(p_1 − p_0)", published: Some("x_0^(1) = n(p_1 − p_0)") },
@@ -73,10 +74,6 @@ const NOT_CHECKED: &[(&str, &str)] = &[
     (
         "Fig. 1",
         "an illustration of a Bernstein curve and its control points; the paper gives neither the control points nor any value read from the figure",
-    ),
-    (
-        "Eq. 4, the endpoint properties",
-        "not yet a claim: found missing by reading the paper against the ledger, to be added",
     ),
 ];
 
@@ -121,6 +118,10 @@ pub fn verify() -> PaperOutput {
     ledger.record("hermite.fig5.kappa_table", kappa_table);
     ledger.record("hermite.fig5.kappa_grows", grows);
     ledger.record("hermite.fig5.interval_changes_kappa", interval);
+    ledger.record(
+        "hermite.eq4.basis_endpoints",
+        statements::eq4_basis_and_endpoints(),
+    );
     ledger.record("hermite.sec23.order_count", statements::order_count());
     ledger.record("hermite.sec3.n_is_count", statements::n_is_count(FIG2_FAST));
     ledger.record(

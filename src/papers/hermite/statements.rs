@@ -167,3 +167,43 @@ pub fn shorter_accelerates_more(fast: &Bernstein<Q>, slow: &Bernstein<Q>) -> Out
          shorter curve's largest acceleration is larger and its largest deceleration (most negative x″) more negative",
     )
 }
+
+/// Eq. 4 and the sentence after it: the basis on [t0, t1] is b_k^n(ζ(t)) with Eq. 3's ζ, and
+/// the curve interpolates its first and last control points.
+pub fn eq4_basis_and_endpoints() -> Outcome {
+    let mut rng = super::super::sample::SplitMix64::new(4);
+    let (mut compared, mut bad) = (0usize, Vec::new());
+    for n in 1..=12usize {
+        let points = rng.rationals(n + 1);
+        let (t0, t1) = (Q::new((-3).into(), 2.into()), Q::new(7.into(), 3.into()));
+        let curve = Bernstein::new(points.clone(), t0.clone(), t1.clone());
+        let span = t1.clone() - &t0;
+        for t in [t0.clone(), Q::new(1.into(), 5.into()), t1.clone()] {
+            // Eq. 4: C(n,k)(t1 − t)^(n−k)(t − t0)^k/(t1 − t0)^n, summed against the points.
+            let eq4 = (0..=n).fold(q(0), |acc, k| {
+                let b = Q::from_integer(binomial(n, k))
+                    * crate::scalar::powi(&(t1.clone() - &t), (n - k) as u32)
+                    * crate::scalar::powi(&(t.clone() - &t0), k as u32)
+                    / crate::scalar::powi(&span, n as u32);
+                acc + b * &points[k]
+            });
+            compared += 1;
+            if eq4 != curve.eval(&t) {
+                bad.push(format!("n = {n}, t = {t}"));
+            }
+        }
+        if curve.eval(&t0) != points[0] || curve.eval(&t1) != points[n] {
+            bad.push(format!("n = {n}: endpoints"));
+        }
+    }
+    Outcome::new(
+        format!("Eq. 4 equals de Casteljau's evaluation at ζ(t) at {compared} points, and B(t0) = p_0, B(t1) = p_n, for n = 1…12 ({} failures)", bad.len()),
+        "rational",
+        Verdict::holds(bad.is_empty()),
+        format!(
+            "random rational control points on [−3/2, 7/3], degrees 1…12, at t = t0, 1/5, t1: Eq. 4 summed exactly against the control \
+             points and compared with de Casteljau's algorithm at ζ = (t − t0)/(t1 − t0) (Eq. 3); the endpoint values compared with p_0 \
+             and p_n. Failures: {bad:?}"
+        ),
+    )
+}
