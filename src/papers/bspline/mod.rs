@@ -37,6 +37,7 @@ pub const SPECS: &[ClaimSpec] = &[
     ClaimSpec { id: "bspline.sec41.trajectory", location: "Sec. 4.1, Fig. 1", statement: "the bang-bang x(t) meets x(4) = ẋ(4) = ẍ(4) = 0 and x(2) = 2/3, with the printed closed form", published: None },
     ClaimSpec { id: "bspline.sec42.solution", location: "Sec. 4.2", statement: "the continuity equations at t2 with a+b+c+d = 4 give c = b = √2, a = d = 2−√2", published: Some("a = d = 2 - sqrt(2), b = c = sqrt(2)") },
     ClaimSpec { id: "bspline.sec4.does_better", location: "Sec. 4", statement: "there is a bang-bang control law that does better than the uniform B-spline", published: None },
+    ClaimSpec { id: "bspline.sec5.support", location: "Sec. 5, after the interpolation conditions", statement: "B_3(t_j − i + 1) ≠ 0 if and only if i − 1 < t_j < i + 3", published: None },
     ClaimSpec { id: "bspline.sec5.gram_k3", location: "Sec. 5", statement: "for k = 3, g_ij = ĝ_|i−j| with ĝ0 = 20, ĝ1 = −15, ĝ2 = 6, ĝ3 = −1, ĝi = 0 for i ≥ 4", published: Some("20, -15, 6, -1") },
     ClaimSpec { id: "bspline.sec5.gram_positive_definite", location: "Sec. 5", statement: "the matrix G is positive definite", published: None },
     ClaimSpec { id: "bspline.sec5.gram_closed_form", location: "Sec. 5 (beyond the paper)", statement: "the Gram entries for k = 1…10, and a closed form for them", published: None },
@@ -72,7 +73,7 @@ const NOT_CHECKED: &[(&str, &str)] = &[
         "against the constraint ⟨(2−t)₊², u⟩ = 2ξ; not yet a claim: found missing by reading the paper against the ledger, to be added",
     ),
     (
-        "Sec. 3, B_k for general k and the support of B3(t_j − i + 1)",
+        "Sec. 3, B_k for general k (driving d^k y/dt^k = u)",
         "not yet a claim: found missing by reading the paper against the ledger, to be added",
     ),
 ];
@@ -167,6 +168,7 @@ fn optimal_checks(ledger: &mut Ledger) -> ([QSqrt2; 3], QSqrt2, Option<optimal::
 
 /// Sec. 5: the Gram matrix and the optimal splines.
 fn fitting_checks(ledger: &mut Ledger) -> (Vec<Vec<BigRational>>, Vec<fitting::LimitRow>, String) {
+    ledger.record("bspline.sec5.support", basis::support());
     ledger.record("bspline.sec5.gram_k3", fitting::gram_k3());
     let (pd, _) = fitting::gram_positive_definite();
     ledger.record("bspline.sec5.gram_positive_definite", pd);
