@@ -4,6 +4,7 @@
 
 use super::super::{Outcome, Verdict};
 use crate::algo::hermite::HermiteData;
+use crate::numeric::poly::differences::{anti_difference, backward_anti_difference};
 use crate::numeric::poly::{binomial, Bernstein};
 use crate::scalar::{BigRational, Field};
 
@@ -29,18 +30,11 @@ fn eq16_17(start: &[Q], end: &[Q], t: &Q, n: usize) -> (Vec<Q>, Vec<Q>) {
             })
             .collect()
     };
-    let (qs, qe) = (scaled(start), scaled(end));
-    let fixed = |qv: &[Q], sign: i64| -> Vec<Q> {
-        (0..qv.len())
-            .map(|k| {
-                (0..=k).fold(q(0), |acc, j| {
-                    let s = if j % 2 == 1 { sign } else { 1 };
-                    acc + qv[j].clone() * q(s) * Q::from_integer(binomial(k, j))
-                })
-            })
-            .collect()
-    };
-    (fixed(&qs, 1), fixed(&qe, -1).into_iter().rev().collect())
+    // Eq. 16's Δ^(−j) and Eq. 17's ∇^(−j), as the library has them.
+    (
+        anti_difference(&scaled(start)),
+        backward_anti_difference(&scaled(end)),
+    )
 }
 
 /// Sec. 3: "n = 2(m + 1)" for the map f : R^n → R^n, while Eqs. 12–18 use n as the degree.

@@ -236,13 +236,8 @@ pub fn row_outcome(
     let cert = row.error.certified();
     let true_units = units_off(p_err, &row.error.hi).unwrap_or(f64::INFINITY);
     let grid_units = units_off(p_err, &grid.1).unwrap_or(f64::INFINITY);
-    let implied_error = previous_printed.and_then(|prev| {
-        let ((pv, pu), (rv, ru)) = (printed_value(prev)?, printed_value(p_ratio)?);
-        let half = BigRational::new(1.into(), 2.into());
-        let lo = (pv.clone() - pu.clone() * &half) / (rv.clone() + ru.clone() * &half);
-        let hi = (pv + pu * &half) / (rv - ru * &half);
-        Some((lo.to_f64_lossy(), hi.to_f64_lossy()))
-    });
+    // The error the row's own ratio column implies: previous printed error ÷ printed ratio.
+    let implied_error = previous_printed.and_then(|prev| ratio_interval(prev, p_ratio));
     let inside = |x: f64, (lo, hi): (f64, f64)| lo <= x && x <= hi;
     let printed_err = printed_value(p_err).map_or(f64::NAN, |(v, _)| v.to_f64_lossy());
     let ours = row.error.hi.to_f64();
