@@ -8,6 +8,7 @@
 //!   optimal interpolating (Eq. 14) and smoothing (Eq. 15) control points.
 //! - [`bang_bang`]: the minimum-L∞ control of Sec. 4: switching times and amplitude, and the
 //!   trajectory it drives.
+//! - [`dual`]: the dual certificate of Sec. 4.1 that proves the bang-bang control optimal.
 //!
 //! One algorithm, three number types: the Gram entries of B₃‴ (Sec. 5), exact in rationals,
 //! and the same generic code in f64 and MPFR.
@@ -26,6 +27,7 @@
 
 pub mod bang_bang;
 pub mod cardinal;
+pub mod dual;
 pub mod fit;
 pub mod gram;
 

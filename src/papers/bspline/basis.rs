@@ -185,9 +185,9 @@ pub fn geometric() -> [Outcome; 3] {
         "rational",
         if solved.as_ref() == Some(&want) { Verdict::Reproduced } else { Verdict::Discrepancy },
         "Eqs. 3–5 are linear and homogeneous in (a, b, c, d); with a = 1 the 3×3 system in (b, c, d) was solved by exact \
-         Gaussian elimination (non-singular, so the solution is unique up to the scale a). The equations themselves were \
-         re-derived from the ansatz: B3' continuity at t = 2 gives b + 3a = c + 3d and 2b + 2a = −2c − 2d, and B3(4) = \
-         (7a + b + c + 7d)/3 by integrating the four pieces",
+         Gaussian elimination (non-singular, so the solution is unique up to the scale a). The equations themselves \
+         (b + 3a = c + 3d, 2b + 2a = −2c − 2d, B3(4) = (7a + b + c + 7d)/3) are re-derived from the ansatz in \
+         bspline.sec3.derivation_steps",
     );
     // Eq. 6 as printed, each piece a polynomial in its printed variable u, then moved to the
     // local s = t − j of piece j: u = t on [0,1] (u = s), u = t − 1 on [1,2] (u = s),

@@ -5,6 +5,7 @@
 //! optimal splines (`fitting`).
 
 mod basis;
+mod control;
 mod figures;
 mod fitting;
 mod optimal;
@@ -28,6 +29,8 @@ pub const SPECS: &[ClaimSpec] = &[
     ClaimSpec { id: "bspline.eq2.end_derivatives", location: "Sec. 2, after Eq. 2", statement: "B_k^(l)(0) = 0 and B_k^(l)(k+1) = 0 for l = 0, …, k−1", published: None },
     ClaimSpec { id: "bspline.eq2.smoothness", location: "Sec. 2, after Eq. 2", statement: "B_k is a piecewise polynomial of degree k and k−1 times continuously differentiable", published: None },
     ClaimSpec { id: "bspline.eq2.partition_of_unity", location: "Sec. 2, Eq. 2", statement: "the shifted B-splines form the normalized basis (partition of unity)", published: None },
+    ClaimSpec { id: "bspline.sec2.generated_by_control", location: "Sec. 2, end", statement: "the k-th derivative of B_k is piecewise constant, and d^k y/dt^k = u with that input generates B_k (any k)", published: None },
+    ClaimSpec { id: "bspline.sec3.derivation_steps", location: "Sec. 3, before Eqs. 3–5", statement: "γ = a and α = 2a; B_3' = c(t−T+1)² − 2d(t−T+1) + d on [T−2, T−1]; Eqs. 3–4; B_3 = ((7a+b+c+7d) + d(t−4)³)/3 on [3, 4]", published: Some("γ = a, α = 2a; (7a + b + c + 7d)") },
     ClaimSpec { id: "bspline.sec3.eqs3_5", location: "Sec. 3, Eqs. 3–5", statement: "solving (3)–(5) gives b = −3a, c = 3a, d = −a", published: Some("b = -3a, c = 3a, d = -a") },
     ClaimSpec { id: "bspline.sec3.eq6_is_basis", location: "Sec. 3, Eq. 6", statement: "Eq. 6 is the cubic B-spline, a being a scaling parameter", published: None },
     ClaimSpec { id: "bspline.sec3.eq7", location: "Sec. 3, Eq. 7", statement: "the third derivative is 2a, −6a, 6a, −2a on the four unit intervals", published: Some("2a, -6a, 6a, -2a") },
@@ -35,6 +38,8 @@ pub const SPECS: &[ClaimSpec] = &[
     ClaimSpec { id: "bspline.sec41.uniqueness", location: "Sec. 4.1", statement: "the solution with 4 > r1 > r2 > r3 > 0 is unique", published: None },
     ClaimSpec { id: "bspline.sec41.amplitude", location: "Sec. 4.1", statement: "U = (2+√2)/2 for ξ = 2/3", published: Some("(2 + sqrt(2))/2") },
     ClaimSpec { id: "bspline.sec41.trajectory", location: "Sec. 4.1, Fig. 1", statement: "the bang-bang x(t) meets x(4) = ẋ(4) = ẍ(4) = 0 and x(2) = 2/3, with the printed closed form", published: None },
+    ClaimSpec { id: "bspline.sec41.dual_certificate", location: "Sec. 4.1, Theorem 1", statement: "the bang-bang control u* solves Problem 3: a dual a with ‖Ya‖_L1 = 1 and ⟨Ya, u*⟩ = ‖u*‖∞ exists, so min ‖u‖∞ = max c·a = U", published: None },
+    ClaimSpec { id: "bspline.sec41.dual_objective", location: "Sec. 4.1, dual problem", statement: "by Theorem 1 the dual problem is max ξa₄ subject to ‖Ya‖_L1 ≤ 1", published: Some("max ξ a_4") },
     ClaimSpec { id: "bspline.sec42.solution", location: "Sec. 4.2", statement: "the continuity equations at t2 with a+b+c+d = 4 give c = b = √2, a = d = 2−√2", published: Some("a = d = 2 - sqrt(2), b = c = sqrt(2)") },
     ClaimSpec { id: "bspline.sec4.does_better", location: "Sec. 4", statement: "there is a bang-bang control law that does better than the uniform B-spline", published: None },
     ClaimSpec { id: "bspline.sec5.support", location: "Sec. 5, after the interpolation conditions", statement: "B_3(t_j − i + 1) ≠ 0 if and only if i − 1 < t_j < i + 3", published: None },
@@ -63,18 +68,6 @@ const NOT_CHECKED: &[(&str, &str)] = &[
     (
         "Fig. 2 (the character ‘Ru’ from a cubic spline)",
         "the control points p_i and the cone-and-plane rendering are not given; Sec. 6 is checked on a stroke of our own instead (the Fig. 3 analogue above)",
-    ),
-    (
-        "Sec. 4, L∞ optimality of the bang-bang control (the dual certificate)",
-        "the optimum is verified as the printed solution, not yet proved optimal by constructing the dual certificate; not yet a claim: found missing by reading the paper against the ledger, to be added",
-    ),
-    (
-        "Sec. 4, the printed dual objective max ξa4",
-        "against the constraint ⟨(2−t)₊², u⟩ = 2ξ; not yet a claim: found missing by reading the paper against the ledger, to be added",
-    ),
-    (
-        "Sec. 3, B_k for general k (driving d^k y/dt^k = u)",
-        "not yet a claim: found missing by reading the paper against the ledger, to be added",
     ),
 ];
 
@@ -136,6 +129,11 @@ fn basis_checks(ledger: &mut Ledger) -> (Vec<basis::Table1Row>, [String; 3]) {
     ledger.record("bspline.eq2.end_derivatives", ends);
     ledger.record("bspline.eq2.smoothness", smooth);
     ledger.record("bspline.eq2.partition_of_unity", unity);
+    ledger.record(
+        "bspline.sec2.generated_by_control",
+        control::generated_by_control(),
+    );
+    ledger.record("bspline.sec3.derivation_steps", control::geometric_steps());
     let [eqs, eq6, eq7] = basis::geometric();
     let findings = [
         eqs.reproduced.clone(),
@@ -161,6 +159,9 @@ fn optimal_checks(ledger: &mut Ledger) -> ([QSqrt2; 3], QSqrt2, Option<optimal::
     ledger.record("bspline.sec41.uniqueness", unique);
     ledger.record("bspline.sec41.amplitude", amp);
     ledger.record("bspline.sec41.trajectory", trajectory);
+    let [certificate, objective] = optimal::dual_claims(&printed, &exact_u);
+    ledger.record("bspline.sec41.dual_certificate", certificate);
+    ledger.record("bspline.sec41.dual_objective", objective);
     ledger.record("bspline.sec42.solution", optimal::section42());
     ledger.record("bspline.sec4.does_better", better);
     (printed, exact_u, numeric, finding)
