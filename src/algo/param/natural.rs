@@ -9,7 +9,7 @@
 //! ∫θ″² = Σᵢ hᵢ(mᵢ₋₁² + mᵢ₋₁mᵢ + mᵢ²)/3 = zᵀQᵀM⁻¹Qz (Eq. 31 for one component).
 
 use crate::numeric::quadrature::gauss_legendre4;
-use crate::scalar::{Field, Real};
+use crate::scalar::{max_of, Field, Real};
 
 /// Why a spline cannot be built.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
@@ -129,6 +129,56 @@ impl<T: Field> NaturalCubicSpline<T> {
 }
 
 impl<T: Real> NaturalCubicSpline<T> {
+    /// The values of θ at its interior extrema on each interval (tᵢ₋₁, tᵢ), i = 1…N: θ′ is a
+    /// quadratic on each interval, and its roots (by the cancellation-free quadratic formula)
+    /// strictly inside the interval are the extrema that do not sit at a data point.
+    pub fn interior_extreme_values(&self) -> Vec<Vec<T>> {
+        let (t, m) = (&self.knots, &self.second);
+        let ctx = t[0].ctx();
+        let zero = T::zero_in(&ctx);
+        (1..t.len())
+            .map(|i| {
+                let h = t[i].clone() - &t[i - 1];
+                // θ′(t_{i−1} + v) = A v² + B v + C on [0, h].
+                let a = (m[i].clone() - &m[i - 1]) / &(T::from_i64(2, &ctx) * &h);
+                let b = m[i - 1].clone();
+                let c = self.eval_all(&t[i - 1])[1].clone();
+                quadratic_roots(&a, &b, &c)
+                    .into_iter()
+                    .filter(|v| *v > zero && *v < h)
+                    .map(|v| self.eval_all(&(t[i - 1].clone() + &v))[0].clone())
+                    .collect()
+            })
+            .collect()
+    }
+
+    /// The overshoot on each interval [tᵢ₋₁, tᵢ], i = 1…N: how far θ leaves the range
+    /// [min(zᵢ₋₁, zᵢ), max(zᵢ₋₁, zᵢ)] of its end values (zero when it stays inside). This is
+    /// the overshoot of paper 004, Corollary 3 (i) and Fig. 9: an interpolant without
+    /// overshoot has its extrema at the data.
+    pub fn overshoots(&self) -> Vec<T> {
+        let z = &self.values;
+        let zero = T::zero_in(&z[0].ctx());
+        self.interior_extreme_values()
+            .into_iter()
+            .enumerate()
+            .map(|(k, extremes)| {
+                let (lo, hi) = if z[k] < z[k + 1] {
+                    (&z[k], &z[k + 1])
+                } else {
+                    (&z[k + 1], &z[k])
+                };
+                extremes
+                    .into_iter()
+                    .map(|value| {
+                        let beyond = max_of(value.clone() - hi, lo.clone() - &value);
+                        max_of(beyond, zero.clone())
+                    })
+                    .fold(zero.clone(), max_of)
+            })
+            .collect()
+    }
+
     /// ‖θ − φ‖²_H¹ = ∫ (θ − φ)² + (θ′ − φ′)² over [t₀, t_N], with φ the piecewise-linear
     /// interpolant of the same data (paper 004, Sec. 1 (i), bounds it by ∫θ″²). On each
     /// interval θ − φ is a cubic, so both integrands (degrees 6 and 4) are integrated exactly
@@ -151,6 +201,35 @@ impl<T: Real> NaturalCubicSpline<T> {
         }
         h1
     }
+}
+
+/// The real roots of A v² + B v + C (all of them; none if A = B = 0). The larger-magnitude
+/// root comes from q = −(B + sign(B)√(B² − 4AC))/2, the other from C/q, so neither suffers
+/// cancellation.
+fn quadratic_roots<T: Real>(a: &T, b: &T, c: &T) -> Vec<T> {
+    let ctx = a.ctx();
+    let zero = T::zero_in(&ctx);
+    if a.is_zero() {
+        return if b.is_zero() {
+            Vec::new()
+        } else {
+            vec![-(c.clone() / b)]
+        };
+    }
+    let discriminant = b.clone() * b - &(T::from_i64(4, &ctx) * a * c);
+    if discriminant < zero {
+        return Vec::new();
+    }
+    let root = discriminant.sqrt();
+    let q = if *b >= zero {
+        -(b.clone() + &root)
+    } else {
+        root - b
+    } / &T::from_i64(2, &ctx);
+    if q.is_zero() {
+        return vec![zero];
+    }
+    vec![q.clone() / a, c.clone() / &q]
 }
 
 /// Solve M·m = Q·z for the interior second derivatives (Thomas algorithm); m₀ = m_N = 0.
@@ -193,6 +272,25 @@ fn second_derivatives<T: Field>(t: &[T], z: &[T]) -> Vec<T> {
 mod tests {
     use super::*;
     use crate::scalar::BigRational;
+
+    #[test]
+    fn overshoot_is_the_excursion_beyond_the_end_values() {
+        // Symmetric peak: the extremum sits on the middle knot, no overshoot.
+        let sym = NaturalCubicSpline::new(vec![0.0, 0.5, 1.0], vec![0.0, 1.0, 0.0]).unwrap();
+        assert_eq!(sym.overshoots(), vec![0.0, 0.0]);
+        // Lopsided peak: θ′(0.1) > 0, so θ rises above 1 after the knot; the exact excursion
+        // agrees with a dense sampling of the interval.
+        let s = NaturalCubicSpline::new(vec![0.0, 0.1, 1.0], vec![0.0, 1.0, 0.0]).unwrap();
+        let over = s.overshoots();
+        let sampled = (0..=100_000)
+            .map(|k| s.eval_all(&(0.1 + 0.9 * f64::from(k) / 1e5))[0] - 1.0)
+            .fold(0.0, f64::max);
+        assert_eq!(over[0], 0.0);
+        assert!(
+            over[1] > 0.01 && (over[1] - sampled).abs() < 1e-9,
+            "{over:?} {sampled}"
+        );
+    }
 
     fn q(n: i64, d: i64) -> BigRational {
         BigRational::new(n.into(), d.into())

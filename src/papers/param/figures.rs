@@ -140,3 +140,40 @@ pub fn corner(c: &CornerCurves) -> String {
     };
     plot::render(&[panel], (1, 1), (640, 640)).unwrap_or_default()
 }
+
+/// Fig. 9: the axis #3 spline against t for each parametrization (printed knots), with the
+/// data and, per panel, the overshooting intervals' count in the title.
+pub fn figure9(parametrizations: &[(String, Vec<f64>)], axis: &[f64], counts: &[usize]) -> String {
+    let mut panels = Vec::new();
+    for (k, ((name, t), count)) in parametrizations.iter().zip(counts).enumerate() {
+        let Ok(s) = NaturalCubicSpline::new(t.clone(), axis.to_vec()) else {
+            return String::new();
+        };
+        let curve = (0..=800)
+            .map(|j| {
+                let x = j as f64 / 800.0;
+                (x, s.eval_all(&x)[0])
+            })
+            .collect();
+        panels.push(Panel {
+            title: format!(
+                "({}) {name}: {count} overshooting intervals",
+                ['a', 'b', 'c', 'd'][k.min(3)]
+            ),
+            x_label: "t (normalized time, dimensionless)".into(),
+            y_label: "θ₃ (rad)".into(),
+            series: vec![
+                Series::new("natural cubic spline", curve, Style::Solid, 1),
+                Series::new(
+                    "data (Table IV)",
+                    t.iter().copied().zip(axis.iter().copied()).collect(),
+                    Style::Markers,
+                    2,
+                ),
+            ],
+            legend: Corner::UpperLeft,
+            ..Panel::default()
+        });
+    }
+    plot::render(&panels, (1, panels.len()), (400 * panels.len() as u32, 400)).unwrap_or_default()
+}
