@@ -144,6 +144,27 @@ pub struct SmoothRow {
     pub class: String,
 }
 
+/// The largest jump of B^(r), r = 1 … i_k + 1, over all basis functions at knot t_k, exactly,
+/// and the order up to which all of them are continuous.
+pub fn knot_jumps(knots: &Knots<BigRational>, bfbs: &Bfbs, k: usize) -> (Vec<BigRational>, usize) {
+    let order = bfbs.exponent(k) as usize + 1;
+    let t = knots.at(k).clone();
+    let sides =
+        [Side::Left, Side::Right].map(|side| basis_derivatives(knots, bfbs, &t, order, side));
+    let [Some(left), Some(right)] = sides else {
+        return (Vec::new(), 0);
+    };
+    let jump = |r: usize| {
+        left.iter()
+            .zip(&right)
+            .map(|(a, b)| (a[r].clone() - &b[r]).abs())
+            .fold(r_zero(), |m, x| if x > m { x } else { m })
+    };
+    let jumps: Vec<BigRational> = (1..=order).map(jump).collect();
+    let smooth_to = jumps.iter().take_while(|j| j.is_zero()).count();
+    (jumps, smooth_to)
+}
+
 /// BFBS: jumps of every B^(r) at each interior knot, exactly, for two exponent patterns.
 pub fn bfbs_smoothness() -> (Outcome, Vec<SmoothRow>) {
     let mut rows = Vec::new();
@@ -154,18 +175,7 @@ pub fn bfbs_smoothness() -> (Outcome, Vec<SmoothRow>) {
         let bfbs = Bfbs::new(exps.clone()).expect("exponents");
         for k in 3..=5 {
             let ik = bfbs.exponent(k) as usize;
-            let t = knots.at(k).clone();
-            let order = ik + 1;
-            let left = basis_derivatives(&knots, &bfbs, &t, order, Side::Left).expect("in");
-            let right = basis_derivatives(&knots, &bfbs, &t, order, Side::Right).expect("in");
-            let jump = |r: usize| {
-                left.iter()
-                    .zip(&right)
-                    .map(|(a, b)| (a[r].clone() - &b[r]).abs())
-                    .fold(r_zero(), |m, x| if x > m { x } else { m })
-            };
-            let jumps: Vec<BigRational> = (1..=order).map(jump).collect();
-            let smooth_to = jumps.iter().take_while(|j| j.is_zero()).count();
+            let (jumps, smooth_to) = knot_jumps(&knots, &bfbs, k);
             if smooth_to != ik {
                 failures.push(format!(
                     "knot t_{k} of {exps:?}: C^{smooth_to}, expected C^{ik}"

@@ -9,6 +9,7 @@ mod figures;
 mod paths;
 mod render;
 mod setup;
+mod statements;
 
 use super::{ClaimSpec, Ledger, Paper, PaperOutput};
 use crate::algo::gerbs::dubins::DubinsPath;
@@ -36,15 +37,18 @@ macro_rules! spec {
 pub const SPECS: &[ClaimSpec] = &[
     spec!("gerbs.eq12_13.closed_forms", "Eqs. (10)–(13)", "for i_k = 2, S_k∫Ψ_k equals Φ on (t_{k−1}, t_k) and Θ on (t_k, t_{k+1})"),
     spec!("gerbs.eq14_18.derivatives", "Eqs. (14)–(18)", "the printed first and second derivatives of Φ and Θ"),
+    spec!("gerbs.eq7_10.beta_kernel", "Eqs. (7)–(10)", "S_k of Eq. (8) normalizes the kernel Ψ_k of Eq. (9) in Eq. (7); Eq. (10) is Eq. (9) with i_k = 2"),
     spec!("gerbs.partition_of_unity", "Eqs. (3), (6)–(7)", "the basis functions sum to 1 on every knot interval"),
     spec!("gerbs.interpolates_at_knot", "Eqs. (3), (11)", "B_k(t_k) = 1, so the curve interpolates c_k at t_k"),
     spec!("gerbs.bfbs.smoothness", "Sec. II-B", "the BFBS is C^m with m = min i_k"),
     spec!("gerbs.erbs.smoothness", "Sec. II-A", "for α > 0 the ERBS basis is C^∞ (all one-sided derivatives vanish at the knots)"),
     spec!("gerbs.fig2.parameters", "Fig. 2 caption, Sec. IV", "the ERBS of Fig. 2 (α = 0, β = 3, γ = 1, σ = 0.2, λ = 0.5) generates a C^∞ curve"),
     spec!("gerbs.eq4.centre", "Eq. (4)", "the centre term of Ψ_k, |t − (1−λ_k)t_k + λ_k t_{k+1}|, as in the cited ERBS definition"),
+    spec!("gerbs.sec3.knots", "Sec. III, before Algorithm 1", "t_1 = t_2 = 0, t_j = t_{j−1} + 1/(n−1), t_{n+1} = t_{n+2} = 1: a consistent knot vector (Fig. 1's for n = 5)"),
     spec!("gerbs.alg2.interpolates", "Sec. III, Algorithm 2", "the GERBS path interpolates every waypoint"),
     spec!("gerbs.alg2.tangent", "Eqs. (19)–(22), Algorithm 1", "the local arcs give the path the tangent m_i (travel direction) at each waypoint, for left and right turns"),
     spec!("gerbs.alg2.curvature_continuous", "Sec. III", "the path is curvature continuous (BFBS i = 2: C²; ERBS: C^∞)"),
+    spec!("gerbs.sec4.order_smoothness", "Sec. IV, on Fig. 1", "by reducing the order of the beta function a smoother path is generated, while the local support remains the same"),
     spec!("gerbs.fig6.bfbs_vs_erbs", "Figs. 5–6", "BFBS and ERBS paths compared; the BFBS turns are tighter"),
     spec!("gerbs.fig7.dubins", "Fig. 7", "the ERBS path follows the Dubins path closely but keeps curvature continuous"),
     spec!("gerbs.locality", "Sec. II", "moving one waypoint changes the path only on its neighbouring knot intervals"),
@@ -109,6 +113,12 @@ fn basis_checks(ledger: &mut Ledger) -> (Vec<basis::SmoothRow>, Vec<Vec<String>>
     let (closed, derivs) = basis::closed_forms();
     ledger.record("gerbs.eq12_13.closed_forms", closed);
     ledger.record("gerbs.eq14_18.derivatives", derivs);
+    ledger.record("gerbs.eq7_10.beta_kernel", statements::beta_kernel());
+    ledger.record(
+        "gerbs.sec4.order_smoothness",
+        statements::order_and_support(),
+    );
+    ledger.record("gerbs.sec3.knots", statements::knot_rule());
     let (partition, at_knot) = basis::partition();
     ledger.record("gerbs.partition_of_unity", partition);
     ledger.record("gerbs.interpolates_at_knot", at_knot);
