@@ -10,6 +10,7 @@
 mod coefficients;
 mod figures;
 mod nrho;
+mod preliminaries;
 mod render;
 mod table1;
 mod theorems;
@@ -36,6 +37,42 @@ macro_rules! spec {
 
 /// The claims of the paper, in report order.
 pub const SPECS: &[ClaimSpec] = &[
+    spec!(
+        "phodcos.remark1.star_vector_part",
+        "Sec. 4A, Eq. (4), Remark 1",
+        "A ⋆ B is equal to the vector part of A i B, and thus is a pure quaternion",
+        Some("the vector part of A i B")
+    ),
+    spec!(
+        "phodcos.lemma1.linear",
+        "Sec. 4A, Lemma 1, Eq. (5)",
+        "all solutions of X ⋆ B = a form the family X_τ = −(τ + a)B i/|B|²",
+        None
+    ),
+    spec!(
+        "phodcos.lemma2.quadratic",
+        "Sec. 4A, Lemma 2, Eq. (6)",
+        "every solution of X^(2⋆) = a is X_φ = √|a| (a/|a| + i)/|a/|a| + i| Q(φ)",
+        None
+    ),
+    spec!(
+        "phodcos.eq8.components",
+        "Sec. 4B, Eqs. (7)–(9)",
+        "x′ = u² + v² − p² − q², y′ = 2uq − 2vp, z′ = 2vq − 2up, σ = u² + v² + p² + q², the components of A i A*, satisfy σ² = ‖p′‖²",
+        Some("y′ = 2uq − 2vp")
+    ),
+    spec!(
+        "phodcos.eq10.control_points",
+        "Sec. 4B, Eqs. (10a)–(10d); Sec. 5C",
+        "the control points p_i = p_0 + Σ_(j<i) h_j/(2n+1) give the curve whose hodograph is A i A*; p_e − p_b = Σ h_i/17",
+        None
+    ),
+    spec!(
+        "phodcos.eq11_12.frame",
+        "Sec. 4B, Eqs. (11)–(12)",
+        "R = [A i A*, A j A*, A k A*]/|A|² is the adapted Euler–Rodrigues frame and ω = Σ χ_k e_k with χ = (e₂′·e₃, e₃′·e₁, e₁′·e₂) its angular velocity",
+        None
+    ),
     spec!(
         "phodcos.eq15.hodograph",
         "Eq. (15a–q)",
@@ -82,6 +119,12 @@ pub const SPECS: &[ClaimSpec] = &[
         "phodcos.eq18.a4",
         "Remark 2, Eq. (18)",
         "A_4 from Lemma 2 applied as printed",
+        None
+    ),
+    spec!(
+        "phodcos.sec5c.theta4_redundant",
+        "Sec. 5C, after Remark 2",
+        "θ₄ can be set to zero owing to the non-trivial fibres of the map A ↦ A i A*: all PH interpolants arise with θ₄ = 0",
         None
     ),
     spec!(
@@ -327,6 +370,16 @@ pub fn verify() -> PaperOutput {
 
 /// Every check, in report order, each outcome recorded in `ledger`.
 fn checks(ledger: &mut Ledger) -> Results {
+    ledger.record("phodcos.remark1.star_vector_part", preliminaries::remark1());
+    ledger.record("phodcos.lemma1.linear", preliminaries::lemma1());
+    ledger.record("phodcos.lemma2.quadratic", preliminaries::lemma2());
+    ledger.record("phodcos.eq8.components", preliminaries::eq8());
+    ledger.record("phodcos.eq10.control_points", preliminaries::eq10());
+    ledger.record("phodcos.eq11_12.frame", preliminaries::eq11_12());
+    ledger.record(
+        "phodcos.sec5c.theta4_redundant",
+        preliminaries::theta4_redundant(),
+    );
     let (eq15, eq28) = coefficients::hodograph();
     let [lam, ap, cp, cp26] = coefficients::middle_equations();
     let coefficients = vec![

@@ -59,7 +59,7 @@ pub fn random_free(rng: &mut SplitMix64) -> FreeParameters<BigRational> {
     f
 }
 
-fn into<T: Field>(d: &HermiteData<BigRational>, ctx: &T::Ctx) -> HermiteData<T> {
+pub(super) fn into<T: Field>(d: &HermiteData<BigRational>, ctx: &T::Ctx) -> HermiteData<T> {
     let v = |x: &[BigRational; 3]| vec3::map(x, |q| T::from_rational(q, ctx));
     HermiteData {
         p_b: v(&d.p_b),
@@ -69,7 +69,10 @@ fn into<T: Field>(d: &HermiteData<BigRational>, ctx: &T::Ctx) -> HermiteData<T> 
     }
 }
 
-fn free_into<T: Field>(f: &FreeParameters<BigRational>, ctx: &T::Ctx) -> FreeParameters<T> {
+pub(super) fn free_into<T: Field>(
+    f: &FreeParameters<BigRational>,
+    ctx: &T::Ctx,
+) -> FreeParameters<T> {
     f.map(|q| T::from_rational(q, ctx))
 }
 
