@@ -75,7 +75,7 @@ fn table1(t: &TableOne) -> String {
             vec![
                 i.to_string(),
                 z.to_string(),
-                printed.to_string(),
+                marked(printed, Some(printed_units(&t.t_star[i], printed))),
                 format_float_digits(&t.t_star[i], 10.min(t.digits[i].max(1))),
                 if t.agrees[i] { "agrees" } else { "differs" }.into(),
             ]
@@ -88,7 +88,10 @@ fn table1(t: &TableOne) -> String {
         "computed (MPFR, 10 of its certified digits)",
         "to 4 decimals",
     ];
-    format!("{}\n![Fig. 1](./{ID}_fig1.svg)\n\n", table(&headers, &rows))
+    format!(
+        "{MARKS}{}\n![Fig. 1](./{ID}_fig1.svg)\n\n",
+        table(&headers, &rows)
+    )
 }
 
 fn plane(p: &PlaneSection, figures: &mut Vec<(String, String)>) -> String {
