@@ -53,7 +53,8 @@ impl Rates {
         units
             * match scalar {
                 ScalarKind::F64 => self.f64,
-                ScalarKind::Mpfr(bits) => self.mpfr256 * mpfr_factor(bits),
+                // One ball run costs about what the two certified MPFR runs do.
+                ScalarKind::Mpfr(bits) | ScalarKind::Ball(bits) => self.mpfr256 * mpfr_factor(bits),
                 ScalarKind::Rational => self.rational,
             }
     }

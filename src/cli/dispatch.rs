@@ -13,6 +13,7 @@
 use super::input::{fail, RunError};
 use super::output::Out;
 use super::Rendered;
+use crate::scalar::ball::{undecided_comparisons, Ball};
 use crate::scalar::{BigRational, Field, Float, Real, ScalarKind};
 
 /// A computation that needs only `+ − × ÷`: runs in f64, rationals and MPFR.
@@ -42,12 +43,46 @@ fn certified(
     ))
 }
 
+/// A ball computation at `bits`, printed with the digits its enclosures prove and their
+/// radii; refused when it made an undecided comparison (its branches may not hold for every
+/// point of the balls, so the enclosure would not be proven).
+fn proven(
+    scalar: ScalarKind,
+    run: impl FnOnce() -> Result<Out<Ball>, RunError>,
+) -> Result<Rendered, RunError> {
+    let before = undecided_comparisons();
+    let out = run()?;
+    let undecided = undecided_comparisons().saturating_sub(before);
+    if undecided > 0 {
+        return Err(RunError::Internal(format!(
+            "{undecided} comparison(s) could not be decided in {scalar} (the balls overlap), so the result is not proven; \
+             raise the precision, or use mpfr:<bits> for certified digits"
+        )));
+    }
+    Ok(Rendered::json(super::output::render_proven(
+        &named(out, scalar),
+        "",
+    )?))
+}
+
+/// Refuse `--scalar ball:<bits>` for a method whose result a ball cannot prove (an
+/// iteration stopped by a tolerance, a quadrature whose truncation error is not enclosed).
+pub fn refuse_ball(scalar: ScalarKind, reason: &str) -> Result<(), RunError> {
+    match scalar {
+        ScalarKind::Ball(_) => fail(format!(
+            "field \"--scalar\": {scalar} is not available here: {reason}"
+        )),
+        _ => Ok(()),
+    }
+}
+
 /// `job` in the number type `scalar` names.
 pub fn run_field(job: &impl FieldJob, scalar: ScalarKind) -> Result<Rendered, RunError> {
     match scalar {
         ScalarKind::F64 => Ok(Rendered::plain(named(job.run::<f64>(&())?, scalar))),
         ScalarKind::Rational => Ok(Rendered::plain(named(job.run::<BigRational>(&())?, scalar))),
         ScalarKind::Mpfr(bits) => certified(scalar, bits, |p| job.run::<Float>(&p)),
+        ScalarKind::Ball(bits) => proven(scalar, || job.run::<Ball>(&bits)),
     }
 }
 
@@ -71,6 +106,7 @@ pub fn run_real_or_exact(
         ScalarKind::F64 => Ok(Rendered::plain(named(job.run::<f64>(&())?, scalar))),
         ScalarKind::Rational => Ok(Rendered::plain(named(exact()?, scalar))),
         ScalarKind::Mpfr(bits) => certified(scalar, bits, |p| job.run::<Float>(&p)),
+        ScalarKind::Ball(bits) => proven(scalar, || job.run::<Ball>(&bits)),
     }
 }
 
@@ -93,5 +129,8 @@ pub fn run_two_precision(
         ScalarKind::F64 => job.f64(),
         ScalarKind::Rational => fail(rational_refusal),
         ScalarKind::Mpfr(bits) => job.mpfr(bits),
+        ScalarKind::Ball(_) => fail(format!(
+            "field \"--scalar\": {scalar} is not available here: this method compares two MPFR precisions to certify its digits"
+        )),
     }
 }

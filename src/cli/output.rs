@@ -5,6 +5,7 @@
 //! for f64, and for MPFR the digits on which two runs at p and 2p bits agree.
 
 use super::input::RunError;
+use crate::scalar::ball::Ball;
 use crate::scalar::certify::{certify, format_float_digits};
 use crate::scalar::{Field, Float, Real};
 use serde_json::{Map, Value};
@@ -67,8 +68,12 @@ pub fn noise_level<T: Real>(scale: &T) -> T {
     scale.clone().abs() * &crate::scalar::powi(&T::from_ratio(1, 2, &ctx), bits)
 }
 
-/// x, or 0 when |x| is below `level`.
+/// x, or 0 when |x| is below `level` (never for enclosures, whose balls around 0 are the
+/// honest answer).
 pub fn flush<T: Real>(x: T, level: Option<&T>) -> T {
+    if T::ENCLOSURE {
+        return x;
+    }
     match level {
         Some(l) if x.clone().abs() < *l => T::zero_in(&x.ctx()),
         _ => x,
@@ -77,6 +82,9 @@ pub fn flush<T: Real>(x: T, level: Option<&T>) -> T {
 
 /// The largest |x| of `values`, if there is one.
 pub fn largest<'a, T: Real + 'a>(values: impl IntoIterator<Item = &'a T>) -> Option<T> {
+    if T::ENCLOSURE {
+        return None; // only used to scale the noise level, which enclosures do not flush
+    }
     values.into_iter().fold(None, |m: Option<T>, x| {
         let a = x.clone().abs();
         match m {
@@ -109,6 +117,76 @@ pub fn render_plain<T: Field>(out: &Out<T>) -> Value {
         Out::F64(x) => f64_value(*x),
         Out::Null => Value::Null,
     }
+}
+
+/// A radius as a short decimal that is not below it (two significant digits, rounded up).
+fn radius_text(r: f64) -> String {
+    if r == 0.0 || !r.is_finite() {
+        return format!("{r:e}");
+    }
+    // "d.ddd…e±x" of the double itself, then its mantissa rounded up to one decimal.
+    let full = format!("{r:e}");
+    let (mantissa, exponent) = full.split_once('e').unwrap_or((&full, "0"));
+    let exponent: i32 = exponent.parse().unwrap_or(0);
+    let tenths = (mantissa.parse::<f64>().unwrap_or(9.9) * 10.0 * (1.0 + 1e-15)).ceil() as i64;
+    if tenths >= 100 {
+        format!("1.0e{}", exponent + 1)
+    } else {
+        format!("{}.{}e{}", tenths / 10, tenths % 10, exponent)
+    }
+}
+
+/// Render a ball tree: each number as {"value": the digits every point of its ball rounds
+/// to (null when not even one is proven), "radius": an upper bound of the ball's radius}.
+/// Fails, naming the field, when a ball is not finite (an unbounded enclosure).
+pub fn render_proven(out: &Out<Ball>, path: &str) -> Result<Value, RunError> {
+    Ok(match out {
+        Out::Num(b) | Out::MaybeZero(b, _) => {
+            if !Field::is_finite(b) {
+                return Err(RunError::Input(format!(
+                    "output \"{path}\" has no finite enclosure in ball:{}: an operation met a ball containing a singularity \
+                     (a division by a ball around 0, a square root or logarithm of one reaching below 0); raise the precision",
+                    b.ctx()
+                )));
+            }
+            let (digits, text) = b.proven_digits();
+            let mut m = Map::new();
+            m.insert(
+                "value".into(),
+                if digits == 0 {
+                    Value::Null
+                } else {
+                    Value::String(text)
+                },
+            );
+            m.insert("radius".into(), Value::String(radius_text(b.rad())));
+            Value::Object(m)
+        }
+        Out::List(items) => Value::Array(
+            items
+                .iter()
+                .enumerate()
+                .map(|(i, v)| render_proven(v, &format!("{path}[{i}]")))
+                .collect::<Result<_, _>>()?,
+        ),
+        Out::Object(fields) => Value::Object(
+            fields
+                .iter()
+                .map(|(k, v)| {
+                    let p = if path.is_empty() {
+                        k.clone()
+                    } else {
+                        format!("{path}.{k}")
+                    };
+                    render_proven(v, &p).map(|r| (k.clone(), r))
+                })
+                .collect::<Result<Map<_, _>, _>>()?,
+        ),
+        Out::Int(i) => Value::from(*i),
+        Out::Text(s) => Value::String(s.clone()),
+        Out::F64(x) => f64_value(*x),
+        Out::Null => Value::Null,
+    })
 }
 
 /// Render the more precise tree `hi` with the digits it shares with `lo`. Fails (naming the

@@ -1,7 +1,7 @@
 //! `run bspline-basis`, `bspline-gram`, `spline-fit` and `bang-bang`: the JSON shapes of issue 4.
 
 use super::budget::Rates;
-use super::dispatch::{run_field, run_real, FieldJob, RealJob};
+use super::dispatch::{refuse_ball, run_field, run_real, FieldJob, RealJob};
 use super::input::{self, fail, InputError, RunError};
 use super::output::Out;
 use super::Rendered;
@@ -213,6 +213,7 @@ impl FieldJob for FitInput {
 /// `run bang-bang`: switching times and amplitude of the minimum-L∞ control through x(2) = ξ.
 pub fn run_bang_bang(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, RunError> {
     input::only_fields(doc, &["xi"])?;
+    refuse_ball(scalar, "Newton's method stops at a tolerance, which a ball cannot prove; the exact values in Q(√2) are printed with any other scalar")?;
     let xi = input::number(input::field(doc, "xi")?, "xi")?;
     let Some(exact_times) = bang_bang::exact_switching_times() else {
         return Err(RunError::internal(

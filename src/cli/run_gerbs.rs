@@ -6,7 +6,7 @@
 //! p and 2p bits with the agreeing digits printed; the BFBS basis also runs exactly.
 
 use super::budget::{self, check_time, Rates};
-use super::dispatch::{run_real, run_real_or_exact, RealJob};
+use super::dispatch::{refuse_ball, run_real, run_real_or_exact, RealJob};
 use super::input::{self, fail, InputError, RealInput, RunError};
 use super::output::{flush, largest, noise_level, Out};
 use super::Rendered;
@@ -373,6 +373,9 @@ pub fn run_gerbs_basis(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<R
     )?;
     let knots = knots(doc)?;
     let kind = kind(doc)?;
+    if matches!(kind, Kind::Erbs) {
+        refuse_ball(scalar, "the ERBS basis is a tanh–sinh quadrature whose truncation error a ball does not enclose")?;
+    }
     let params = basis_params(doc, kind, &nonempty_intervals(&knots))?;
     let at = evaluation_points(doc, &knots)?;
     let derivatives = match doc.get("derivatives") {
@@ -637,6 +640,10 @@ pub fn run_gerbs_path(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Re
             "line_length",
             "arcs",
         ],
+    )?;
+    refuse_ball(
+        scalar,
+        "the path length is a tanh–sinh quadrature whose truncation error a ball does not enclose",
     )?;
     let waypoints = waypoints(doc)?;
     if waypoints.len() > MAX_PATH_WAYPOINTS {

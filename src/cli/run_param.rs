@@ -1,7 +1,7 @@
 //! `run marin-1d`, `run natural-spline` and `run marin`: the JSON shapes of issue 5.
 
 use super::budget::{check_output, Rates};
-use super::dispatch::{run_field, run_real, run_real_or_exact, FieldJob, RealJob};
+use super::dispatch::{refuse_ball, run_field, run_real, run_real_or_exact, FieldJob, RealJob};
 use super::input::{self, fail, InputError, RunError};
 use super::output::Out;
 use super::Rendered;
@@ -240,6 +240,10 @@ fn read_marin(doc: &Map<String, Value>) -> Result<MarinInput, InputError> {
 /// from chord length, then Newton's method in the chosen number type).
 pub fn run_marin(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, RunError> {
     let data = read_marin(doc)?;
+    refuse_ball(
+        scalar,
+        "the minimization stops at a tolerance, which a ball cannot prove",
+    )?;
     // Gradient projection in f64 then Newton on N unknowns: about N^2.3 operations, in
     // proportion to the number of components. Measured with three components, N = 300:
     // exact objective 5 s in f64 and 34 s at mpfr:256, approximate 1.8 s and 9.8 s.

@@ -7,6 +7,7 @@
 //! | `f64` | `()` | IEEE double: fast, 53-bit rounding in every operation |
 //! | [`rug::Float`] (MPFR) | precision in bits (`u32`) | correctly rounded operations at any precision |
 //! | [`BigRational`] | `()` | exact field arithmetic; no square roots, so it implements only [`Field`] |
+//! | [`ball::Ball`] | precision in bits (`u32`) | a proven enclosure: MPFR midpoint, f64 radius rounded up |
 //!
 //! The context is never a hidden global: a new constant is made with the context of the
 //! operands it will meet (`T::from_i64(3, &x.ctx())`), so MPFR precision flows through the
@@ -17,6 +18,7 @@
 //! [`parse`] reads decimal and fraction strings exactly; [`certify`] turns two computations at
 //! different precisions into a decimal string carrying only the digits on which they agree.
 
+pub mod ball;
 pub mod certify;
 pub mod dual;
 mod float;
@@ -61,6 +63,12 @@ pub trait Field:
     /// What a constant needs to be made compatible with existing values: `()` for f64 and
     /// rationals, the precision in bits for MPFR.
     type Ctx: Clone + Debug + PartialEq + Send + Sync;
+
+    /// Whether values are rigorous enclosures ([`ball::Ball`]), whose comparisons can be
+    /// undecidable. Code that compares only to tidy its output (flushing rounding noise to
+    /// 0) skips those comparisons for enclosures: a ball around 0 is already the honest
+    /// answer.
+    const ENCLOSURE: bool = false;
 
     /// The context of this value (its precision for MPFR).
     fn ctx(&self) -> Self::Ctx;
@@ -179,6 +187,8 @@ pub enum ScalarKind {
     Rational,
     /// MPFR with this many bits of precision.
     Mpfr(u32),
+    /// Ball arithmetic (a proven enclosure) with an MPFR midpoint of this many bits.
+    Ball(u32),
 }
 
 /// Smallest and largest MPFR precision accepted from users.
@@ -191,17 +201,29 @@ impl std::str::FromStr for ScalarKind {
             "f64" => Ok(ScalarKind::F64),
             "rational" => Ok(ScalarKind::Rational),
             _ => {
-                let bits = s.strip_prefix("mpfr:").ok_or_else(|| {
-                    format!("unknown scalar {s:?}: expected f64, rational or mpfr:<bits>")
-                })?;
+                let (kind, bits) = if let Some(bits) = s.strip_prefix("mpfr:") {
+                    ("mpfr", bits)
+                } else if let Some(bits) = s.strip_prefix("ball:") {
+                    ("ball", bits)
+                } else {
+                    return Err(format!(
+                        "unknown scalar {s:?}: expected f64, rational, mpfr:<bits> or ball:<bits>"
+                    ));
+                };
                 let bits: u32 = bits.parse().map_err(|_| {
-                    format!("mpfr precision {bits:?} is not a whole number of bits")
+                    format!("{kind} precision {bits:?} is not a whole number of bits")
                 })?;
                 let (lo, hi) = MPFR_BITS_RANGE;
                 if !(lo..=hi).contains(&bits) {
-                    return Err(format!("mpfr precision {bits} is outside {lo}..={hi} bits"));
+                    return Err(format!(
+                        "{kind} precision {bits} is outside {lo}..={hi} bits"
+                    ));
                 }
-                Ok(ScalarKind::Mpfr(bits))
+                Ok(if kind == "ball" {
+                    ScalarKind::Ball(bits)
+                } else {
+                    ScalarKind::Mpfr(bits)
+                })
             }
         }
     }
@@ -213,6 +235,7 @@ impl std::fmt::Display for ScalarKind {
             ScalarKind::F64 => write!(f, "f64"),
             ScalarKind::Rational => write!(f, "rational"),
             ScalarKind::Mpfr(bits) => write!(f, "mpfr:{bits}"),
+            ScalarKind::Ball(bits) => write!(f, "ball:{bits}"),
         }
     }
 }

@@ -1,0 +1,506 @@
+//! Ball arithmetic: a rigorous enclosure [m − r, m + r] of every real number a computation
+//! stands for, with the midpoint m in MPFR at p bits and the radius r an f64 rounded upward.
+//!
+//! Every operation returns a ball that contains the exact result of the operation applied to
+//! any points of its operand balls (the inclusion principle), so a value computed through
+//! the generic algorithms is *proven* to lie in its ball — not certified by two precisions
+//! agreeing. Each operation rounds the midpoint to nearest (MPFR reports whether it was
+//! exact) and adds to the propagated radius a bound on that rounding error, one ulp of the
+//! result, 2^(e−p) for a result in [2^(e−1), 2^e). The radius arithmetic itself runs in f64
+//! round-to-nearest and steps each result one double up, which bounds it from
+//! above; an f64 radius has ample range for enclosures of numbers between 1e-300 and 1e300.
+//!
+//! | operation | midpoint | radius (before the rounding bound) |
+//! |---|---|---|
+//! | a ± b | m_a ± m_b | r_a + r_b |
+//! | a·b | m_a·m_b | \|m_a\|r_b + \|m_b\|r_a + r_a r_b |
+//! | a/b | m_a/m_b | (r_a + \|m\|r_b)/(\|m_b\| − r_b), ∞ if b contains 0 |
+//! | √a | √m_a | r_a/(√(m_a − r_a) + √m_a) |
+//! | sin, cos | sin m, cos m | r (Lipschitz 1) |
+//! | exp | e^m | e^m·(e^r − 1) |
+//! | ln | ln m | r/(m − r) |
+//! | atan2(y, x) | atan2(m_y, m_x) | (r_x + r_y)/ρ_min, ∞ across the branch cut |
+//!
+//! Comparisons are honest: a < b holds only when the balls are disjoint; when they overlap
+//! the answer is unknown, so `partial_cmp` returns `None` and the event is counted
+//! ([`undecided_comparisons`]). A computation that made a branch on an undecided comparison
+//! may have taken the wrong branch, so the `run` commands refuse its result (the count is a
+//! process-wide total: compare it before and after the computation; with the environment
+//! variable `TRAJVERIFY_BALL_TRACE` set, each undecided comparison prints a backtrace to
+//! stderr, to find the branch). `is_zero` means "exactly zero" (radius 0), as for the other
+//! number types.
+
+use super::certify::format_float_digits;
+use super::{BigRational, Field, Real};
+use rug::float::{Constant, Round};
+use rug::Float;
+use std::cmp::Ordering;
+use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
+use std::sync::atomic::{AtomicU64, Ordering as AtomicOrdering};
+
+/// A real number known to lie in [mid − rad, mid + rad].
+#[derive(Clone, Debug)]
+pub struct Ball {
+    mid: Float,
+    rad: f64,
+}
+
+static UNDECIDED: AtomicU64 = AtomicU64::new(0);
+
+/// How many ball comparisons could not be decided since the process started (all threads).
+pub fn undecided_comparisons() -> u64 {
+    UNDECIDED.load(AtomicOrdering::Relaxed)
+}
+
+fn undecided() {
+    UNDECIDED.fetch_add(1, AtomicOrdering::Relaxed);
+    if std::env::var_os("TRAJVERIFY_BALL_TRACE").is_some() {
+        eprintln!("{}", std::backtrace::Backtrace::force_capture());
+    }
+}
+
+/// The next double above x (`f64::next_up`, which needs Rust 1.86, spelled out for 1.85).
+fn next_double(x: f64) -> f64 {
+    if x.is_nan() || x == f64::INFINITY {
+        x
+    } else if x == 0.0 {
+        f64::from_bits(1)
+    } else if x > 0.0 {
+        f64::from_bits(x.to_bits() + 1)
+    } else {
+        f64::from_bits(x.to_bits() - 1)
+    }
+}
+
+/// x rounded up to the next double (an upper bound for the exact value x approximates).
+fn up(x: f64) -> f64 {
+    if x.is_nan() {
+        f64::INFINITY
+    } else {
+        next_double(x)
+    }
+}
+
+/// An upper bound of a + b for a, b ≥ 0 (exact when one is 0).
+fn add_up(a: f64, b: f64) -> f64 {
+    if a == 0.0 {
+        b
+    } else if b == 0.0 {
+        a
+    } else {
+        up(a + b)
+    }
+}
+
+/// An upper bound of a·b for a, b ≥ 0 (exactly 0 when one is 0, even if the other is ∞).
+fn mul_up(a: f64, b: f64) -> f64 {
+    if a == 0.0 || b == 0.0 {
+        0.0
+    } else {
+        up(a * b)
+    }
+}
+
+/// An upper bound of a/b for a ≥ 0, b > 0.
+fn div_up(a: f64, b: f64) -> f64 {
+    if a == 0.0 {
+        0.0
+    } else {
+        up(a / b)
+    }
+}
+
+/// x stepped one ulp down (a lower bound).
+fn down(x: f64) -> f64 {
+    if x.is_nan() {
+        0.0
+    } else {
+        -next_double(-x)
+    }
+}
+
+/// An upper bound for |x| as a double.
+fn abs_up(x: &Float) -> f64 {
+    let round = if x.is_sign_negative() {
+        Round::Down
+    } else {
+        Round::Up
+    };
+    x.to_f64_round(round).abs()
+}
+
+/// A lower bound for |x| as a double.
+fn abs_down(x: &Float) -> f64 {
+    x.to_f64_round(Round::Zero).abs()
+}
+
+/// A bound on the rounding error of `m`, the nearest p-bit value to an exact result:
+/// 0 when MPFR reports the operation exact, otherwise one ulp, 2^(e − p).
+fn rounding_error(m: &Float, direction: Ordering) -> f64 {
+    if direction == Ordering::Equal {
+        return 0.0;
+    }
+    match m.get_exp() {
+        None if m.is_zero() => f64::from_bits(1),
+        None => f64::INFINITY,
+        Some(e) => {
+            let k = i64::from(e) - i64::from(m.prec());
+            if k < -1074 {
+                f64::from_bits(1)
+            } else if k > 1023 {
+                f64::INFINITY
+            } else {
+                2f64.powi(k as i32)
+            }
+        }
+    }
+}
+
+impl Ball {
+    /// The ball with this midpoint and radius (the radius is made non-negative; NaN becomes ∞).
+    pub fn new(mid: Float, rad: f64) -> Ball {
+        let rad = if rad.is_nan() {
+            f64::INFINITY
+        } else {
+            rad.abs()
+        };
+        Ball { mid, rad }
+    }
+
+    /// An exact value (radius 0).
+    pub fn exact(mid: Float) -> Ball {
+        Ball { mid, rad: 0.0 }
+    }
+
+    /// A ball from a nearest-rounded midpoint and MPFR's ternary value, with `rad` added.
+    fn rounded((mid, direction): (Float, Ordering), rad: f64) -> Ball {
+        let err = rounding_error(&mid, direction);
+        Ball::new(mid, add_up(rad, err))
+    }
+
+    /// The midpoint.
+    pub fn mid(&self) -> &Float {
+        &self.mid
+    }
+
+    /// The radius.
+    pub fn rad(&self) -> f64 {
+        self.rad
+    }
+
+    /// A lower bound of the ball, m − r rounded down, 64 bits beyond the midpoint's precision
+    /// (so the bound is not looser than the radius says by a rounding of its own).
+    pub fn lower(&self) -> Float {
+        Float::with_val_round(
+            self.mid.prec() + 64,
+            &self.mid - &Float::with_val(64, self.rad),
+            Round::Down,
+        )
+        .0
+    }
+
+    /// An upper bound of the ball, m + r rounded up (at the precision of [`Ball::lower`]).
+    pub fn upper(&self) -> Float {
+        Float::with_val_round(
+            self.mid.prec() + 64,
+            &self.mid + &Float::with_val(64, self.rad),
+            Round::Up,
+        )
+        .0
+    }
+
+    /// The smallest ball (up to rounding outward) containing [lo, hi].
+    pub fn from_bounds(lo: &Float, hi: &Float) -> Ball {
+        let prec = lo.prec().max(hi.prec());
+        let mid = Float::with_val(prec + 2, lo + hi) / 2u32;
+        let (mid, _) = Float::with_val_round(prec, &mid, Round::Nearest);
+        let above = Float::with_val_round(53, hi - &mid, Round::Up)
+            .0
+            .to_f64_round(Round::Up);
+        let below = Float::with_val_round(53, &mid - lo, Round::Up)
+            .0
+            .to_f64_round(Round::Up);
+        Ball::new(mid, above.max(below))
+    }
+
+    /// The digits the enclosure proves: the largest d such that every point of the ball
+    /// rounds to the same d significant decimal digits, with that decimal (0 and "" when
+    /// not even the first digit is proven).
+    pub fn proven_digits(&self) -> (u32, String) {
+        let (lo, hi) = (self.lower(), self.upper());
+        if !lo.is_finite() || !hi.is_finite() {
+            return (0, String::new());
+        }
+        if lo.is_zero() && hi.is_zero() {
+            return (super::certify::max_digits(self.mid.prec()), "0".into());
+        }
+        let mut digits = super::certify::agreeing_digits(&lo, &hi).max(1);
+        while digits > 0 {
+            let (a, b) = (
+                format_float_digits(&lo, digits),
+                format_float_digits(&hi, digits),
+            );
+            if a == b {
+                return (digits, a);
+            }
+            digits -= 1;
+        }
+        (0, String::new())
+    }
+
+    /// Whether x lies in the ball (for tests of the inclusion principle).
+    pub fn contains(&self, x: &Float) -> bool {
+        *x >= self.lower() && *x <= self.upper()
+    }
+
+    /// |m|·r-type products: an upper bound of |m_a|·r_b + |m_b|·r_a + r_a·r_b.
+    fn product_radius(a: &Ball, b: &Ball) -> f64 {
+        let first = mul_up(abs_up(&a.mid), b.rad);
+        let second = mul_up(abs_up(&b.mid), a.rad);
+        add_up(add_up(first, second), mul_up(a.rad, b.rad))
+    }
+
+    /// Whether the ball contains zero (and is not exactly zero).
+    fn straddles_zero(&self) -> bool {
+        abs_down(&self.mid) <= self.rad && !(self.rad == 0.0 && self.mid.is_zero())
+    }
+}
+
+impl PartialEq for Ball {
+    /// Equal only when both are exact and the same number; two overlapping balls are an
+    /// undecided comparison (counted) and answer false.
+    fn eq(&self, other: &Ball) -> bool {
+        if self.rad == 0.0 && other.rad == 0.0 {
+            return self.mid == other.mid;
+        }
+        if self.partial_cmp_quiet(other).is_none() {
+            undecided();
+        }
+        false
+    }
+}
+
+impl Ball {
+    /// `Some(Less)` / `Some(Greater)` when the balls are disjoint, `Some(Equal)` when both are
+    /// the same exact number, `None` otherwise — without counting.
+    fn partial_cmp_quiet(&self, other: &Ball) -> Option<Ordering> {
+        if self.rad == 0.0 && other.rad == 0.0 {
+            return self.mid.partial_cmp(&other.mid);
+        }
+        let prec = self.mid.prec().max(other.mid.prec()) + 2;
+        let gap = Float::with_val(64, add_up(self.rad, other.rad));
+        let below = Float::with_val_round(prec, &other.mid - &self.mid, Round::Down).0;
+        if below > gap {
+            return Some(Ordering::Less);
+        }
+        let above = Float::with_val_round(prec, &self.mid - &other.mid, Round::Down).0;
+        if above > gap {
+            return Some(Ordering::Greater);
+        }
+        None
+    }
+}
+
+impl PartialOrd for Ball {
+    fn partial_cmp(&self, other: &Ball) -> Option<Ordering> {
+        let decided = self.partial_cmp_quiet(other);
+        if decided.is_none() {
+            undecided();
+        }
+        decided
+    }
+}
+
+impl Neg for Ball {
+    type Output = Ball;
+    fn neg(self) -> Ball {
+        Ball::new(-self.mid, self.rad)
+    }
+}
+
+impl Add<&Ball> for Ball {
+    type Output = Ball;
+    fn add(self, b: &Ball) -> Ball {
+        let mid = Float::with_val_round(self.mid.prec(), &self.mid + &b.mid, Round::Nearest);
+        Ball::rounded(mid, add_up(self.rad, b.rad))
+    }
+}
+
+impl Sub<&Ball> for Ball {
+    type Output = Ball;
+    fn sub(self, b: &Ball) -> Ball {
+        let mid = Float::with_val_round(self.mid.prec(), &self.mid - &b.mid, Round::Nearest);
+        Ball::rounded(mid, add_up(self.rad, b.rad))
+    }
+}
+
+impl Mul<&Ball> for Ball {
+    type Output = Ball;
+    fn mul(self, b: &Ball) -> Ball {
+        let rad = Ball::product_radius(&self, b);
+        let mid = Float::with_val_round(self.mid.prec(), &self.mid * &b.mid, Round::Nearest);
+        Ball::rounded(mid, rad)
+    }
+}
+
+impl Div<&Ball> for Ball {
+    type Output = Ball;
+    fn div(self, b: &Ball) -> Ball {
+        let prec = self.mid.prec();
+        let denominator = down(abs_down(&b.mid) - b.rad);
+        if b.mid.is_zero() || denominator <= 0.0 {
+            // The divisor may be zero: the quotient is unbounded.
+            return Ball::new(Float::with_val(prec, 0), f64::INFINITY);
+        }
+        let (mid, direction) = Float::with_val_round(prec, &self.mid / &b.mid, Round::Nearest);
+        let err = rounding_error(&mid, direction);
+        let quotient = add_up(abs_up(&mid), err);
+        let rad = div_up(add_up(self.rad, mul_up(quotient, b.rad)), denominator);
+        Ball::new(mid, add_up(rad, err))
+    }
+}
+
+macro_rules! by_value_and_assign {
+    ($op:ident, $method:ident, $assign:ident, $assign_method:ident) => {
+        impl $op<Ball> for Ball {
+            type Output = Ball;
+            fn $method(self, b: Ball) -> Ball {
+                self.$method(&b)
+            }
+        }
+        impl $assign<&Ball> for Ball {
+            fn $assign_method(&mut self, b: &Ball) {
+                let a = std::mem::replace(self, Ball::exact(Float::new(2)));
+                *self = a.$method(b);
+            }
+        }
+    };
+}
+by_value_and_assign!(Add, add, AddAssign, add_assign);
+by_value_and_assign!(Sub, sub, SubAssign, sub_assign);
+by_value_and_assign!(Mul, mul, MulAssign, mul_assign);
+by_value_and_assign!(Div, div, DivAssign, div_assign);
+
+impl Field for Ball {
+    type Ctx = u32;
+    const ENCLOSURE: bool = true;
+
+    fn ctx(&self) -> u32 {
+        self.mid.prec()
+    }
+    fn scalar_name(bits: &u32) -> String {
+        format!("ball:{bits}")
+    }
+    fn from_i64(v: i64, bits: &u32) -> Self {
+        Ball::rounded(Float::with_val_round(*bits, v, Round::Nearest), 0.0)
+    }
+    fn from_ratio(n: i64, d: i64, bits: &u32) -> Self {
+        let q = rug::Rational::from((n, d));
+        Ball::rounded(Float::with_val_round(*bits, &q, Round::Nearest), 0.0)
+    }
+    fn from_rational(q: &BigRational, bits: &u32) -> Self {
+        let q = super::mpfr::to_gmp_rational(q);
+        Ball::rounded(Float::with_val_round(*bits, &q, Round::Nearest), 0.0)
+    }
+    fn from_f64(v: f64, bits: &u32) -> Self {
+        Ball::rounded(Float::with_val_round(*bits, v, Round::Nearest), 0.0)
+    }
+    fn abs(&self) -> Self {
+        // ||x| − |m|| ≤ |x − m|: the same radius encloses every |x|.
+        Ball::new(self.mid.clone().abs(), self.rad)
+    }
+    fn is_zero(&self) -> bool {
+        self.rad == 0.0 && self.mid.is_zero()
+    }
+    fn is_finite(&self) -> bool {
+        self.mid.is_finite() && self.rad.is_finite()
+    }
+    fn to_f64(&self) -> f64 {
+        self.mid.to_f64()
+    }
+    /// The midpoint as a fraction (the ball's other points are not represented).
+    fn to_rational(&self) -> Option<BigRational> {
+        self.mid
+            .to_rational()
+            .map(|q| super::mpfr::from_gmp_rational(&q))
+    }
+    fn to_plain_string(&self) -> String {
+        format!("{} ± {:e}", self.mid.to_plain_string(), self.rad)
+    }
+}
+
+impl Real for Ball {
+    fn sqrt(&self) -> Self {
+        let prec = self.mid.prec();
+        if self.mid.is_sign_negative() && !self.straddles_zero() {
+            return Ball::new(Float::with_val(prec, 0), f64::INFINITY);
+        }
+        let lowest = down(self.mid.to_f64_round(Round::Down) - self.rad);
+        if lowest <= 0.0 {
+            // [0, √(m + r)]: half of it around its midpoint.
+            let top = Float::with_val_round(prec, self.upper().sqrt_ref(), Round::Up).0;
+            return Ball::from_bounds(&Float::with_val(prec, 0), &top);
+        }
+        let (mid, direction) = Float::with_val_round(prec, self.mid.sqrt_ref(), Round::Nearest);
+        let denominator = down(down(lowest.sqrt()) + abs_down(&mid));
+        Ball::rounded((mid, direction), div_up(self.rad, denominator))
+    }
+    fn sin_cos(&self) -> (Self, Self) {
+        let prec = self.mid.prec();
+        let mut sin = Float::with_val(prec, &self.mid);
+        let mut cos = Float::new(prec);
+        let (ds, dc) = sin.sin_cos_round(&mut cos, Round::Nearest);
+        // Both are Lipschitz with constant 1: the radius carries over.
+        (
+            Ball::rounded((sin, ds), self.rad),
+            Ball::rounded((cos, dc), self.rad),
+        )
+    }
+    fn atan2(&self, x: &Self) -> Self {
+        let prec = self.mid.prec();
+        // Distance from the origin of the nearest point of the box.
+        let gap = |b: &Ball| down(abs_down(&b.mid) - b.rad).max(0.0);
+        let (gx, gy) = (gap(x), gap(self));
+        let rho = down(down(gx * gx + gy * gy).sqrt());
+        let crosses_cut = x.mid.is_sign_negative() && gy == 0.0;
+        if rho <= 0.0 || crosses_cut {
+            return Ball::new(Float::with_val(prec, 0), f64::INFINITY);
+        }
+        let mid = Float::with_val_round(prec, self.mid.atan2_ref(&x.mid), Round::Nearest);
+        Ball::rounded(mid, div_up(add_up(x.rad, self.rad), rho))
+    }
+    fn exp(&self) -> Self {
+        let prec = self.mid.prec();
+        let (mid, direction) = Float::with_val_round(prec, self.mid.exp_ref(), Round::Nearest);
+        // e^r − 1 from libm (not correctly rounded), widened by a few ulps.
+        let growth = if self.rad == 0.0 {
+            0.0
+        } else {
+            mul_up(up(self.rad.exp_m1()), 1.0 + 8.0 * f64::EPSILON)
+        };
+        let err = rounding_error(&mid, direction);
+        let rad = mul_up(add_up(abs_up(&mid), err), growth);
+        Ball::new(mid, add_up(rad, err))
+    }
+    fn ln(&self) -> Self {
+        let prec = self.mid.prec();
+        let lowest = down(self.mid.to_f64_round(Round::Down) - self.rad);
+        if lowest <= 0.0 {
+            return Ball::new(Float::with_val(prec, 0), f64::INFINITY);
+        }
+        let mid = Float::with_val_round(prec, self.mid.ln_ref(), Round::Nearest);
+        Ball::rounded(mid, div_up(self.rad, lowest))
+    }
+    fn pi(bits: &u32) -> Self {
+        Ball::rounded(
+            Float::with_val_round(*bits, Constant::Pi, Round::Nearest),
+            0.0,
+        )
+    }
+    fn epsilon(bits: &u32) -> Self {
+        Ball::exact(Float::with_val(*bits, 1) >> (*bits as i32 - 1))
+    }
+    fn precision_bits(bits: &u32) -> u32 {
+        *bits
+    }
+}
