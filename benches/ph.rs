@@ -6,10 +6,13 @@
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use std::hint::black_box;
 use std::time::Duration;
+use trajverify::algo::ph::enclosure::proven_error;
 use trajverify::algo::ph::hermite::{interpolate, FreeParameters, HermiteData};
 use trajverify::algo::ph::piecewise::segment_jet;
+use trajverify::algo::ph::piecewise::{certified_error, convert};
 use trajverify::curve::{Curve, ExprCurve};
-use trajverify::scalar::{Field, Float, Real};
+use trajverify::scalar::ball::Ball;
+use trajverify::scalar::{BigRational, Field, Float, Real};
 
 const CURVE: &str = "[1.5*sin(7.2*t), cos(9*t), exp(cos(1.8*t))]";
 
@@ -47,9 +50,74 @@ fn conversion(c: &mut Criterion) {
             })
         },
     );
+    // The same conversion in ball arithmetic (a proven enclosure of every number): the issue's
+    // goal is at most 4× the MPFR-256 time above.
+    let db = segment_data::<Ball>(&256);
+    let fb = FreeParameters::zero(4, &256);
+    g.bench_function(
+        BenchmarkId::new("ball256", "interpolate+control_points"),
+        |b| {
+            b.iter(|| {
+                interpolate(black_box(&db), &fb)
+                    .expect("data")
+                    .control_points()
+            })
+        },
+    );
     let c64 = ExprCurve::parse(CURVE).expect("curve").compile::<f64>(&());
     g.bench_function(BenchmarkId::new("f64", "hermite_data_jet4"), |b| {
         b.iter(|| c64.jet(black_box(&0.3), 4))
+    });
+    g.finish();
+}
+
+/// Table 1's error at 64 segments: the proven enclosure (ball conversion plus branch and
+/// bound to 1e-6) against the certified search (MPFR at 128 and 256 bits), its baseline.
+fn error_search(c: &mut Criterion) {
+    let mut g = c.benchmark_group("ph_table1_error_64_segments");
+    g.sample_size(10)
+        .measurement_time(Duration::from_secs(4))
+        .warm_up_time(Duration::from_millis(500));
+    let curve = ExprCurve::parse(CURVE).expect("curve");
+    let (a, b) = (
+        BigRational::from_integer(0.into()),
+        BigRational::from_integer(1.into()),
+    );
+    let zero = FreeParameters::zero(4, &());
+    g.bench_function(
+        BenchmarkId::new("mpfr128/256", "certified_error"),
+        |bench| {
+            bench.iter(|| {
+                certified_error(
+                    |bits| curve.compile::<Float>(&bits),
+                    &a,
+                    &b,
+                    64,
+                    4,
+                    &zero,
+                    128,
+                    256,
+                )
+                .expect("converts")
+            })
+        },
+    );
+    let cb = curve.compile::<Ball>(&256);
+    let fb = FreeParameters::zero(4, &256);
+    g.bench_function(BenchmarkId::new("ball256", "proven_error"), |bench| {
+        bench.iter(|| {
+            let pw = convert(
+                &cb,
+                &Ball::from_i64(0, &256),
+                &Ball::from_i64(1, &256),
+                64,
+                4,
+                &fb,
+                false,
+            )
+            .expect("converts");
+            proven_error(&cb, &pw, 1e-6, 1_000_000)
+        })
     });
     g.finish();
 }
@@ -74,5 +142,5 @@ fn evaluation(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, conversion, evaluation);
+criterion_group!(benches, conversion, error_search, evaluation);
 criterion_main!(benches);

@@ -136,10 +136,61 @@ pub struct Claim {
     pub reproduced: String,
     /// The number type of the computation (e.g. `mpfr:256`, `rational`).
     pub scalar: String,
+    /// How its numbers are known: exact, proven (ball), certified (two precisions) or
+    /// floating (f64 alone).
+    pub assurance: Assurance,
     /// The verdict.
     pub verdict: Verdict,
     /// The evidence for the verdict.
     pub evidence: String,
+}
+
+/// How the numbers behind a claim are known, from the number types its check ran in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, PartialOrd, Ord)]
+#[serde(rename_all = "lowercase")]
+pub enum Assurance {
+    /// Exact arithmetic (rationals, Q(√2)): no rounding at all.
+    Exact,
+    /// Ball arithmetic: every number is proven to lie in its enclosure.
+    Proven,
+    /// MPFR at two precisions: the digits on which they agree (strong evidence, not a proof).
+    Certified,
+    /// f64 alone: no statement about its digits.
+    Floating,
+}
+
+impl Assurance {
+    /// Every assurance, strongest first.
+    pub const ALL: [Assurance; 4] = [
+        Assurance::Exact,
+        Assurance::Proven,
+        Assurance::Certified,
+        Assurance::Floating,
+    ];
+
+    /// The strongest assurance a check's scalar field names: `rational` or `Q(sqrt2)` exact,
+    /// `ball:` proven, `mpfr:` certified, otherwise floating.
+    pub fn of_scalar(scalar: &str) -> Assurance {
+        if scalar.contains("rational") || scalar.contains("Q(sqrt2)") {
+            Assurance::Exact
+        } else if scalar.contains("ball:") {
+            Assurance::Proven
+        } else if scalar.contains("mpfr:") {
+            Assurance::Certified
+        } else {
+            Assurance::Floating
+        }
+    }
+
+    /// The name used in claims.json and the reports.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Assurance::Exact => "exact",
+            Assurance::Proven => "proven",
+            Assurance::Certified => "certified",
+            Assurance::Floating => "floating",
+        }
+    }
 }
 
 /// The result of one check, before it is joined with its spec.
@@ -218,6 +269,7 @@ impl Ledger {
             statement: spec.map_or("", |s| s.statement).to_string(),
             published: spec.and_then(|s| s.published).map(str::to_string),
             reproduced: outcome.reproduced,
+            assurance: Assurance::of_scalar(&outcome.scalar),
             scalar: outcome.scalar,
             verdict,
             evidence,
@@ -236,6 +288,7 @@ impl Ledger {
                     published: spec.published.map(str::to_string),
                     reproduced: String::new(),
                     scalar: String::new(),
+                    assurance: Assurance::Floating,
                     verdict: Verdict::Failed,
                     evidence: "internal: the check was never run".into(),
                 });

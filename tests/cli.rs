@@ -911,17 +911,26 @@ fn ball_prints_the_digits_its_enclosure_proves_and_the_radius() {
     // bound at the level of 64 bits.
     let p3 = &out["control_points"][3];
     let value = p3["value"].as_str().unwrap();
-    assert!(value.starts_with("0.86666666666666666") && value.len() <= 2 + 19, "{p3}");
+    assert!(
+        value.starts_with("0.86666666666666666") && value.len() <= 2 + 19,
+        "{p3}"
+    );
     let radius: f64 = p3["radius"].as_str().unwrap().parse().unwrap();
     assert!(radius > 0.0 && radius < 1e-17, "{p3}");
     // Algorithm 1 (the PH conversion of a segment) runs in balls too.
     let data = r#"{"p_b":[0,0,0],"p_e":[1,1,0],"v_b":[1,0,0],"v_e":[0,1,0],"a_b":[0,0,0],"a_e":[0,0,0],
                    "j_b":[0,0,0],"j_e":[0,0,0],"s_b":[0,0,0],"s_e":[0,0,0]}"#;
-    let ph = json(&trajverify(&["run", "ph-hermite", "--scalar", "ball:256"], data));
+    let ph = json(&trajverify(
+        &["run", "ph-hermite", "--scalar", "ball:256"],
+        data,
+    ));
     let length = &ph["arc_length"];
     assert!(length["value"].as_str().unwrap().len() > 60, "{length}");
     // Methods a ball cannot prove are refused on one line, exit 2.
-    for (algorithm, input) in [("bang-bang", r#"{"xi": "2/3"}"#), ("marin", r#"{"points": [[0, 0], [1, 1], [2, 0]]}"#)] {
+    for (algorithm, input) in [
+        ("bang-bang", r#"{"xi": "2/3"}"#),
+        ("marin", r#"{"points": [[0, 0], [1, 1], [2, 0]]}"#),
+    ] {
         let run = trajverify(&["run", algorithm, "--scalar", "ball:128"], input);
         assert_eq!(run.code, 2, "{algorithm}: {}", run.stderr);
         assert_eq!(run.stderr.trim().lines().count(), 1, "{}", run.stderr);

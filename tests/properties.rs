@@ -434,8 +434,16 @@ mod gerbs {
             let bfbs = Bfbs::new(exponents[..n].to_vec()).expect("exponents");
             // The partition holds on [t_2, t_{n+1}] (all of [t_1, t_{n+2}] with doubled ends).
             let (a, b) = (knots.at(2).clone(), knots.at(n + 1).clone());
-            let t = a.clone() + (b - a) * q(frac, 1000);
+            let t = a.clone() + (b.clone() - &a) * q(frac, 1000);
             for side in [Side::Left, Side::Right] {
+                // At t_2 from the left (and at t_(n+1) from the right) the derivatives are
+                // those of the end interval (t_1, t_2), where only one basis function lives
+                // unless the end knot is doubled: outside the partition's domain.
+                let outside = (t == a && side == Side::Left && *knots.at(1) < a)
+                    || (t == b && side == Side::Right && b < *knots.at(n + 2));
+                if outside {
+                    continue;
+                }
                 let d = basis_derivatives(&knots, &bfbs, &t, 3, side).expect("inside");
                 for r in 0..=3 {
                     let sum: BigRational = d.iter().map(|x| x[r].clone()).sum();

@@ -70,7 +70,7 @@ fn proven(
 pub fn refuse_ball(scalar: ScalarKind, reason: &str) -> Result<(), RunError> {
     match scalar {
         ScalarKind::Ball(_) => fail(format!(
-            "field \"--scalar\": {scalar} is not available here: {reason}"
+            "option --scalar: {scalar} is not available here: {reason}"
         )),
         _ => Ok(()),
     }
@@ -130,7 +130,7 @@ pub fn run_two_precision(
         ScalarKind::Rational => fail(rational_refusal),
         ScalarKind::Mpfr(bits) => job.mpfr(bits),
         ScalarKind::Ball(_) => fail(format!(
-            "field \"--scalar\": {scalar} is not available here: this method compares two MPFR precisions to certify its digits"
+            "option --scalar: {scalar} is not available here: this method compares two MPFR precisions to certify its digits"
         )),
     }
 }

@@ -58,8 +58,9 @@ pub enum Command {
     Run {
         /// The algorithm to run.
         algorithm: Algorithm,
-        /// Number type: f64, rational (exact), or mpfr:BITS (printed with the digits that
-        /// agree between BITS and 2·BITS bits). Default: f64 for hermite, spline-fit,
+        /// Number type: f64, rational (exact), mpfr:BITS (printed with the digits that
+        /// agree between BITS and 2·BITS bits), or ball:BITS (proven enclosures: each number
+        /// as the digits every point of its ball rounds to, and the radius). Default: f64 for hermite, spline-fit,
         /// natural-spline, ph-hermite, phodcos, gerbs-basis, gerbs-path and dubins; mpfr:128 for
         /// convergence; mpfr:256 for hermite-condition, bang-bang, marin-1d and marin;
         /// bspline-basis and bspline-gram are always exact.

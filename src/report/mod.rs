@@ -17,6 +17,8 @@ struct Summary {
     total: usize,
     /// Claims per verdict, every verdict present (zero counts included).
     verdicts: serde_json::Map<String, serde_json::Value>,
+    /// Claims per assurance (exact, proven, certified, floating), zero counts included.
+    assurance: serde_json::Map<String, serde_json::Value>,
 }
 
 #[derive(Serialize)]
@@ -49,10 +51,18 @@ pub fn ledger_json(claims: &[Claim]) -> String {
         .into_iter()
         .map(|(v, n)| (v.as_str().to_string(), serde_json::Value::from(n)))
         .collect();
+    let assurance = crate::ledger::Assurance::ALL
+        .iter()
+        .map(|a| {
+            let n = claims.iter().filter(|c| c.assurance == *a).count();
+            (a.as_str().to_string(), serde_json::Value::from(n))
+        })
+        .collect();
     let file = LedgerFile {
         summary: Summary {
             total: claims.len(),
             verdicts,
+            assurance,
         },
         claims,
     };
@@ -65,10 +75,17 @@ pub fn ledger_json(claims: &[Claim]) -> String {
 /// The opening summary of a paper report: the claims by verdict, then every finding that is
 /// not a plain reproduction, one line each, the material ones (discrepancy, failed) first.
 pub fn summary_section(claims: &[Claim]) -> String {
+    let assurance: Vec<String> = crate::ledger::Assurance::ALL
+        .iter()
+        .map(|a| (a, claims.iter().filter(|c| c.assurance == *a).count()))
+        .filter(|(_, n)| *n > 0)
+        .map(|(a, n)| format!("{n} {}", a.as_str()))
+        .collect();
     let mut out = format!(
-        "## Summary\n\n{} claims: {}.\n\n",
+        "## Summary\n\n{} claims: {}. Their numbers are {}.\n\n",
         claims.len(),
-        counts_text(claims)
+        counts_text(claims),
+        assurance.join(", ")
     );
     let line = |c: &Claim| {
         format!(
@@ -186,6 +203,7 @@ pub fn claims_section(claims: &[Claim]) -> String {
                 c.published.clone().unwrap_or_else(|| "—".into()),
                 c.reproduced.clone(),
                 c.scalar.clone(),
+                c.assurance.as_str().to_string(),
                 format!("**{}**", c.verdict.as_str()),
             ]
         })
@@ -198,6 +216,7 @@ pub fn claims_section(claims: &[Claim]) -> String {
             "published",
             "reproduced",
             "scalar",
+            "assurance",
             "verdict",
         ],
         &rows,

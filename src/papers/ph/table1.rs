@@ -417,6 +417,8 @@ pub struct Section {
     pub verdicts: Vec<Verdict>,
     /// Theorem 1 for φ ≠ 0.
     pub other: OtherOrders,
+    /// Proven enclosures of every row's error.
+    pub proven: Vec<super::proven::ProvenRow>,
 }
 
 /// Every Table 1 and Theorem 1 check, each outcome recorded in `ledger`.
@@ -438,6 +440,11 @@ pub fn section(ledger: &mut Ledger) -> Section {
         verdicts.push(outcome.verdict);
         ledger.record(&format!("phodcos.table1.n{}", row.segments), outcome);
     }
+    let proven = super::proven::proven_rows(&levels);
+    ledger.record(
+        "phodcos.table1.proven",
+        super::proven::outcome(&rows, &proven),
+    );
     ledger.record("phodcos.thm1.order6", order_six(&rows));
     let (other, [one, equal, none]) = other_orders();
     ledger.record("phodcos.thm1.order1", one);
@@ -451,6 +458,7 @@ pub fn section(ledger: &mut Ledger) -> Section {
         paper_grid,
         verdicts,
         other,
+        proven,
     }
 }
 
