@@ -926,6 +926,33 @@ fn ball_prints_the_digits_its_enclosure_proves_and_the_radius() {
     ));
     let length = &ph["arc_length"];
     assert!(length["value"].as_str().unwrap().len() > 60, "{length}");
+    // The conversion of a whole curve: in balls the error is a proven enclosure that contains
+    // the certified maximum MPFR finds.
+    let curve = r#"{"curve": "[sin(t), cos(t), t]", "interval": [0, 1], "segments": 4}"#;
+    let proven = json(&trajverify(
+        &["run", "phodcos", "--scalar", "ball:256"],
+        curve,
+    ));
+    let certified = json(&trajverify(
+        &["run", "phodcos", "--scalar", "mpfr:128"],
+        curve,
+    ));
+    let mid: f64 = proven["max_error"]["value"]
+        .as_str()
+        .unwrap()
+        .parse()
+        .unwrap();
+    let rad: f64 = proven["max_error"]["radius"]
+        .as_str()
+        .unwrap()
+        .parse()
+        .unwrap();
+    let value: f64 = certified["max_error"].as_str().unwrap().parse().unwrap();
+    assert!(
+        rad < 1e-6 * mid && (value - mid).abs() <= rad + 1e-5 * mid,
+        "{proven} {certified}"
+    );
+    assert!(proven["max_error_relative_width"].as_f64().unwrap() <= 1e-6);
     // Methods a ball cannot prove are refused on one line, exit 2.
     for (algorithm, input) in [
         ("bang-bang", r#"{"xi": "2/3"}"#),

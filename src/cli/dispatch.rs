@@ -21,9 +21,15 @@ pub trait FieldJob {
     fn run<T: Field>(&self, ctx: &T::Ctx) -> Result<Out<T>, RunError>;
 }
 
-/// A computation that needs square roots or transcendental functions: f64 and MPFR.
+/// A computation that needs square roots or transcendental functions: f64, MPFR and balls.
 pub trait RealJob {
     fn run<T: Real>(&self, ctx: &T::Ctx) -> Result<Out<T>, RunError>;
+    /// The computation in ball arithmetic at `bits`: by default the generic one; a job
+    /// overrides it where the generic method would only estimate what balls can prove (a
+    /// sampled maximum, replaced by a proven enclosure).
+    fn run_ball(&self, bits: u32) -> Result<Out<Ball>, RunError> {
+        self.run::<Ball>(&bits)
+    }
 }
 
 fn named<T>(out: Out<T>, scalar: ScalarKind) -> Out<T> {
@@ -106,7 +112,7 @@ pub fn run_real_or_exact(
         ScalarKind::F64 => Ok(Rendered::plain(named(job.run::<f64>(&())?, scalar))),
         ScalarKind::Rational => Ok(Rendered::plain(named(exact()?, scalar))),
         ScalarKind::Mpfr(bits) => certified(scalar, bits, |p| job.run::<Float>(&p)),
-        ScalarKind::Ball(bits) => proven(scalar, || job.run::<Ball>(&bits)),
+        ScalarKind::Ball(bits) => proven(scalar, || job.run_ball(bits)),
     }
 }
 

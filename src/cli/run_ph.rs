@@ -5,12 +5,14 @@ use super::dispatch::{run_real, run_two_precision, RealJob, TwoPrecisionJob};
 use super::input::{self, fail, InputError, RunError};
 use super::output::{agreed_text, flush, largest, noise_level, Out};
 use super::Rendered;
+use crate::algo::ph::enclosure::proven_error;
 use crate::algo::ph::hermite::{interpolate, FreeParameters, HermiteData, PhHermiteError};
 use crate::algo::ph::piecewise::{
     certified_error, conversion_error, convert, observed_order, phodcos, DEFAULT_SAMPLES,
 };
 use crate::algo::ph::PhCurve;
 use crate::curve::{Curve, ExprCurve};
+use crate::scalar::ball::Ball;
 use crate::scalar::certify::format_float_digits;
 use crate::scalar::{BigRational, Field, Float, Real, ScalarKind};
 use serde_json::{json, Map, Value};
@@ -261,6 +263,33 @@ impl RealJob for PhodcosJob {
         let (n, out) = phodcos_in::<T>(&self.input, ctx, self.chosen.get())?;
         self.chosen.set(Some(n));
         Ok(out)
+    }
+
+    /// In balls the error is proven: lower ≤ E ≤ upper by branch and bound
+    /// (`algo::ph::enclosure`, relative width 1e-6), printed as the ball [lower, upper].
+    fn run_ball(&self, bits: u32) -> Result<Out<Ball>, RunError> {
+        let input = &self.input;
+        let Some(n) = input.segments else {
+            return fail("option --scalar: a tolerance search compares sampled errors; with ball:<bits> give \"segments\"");
+        };
+        let c = input.curve.compile::<Ball>(&bits);
+        let (a, b) = (
+            Ball::from_rational(&input.a, &bits),
+            Ball::from_rational(&input.b, &bits),
+        );
+        check_finite(&c, &a, &b, n)?;
+        let free = FreeParameters::zero(4, &bits);
+        let pw = convert(&c, &a, &b, n, 4, &free, true).map_err(ph_error)?;
+        let e = proven_error(&c, &pw, 1e-6, 4_000_000);
+        Ok(Out::object(vec![
+            ("segments", Out::Int(n as i64)),
+            ("max_error", Out::Num(Ball::from_bounds(&e.lower, &e.upper))),
+            ("max_error_relative_width", Out::F64(e.relative_width())),
+            (
+                "preimages",
+                Out::List(pw.segments.iter().map(preimage_out).collect()),
+            ),
+        ]))
     }
 }
 
