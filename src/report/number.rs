@@ -43,6 +43,15 @@ pub fn marked(printed: &str, units: Option<f64>) -> String {
     }
 }
 
+/// A bound printed with `digits` significant digits, rounded outward (`Round::Down` for a
+/// lower bound, `Round::Up` for an upper one), so the printed bound is still a bound.
+pub fn bound_text(x: &rug::Float, digits: usize, round: rug::float::Round) -> String {
+    let (negative, mantissa, exp) = x.to_sign_string_exp_round(10, Some(digits), round);
+    let e = exp.unwrap_or(0) - 1;
+    let (lead, rest) = mantissa.split_at(1.min(mantissa.len()));
+    format!("{}{lead}.{rest}e{e}", if negative { "-" } else { "" })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -240,6 +240,11 @@ impl std::fmt::Display for ScalarKind {
     }
 }
 
+/// A num-rational as a GMP rational, exactly (for MPFR operations with directed rounding).
+pub fn mpfr_rational(q: &BigRational) -> rug::Rational {
+    mpfr::to_gmp_rational(q)
+}
+
 /// The shortest decimal that reads back as the same double (see `Field::to_plain_string`).
 pub fn float_text(x: f64) -> String {
     float::format_f64(x)

@@ -15,11 +15,21 @@
 //! accuracy on these row-scaled matrices. [`certified`] runs it at p and 2p bits of MPFR and
 //! keeps the digits that agree; [`f64_reference`] is what nalgebra's SVD gives in double
 //! precision for the full matrix, as a user of a standard library would compute it.
+//!
+//! **Proven enclosure.** [`proven`] encloses κ₂ exactly: the extreme eigenvalues of BᵀB
+//! (exact in rationals) are bracketed by Sylvester's law of inertia around the squares of
+//! the MPFR singular values ([`crate::numeric::linalg::inertia`]: the floating-point values
+//! only say where to look; the bracket is decided by exact LDLᵀ), and
+//! κ₂ = √(λ_max/λ_min) is rounded outward.
 
 use super::{transform_matrix, TransformKind};
-use crate::numeric::linalg::{condition_number, reference, svd::NoConvergence, Matrix};
+use crate::numeric::linalg::inertia::IntegerSymmetric;
+use crate::numeric::linalg::{
+    condition_number, reference, singular_values, svd::NoConvergence, Matrix,
+};
 use crate::scalar::certify::{at_two_precisions, Certified};
 use crate::scalar::{BigRational, Field, Float, Real};
+use rug::float::Round;
 
 /// The start block B: rows and columns 0…m of the transform matrix.
 pub fn start_block<T: Field>(m: usize, t0: &T, t1: &T, kind: TransformKind) -> Matrix<T> {
@@ -108,6 +118,37 @@ pub fn f64_reference(
         return None;
     }
     Some(reference::condition_number(&a))
+}
+
+/// A proven enclosure lo ≤ κ₂ ≤ hi of the transform for m derivatives on [t₀, t₁] (see the
+/// module doc), with MPFR at `bits` locating the eigenvalues (enough bits to resolve σ_min:
+/// about log₂κ₂ + 64). `None` if the brackets could not be decided.
+pub fn proven(
+    m: usize,
+    t0: &BigRational,
+    t1: &BigRational,
+    kind: TransformKind,
+    bits: u32,
+) -> Option<(Float, Float)> {
+    let b = start_block::<BigRational>(m, t0, t1, kind);
+    let gram = IntegerSymmetric::new(&b.transpose().mul(&b));
+    let sigma = singular_values(&b.map(|q| Float::from_rational(q, &bits))).ok()?;
+    let square = |s: &Float| Float::with_val(bits, s * s);
+    let (largest, smallest) = (square(sigma.first()?), square(sigma.last()?));
+    let n = b.rows();
+    let (min_lo, min_hi) = gram.bracket(0, &smallest, 2f64.powi(-40), 30)?;
+    let (max_lo, max_hi) = gram.bracket(n - 1, &largest, 2f64.powi(-40), 30)?;
+    if min_lo <= 0 {
+        return None;
+    }
+    let root = |q: rug::Rational, round: Round| {
+        let x = Float::with_val_round(bits, &q, round).0;
+        Float::with_val_round(bits, x.sqrt_ref(), round).0
+    };
+    Some((
+        root(max_lo / min_hi, Round::Down),
+        root(max_hi / min_lo, Round::Up),
+    ))
 }
 
 #[cfg(test)]

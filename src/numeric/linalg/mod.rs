@@ -5,6 +5,7 @@
 //!   Exact in rationals (any non-zero pivot is exact; the largest one is chosen anyway so
 //!   the same code is the backward-stable choice in floating point).
 //! - [`svd`]: singular values by one-sided Jacobi at any precision.
+//! - [`inertia`]: proven eigenvalue brackets of symmetric matrices (Sylvester's law of inertia).
 //! - [`reference`](mod@reference): the same quantities in f64 through nalgebra, the reference our generic
 //!   routines are tested against and the "what f64 gives" column of every report.
 //!
@@ -12,6 +13,7 @@
 //! `BigRational` implement, hence these short generic routines (DESIGN.md, "Scalars").
 
 pub mod gauss;
+pub mod inertia;
 pub mod reference;
 pub mod svd;
 

@@ -175,7 +175,8 @@ fn fig5_section(rows: &[conditioning::KappaRow]) -> String {
         "κ2 = σmax/σmin (Eq. 10) of the matrix taking p_0…p_(2m+1) to H (Eqs. 14–15), for m derivatives at each end. Certified \
          column: MPFR at p and 2p bits, printed to 20 of its certified digits (the full values are in `claims.json` evidence \
          where needed). f64 columns: nalgebra's SVD and our one-sided Jacobi, each on the correctly rounded f64 matrix, with \
-         their correct digits against the certified value. *binomial* is the same matrix without the factors n!/(n−j)!/T^j.\n\n",
+         their correct digits against the certified value. *binomial* is the same matrix without the factors n!/(n−j)!/T^j. Proven column: bounds \
+         decided exactly by Sylvester's law of inertia on BᵀB (claim hermite.fig5.proven), printed rounded outward.\n\n",
     );
     let body: Vec<Vec<String>> = rows
         .iter()
@@ -193,6 +194,13 @@ fn fig5_section(rows: &[conditioning::KappaRow]) -> String {
                 r.m.to_string(),
                 fmt_kappa(&r.unit, 20),
                 format!("{digits} ({bits}/{} bits)", 2 * bits),
+                r.proven.as_ref().map_or("—".into(), |(lo, hi)| {
+                    format!(
+                        "[{}, {}]",
+                        crate::report::number::bound_text(lo, 9, rug::float::Round::Down),
+                        crate::report::number::bound_text(hi, 9, rug::float::Round::Up)
+                    )
+                }),
                 match r.nalgebra {
                     None => "— (overflow)".into(),
                     Some(k) if k.is_infinite() => "∞ (σmin = 0)".into(),
@@ -213,6 +221,7 @@ fn fig5_section(rows: &[conditioning::KappaRow]) -> String {
             "m",
             "κ2, T = 1 (certified)",
             "certified digits (precisions)",
+            "proven enclosure (exact inertia)",
             "f64 nalgebra",
             "rel. error",
             "f64 nalgebra digits",

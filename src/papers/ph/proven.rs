@@ -48,21 +48,12 @@ pub fn proven_rows(levels: &[u32]) -> Vec<ProvenRow> {
         .collect()
 }
 
-/// A bound printed with `digits` significant digits, rounded outward (`Round::Down` for a
-/// lower bound, `Round::Up` for an upper one), so the printed bound is still a bound.
-pub fn bound_text(x: &Float, digits: usize, round: Round) -> String {
-    let (negative, mantissa, exp) = x.to_sign_string_exp_round(10, Some(digits), round);
-    let e = exp.unwrap_or(0) - 1;
-    let (lead, rest) = mantissa.split_at(1.min(mantissa.len()));
-    format!("{}{lead}.{rest}e{e}", if negative { "-" } else { "" })
-}
-
 /// [lower, upper] printed outward with 8 significant digits.
 pub fn interval_text(e: &ErrorEnclosure) -> String {
     format!(
         "[{}, {}]",
-        bound_text(&e.lower, 8, Round::Down),
-        bound_text(&e.upper, 8, Round::Up)
+        crate::report::number::bound_text(&e.lower, 8, Round::Down),
+        crate::report::number::bound_text(&e.upper, 8, Round::Up)
     )
 }
 
