@@ -967,3 +967,82 @@ fn ball_prints_the_digits_its_enclosure_proves_and_the_radius() {
     assert_eq!(bad.code, 2);
     assert!(bad.stderr.contains("ball precision"), "{}", bad.stderr);
 }
+
+#[test]
+fn report_convergence_writes_markdown_svg_and_json_for_a_users_curve() {
+    let dir = std::env::temp_dir().join(format!("trajverify-report-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let out = dir.to_str().unwrap();
+    let run = trajverify(
+        &[
+            "report",
+            "convergence",
+            "--curve",
+            "[sin(t), cos(t), t]",
+            "--interval",
+            "0",
+            "1",
+            "--levels",
+            "0-4",
+            "--scalar",
+            "ball:128",
+            "--out",
+            out,
+        ],
+        "",
+    );
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    assert!(
+        run.stderr.contains("level 4 (16 segments) done"),
+        "progress on stderr: {}",
+        run.stderr
+    );
+    for name in ["convergence.md", "convergence.svg", "convergence.json"] {
+        assert!(dir.join(name).exists(), "{name}");
+    }
+    let doc: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("convergence.json")).unwrap())
+            .unwrap();
+    let rows = doc["rows"].as_array().unwrap();
+    assert_eq!(rows.len(), 5);
+    for row in rows {
+        // The certified maximum lies in the proven enclosure.
+        let certified: f64 = row["error_certified"].as_str().unwrap().parse().unwrap();
+        let lower: f64 = row["error_proven"]["lower"]
+            .as_str()
+            .unwrap()
+            .parse()
+            .unwrap();
+        let upper: f64 = row["error_proven"]["upper"]
+            .as_str()
+            .unwrap()
+            .parse()
+            .unwrap();
+        assert!(
+            lower <= certified * (1.0 + 1e-12) && certified <= upper * (1.0 + 1e-12),
+            "{row}"
+        );
+    }
+    let order = doc["fitted_order"]["order"].as_f64().unwrap();
+    assert!((order - 6.0).abs() < 0.2, "Theorem 1's order 6: {order}");
+    let _ = std::fs::remove_dir_all(&dir);
+    // Bad input: one line, exit 2, nothing written.
+    let bad = trajverify(
+        &[
+            "report",
+            "convergence",
+            "--curve",
+            "[t, t]",
+            "--interval",
+            "0",
+            "1",
+            "--out",
+            out,
+        ],
+        "",
+    );
+    assert_eq!(bad.code, 2);
+    assert_eq!(bad.stderr.trim().lines().count(), 1, "{}", bad.stderr);
+    assert!(bad.stderr.contains("--curve"), "{}", bad.stderr);
+    assert!(!dir.exists());
+}

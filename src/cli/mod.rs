@@ -10,6 +10,7 @@ pub mod budget;
 mod dispatch;
 mod input;
 mod output;
+mod report_convergence;
 mod run_bspline;
 mod run_gerbs;
 mod run_hermite;
@@ -46,6 +47,12 @@ pub enum Command {
         /// Where to write the ledger, reports and figures.
         #[arg(long, value_name = "DIR", default_value = "reports")]
         out: PathBuf,
+    },
+    /// Write a report (Markdown, SVG, JSON) of a method applied to your own input.
+    Report {
+        /// Which report.
+        #[command(subcommand)]
+        kind: ReportKind,
     },
     /// List the claim ids with their locations in the papers (runs nothing).
     List {
@@ -118,6 +125,30 @@ Every input is answered within 30 s on two cores and 2 GiB, or refused at once: 
 estimates its work from its sizes and the number type (see the README, "Limits").
 Exit status: 0 success, 2 bad input (one line naming the field, nothing on stdout),
 3 internal failure of a method on accepted input; `verify` exits 1 when a claim failed."#;
+
+/// The reports `report` writes.
+#[derive(Subcommand, Debug)]
+pub enum ReportKind {
+    /// Table 1 for your curve: the PHODCOS conversion error against 2ⁿ segments (certified,
+    /// proven with ball:<bits>, and f64), observed and fitted orders, where f64 stops improving.
+    Convergence {
+        /// The curve, "[x(t), y(t), z(t)]" (numbers, t, pi, + - * / ^, sin cos tan exp ln sqrt atan).
+        #[arg(long, value_name = "EXPRESSION")]
+        curve: String,
+        /// The parameter interval a b.
+        #[arg(long, num_args = 2, required = true, value_names = ["A", "B"], allow_hyphen_values = true)]
+        interval: Vec<String>,
+        /// Levels n (2ⁿ segments): "a-b" or "n1,n2,…", within 0…14.
+        #[arg(long, default_value = "0-8")]
+        levels: String,
+        /// mpfr:BITS (certified at BITS and 2·BITS) or ball:BITS (also proven enclosures).
+        #[arg(long, value_name = "SCALAR", value_parser = parse_scalar, default_value = "mpfr:128")]
+        scalar: ScalarKind,
+        /// The directory to write convergence.md, convergence.svg and convergence.json into.
+        #[arg(long, value_name = "DIR")]
+        out: PathBuf,
+    },
+}
 
 /// The algorithms `run` knows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -252,6 +283,24 @@ pub fn execute(cli: Cli) -> Result<String, Failure> {
     match cli.command {
         Command::List { papers } => list(&select(&papers)?),
         Command::Verify { papers, out } => verify(&select(&papers)?, &out),
+        Command::Report {
+            kind:
+                ReportKind::Convergence {
+                    curve,
+                    interval,
+                    levels,
+                    scalar,
+                    out,
+                },
+        } => {
+            let request = report_convergence::Request {
+                curve,
+                interval: (interval[0].clone(), interval[1].clone()),
+                levels,
+                scalar,
+            };
+            report_convergence::run(&request, &out)
+        }
         Command::Run {
             algorithm,
             scalar,
