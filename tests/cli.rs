@@ -1045,4 +1045,63 @@ fn report_convergence_writes_markdown_svg_and_json_for_a_users_curve() {
     assert_eq!(bad.stderr.trim().lines().count(), 1, "{}", bad.stderr);
     assert!(bad.stderr.contains("--curve"), "{}", bad.stderr);
     assert!(!dir.exists());
+    // A closed curve given as data: a circle sampled at 64 points, the last row closing it.
+    let csv = std::env::temp_dir().join(format!("trajverify-circle-{}.csv", std::process::id()));
+    let mut rows = vec!["t,x,y,z".to_string()];
+    for i in 0..=64 {
+        let t = std::f64::consts::TAU * f64::from(i) / 64.0;
+        let (x, y) = if i == 64 {
+            (1.0, 0.0)
+        } else {
+            (t.cos(), t.sin())
+        };
+        rows.push(format!("{t},{x},{y},0"));
+    }
+    std::fs::write(&csv, rows.join("\n")).unwrap();
+    let data = trajverify(
+        &[
+            "report",
+            "convergence",
+            "--data",
+            csv.to_str().unwrap(),
+            "--interval",
+            "0",
+            "3",
+            "--levels",
+            "0-3",
+            "--out",
+            out,
+        ],
+        "",
+    );
+    assert_eq!(data.code, 0, "{}", data.stderr);
+    let doc: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("convergence.json")).unwrap())
+            .unwrap();
+    assert_eq!(doc["rows"].as_array().unwrap().len(), 4);
+    let _ = std::fs::remove_dir_all(&dir);
+    // Data that do not close the curve are refused on one line.
+    std::fs::write(
+        &csv,
+        "0,1,0,0\n1,2,0,0\n2,3,0,0\n3,4,0,0\n4,5,0,0\n5,6,0,0\n6,7,0,0\n7,8,0,0\n",
+    )
+    .unwrap();
+    let open = trajverify(
+        &[
+            "report",
+            "convergence",
+            "--data",
+            csv.to_str().unwrap(),
+            "--interval",
+            "0",
+            "1",
+            "--out",
+            out,
+        ],
+        "",
+    );
+    assert_eq!(open.code, 2, "{}", open.stderr);
+    assert!(open.stderr.contains("closed curve"), "{}", open.stderr);
+    assert!(!dir.exists());
+    let _ = std::fs::remove_file(&csv);
 }

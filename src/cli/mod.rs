@@ -133,8 +133,17 @@ pub enum ReportKind {
     /// proven with ball:<bits>, and f64), observed and fitted orders, where f64 stops improving.
     Convergence {
         /// The curve, "[x(t), y(t), z(t)]" (numbers, t, pi, + - * / ^, sin cos tan exp ln sqrt atan).
-        #[arg(long, value_name = "EXPRESSION")]
-        curve: String,
+        #[arg(
+            long,
+            value_name = "EXPRESSION",
+            required_unless_present = "data",
+            conflicts_with = "data"
+        )]
+        curve: Option<String>,
+        /// Or a CSV file of samples t, x, y, z of a closed curve (the last row repeats the first
+        /// point one period later), fitted by the periodic quintic spline of paper 001, Sec. 6A.
+        #[arg(long, value_name = "CSV")]
+        data: Option<PathBuf>,
         /// The parameter interval a b.
         #[arg(long, num_args = 2, required = true, value_names = ["A", "B"], allow_hyphen_values = true)]
         interval: Vec<String>,
@@ -287,14 +296,24 @@ pub fn execute(cli: Cli) -> Result<String, Failure> {
             kind:
                 ReportKind::Convergence {
                     curve,
+                    data,
                     interval,
                     levels,
                     scalar,
                     out,
                 },
         } => {
+            let source = match (curve, data) {
+                (Some(text), _) => report_convergence::Source::Expression(text),
+                (None, Some(path)) => report_convergence::Source::Data(path),
+                (None, None) => {
+                    return Err(Failure::Usage(
+                        "option --curve: give --curve or --data".into(),
+                    ))
+                }
+            };
             let request = report_convergence::Request {
-                curve,
+                source,
                 interval: (interval[0].clone(), interval[1].clone()),
                 levels,
                 scalar,

@@ -16,7 +16,8 @@ use super::Failure;
 use crate::algo::ph::enclosure::proven_error;
 use crate::algo::ph::hermite::FreeParameters;
 use crate::algo::ph::piecewise::{certified_error, conversion_error, convert, DEFAULT_SAMPLES};
-use crate::curve::ExprCurve;
+use crate::curve::spline::PeriodicSpline;
+use crate::curve::{Curve, ExprCurve};
 use crate::report::number::{bound_text, sig};
 use crate::report::plot::{self, Corner, Panel, Series, Style};
 use crate::report::table;
@@ -41,10 +42,107 @@ struct Level {
     f64_error: f64,
 }
 
+/// Where the curve comes from.
+pub enum Source {
+    /// An expression `[x(t), y(t), z(t)]`.
+    Expression(String),
+    /// A CSV file of samples t, x, y, z of a closed curve (the last row repeats the first
+    /// point one period later), fitted by the periodic quintic spline of paper 001, Sec. 6A.
+    Data(std::path::PathBuf),
+}
+
+/// The curve in one number type: an expression compiled for it, or the data's spline.
+enum UserCurve<T> {
+    Expression(crate::curve::CompiledCurve<T>),
+    Data(PeriodicSpline),
+}
+
+impl<T: crate::scalar::Real> Curve<T> for UserCurve<T> {
+    fn jet(&self, t: &T, order: usize) -> Vec<[T; 3]> {
+        match self {
+            UserCurve::Expression(c) => c.jet(t, order),
+            UserCurve::Data(s) => s.jet(t, order),
+        }
+    }
+}
+
+/// The parsed curve, before it is put into a number type.
+enum Parsed {
+    Expression(ExprCurve),
+    Data(PeriodicSpline, usize),
+}
+
+impl Parsed {
+    fn in_type<T: crate::scalar::Real>(&self, ctx: &T::Ctx) -> UserCurve<T> {
+        match self {
+            Parsed::Expression(e) => UserCurve::Expression(e.compile::<T>(ctx)),
+            Parsed::Data(s, _) => UserCurve::Data(s.clone()),
+        }
+    }
+}
+
+/// The most rows a data file may have.
+const MAX_ROWS: usize = 1_000_000;
+
+/// Read t, x, y, z rows (a header line and extra columns are allowed) and fit the periodic
+/// quintic spline; the last row must repeat the first point (a closed curve).
+fn read_data(path: &std::path::Path) -> Result<Parsed, InputError> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| InputError(format!("option --data: {}: {e}", path.display())))?;
+    let mut times = Vec::new();
+    let mut points = Vec::new();
+    for (i, line) in text
+        .lines()
+        .enumerate()
+        .filter(|(_, l)| !l.trim().is_empty())
+    {
+        let fields: Vec<&str> = line.split(',').map(str::trim).collect();
+        let numbers: Option<Vec<f64>> = fields
+            .iter()
+            .take(4)
+            .map(|f| f.parse::<f64>().ok().filter(|x| x.is_finite()))
+            .collect();
+        match numbers {
+            Some(v) if v.len() == 4 => {
+                times.push(v[0]);
+                points.push([v[1], v[2], v[3]]);
+            }
+            _ if i == 0 => continue, // a header
+            _ => {
+                return fail(format!(
+                    "option --data: line {}: expected numbers t, x, y, z",
+                    i + 1
+                ))
+            }
+        }
+        if times.len() > MAX_ROWS {
+            return fail(format!("option --data: more than {MAX_ROWS} rows"));
+        }
+    }
+    let n = times.len();
+    if n < 8 {
+        return fail("option --data: at least 8 rows (7 samples and the closing row)");
+    }
+    let size = points
+        .iter()
+        .flatten()
+        .fold(0.0f64, |m, x| m.max(x.abs()))
+        .max(1.0);
+    let gap = (0..3)
+        .map(|k| (points[n - 1][k] - points[0][k]).abs())
+        .fold(0.0, f64::max);
+    if gap > 1e-9 * size {
+        return fail(format!("option --data: the last row must repeat the first point (a closed curve); they differ by {gap:e}"));
+    }
+    PeriodicSpline::interpolate(5, &times[..n - 1], times[n - 1], &points[..n - 1])
+        .map(|s| Parsed::Data(s, n))
+        .map_err(|e| InputError(format!("option --data: {e}")))
+}
+
 /// What the user asked for.
 pub struct Request {
-    /// The curve text, `[x(t), y(t), z(t)]`.
-    pub curve: String,
+    /// The curve: an expression or a data file.
+    pub source: Source,
     /// The interval [a, b], as written.
     pub interval: (String, String),
     /// The levels, e.g. "0-10" or "2,4,6".
@@ -81,11 +179,13 @@ fn parse_levels(text: &str) -> Result<Vec<u32>, InputError> {
 }
 
 /// Check the request; return the parsed curve, interval and levels.
-fn validate(
-    r: &Request,
-) -> Result<(ExprCurve, BigRational, BigRational, Vec<u32>, u32), InputError> {
-    let curve =
-        ExprCurve::parse(&r.curve).map_err(|e| InputError(format!("option --curve: {e}")))?;
+fn validate(r: &Request) -> Result<(Parsed, BigRational, BigRational, Vec<u32>, u32), InputError> {
+    let curve = match &r.source {
+        Source::Expression(text) => Parsed::Expression(
+            ExprCurve::parse(text).map_err(|e| InputError(format!("option --curve: {e}")))?,
+        ),
+        Source::Data(path) => read_data(path)?,
+    };
     let read = |s: &str| {
         crate::scalar::parse::parse_rational(s)
             .map_err(|_| InputError(format!("option --interval: {s:?} is not a number")))
@@ -119,7 +219,7 @@ fn validate(
 /// Compute every level, reporting progress on stderr.
 fn compute(
     r: &Request,
-    curve: &ExprCurve,
+    curve: &Parsed,
     (a, b): (&BigRational, &BigRational),
     levels: &[u32],
     bits: u32,
@@ -130,7 +230,7 @@ fn compute(
     for &n in levels {
         let segments = 1usize << n;
         let e = certified_error(
-            |p| curve.compile::<Float>(&p),
+            |p| curve.in_type::<Float>(&p),
             a,
             b,
             segments,
@@ -144,7 +244,7 @@ fn compute(
         })?;
         let proven = match r.scalar {
             ScalarKind::Ball(bits) => {
-                let c = curve.compile::<Ball>(&bits);
+                let c = curve.in_type::<Ball>(&bits);
                 let (ba, bb) = (Ball::from_rational(a, &bits), Ball::from_rational(b, &bits));
                 let pw = convert(
                     &c,
@@ -165,7 +265,7 @@ fn compute(
             }
             _ => None,
         };
-        let c64 = curve.compile::<f64>(&());
+        let c64 = curve.in_type::<f64>(&());
         let f64_error = convert(
             &c64,
             &a.to_f64(),
@@ -263,11 +363,20 @@ fn f64_departs(levels: &[Level]) -> Option<usize> {
 /// Write the report for `r` into `out`.
 pub fn run(r: &Request, out: &Path) -> Result<String, Failure> {
     let (curve, a, b, levels, bits) = validate(r).map_err(|e| Failure::Usage(e.0))?;
+    let described = match (&r.source, &curve) {
+        (Source::Data(path), Parsed::Data(_, rows)) => {
+            format!("given by `{}` ({rows} rows of a closed curve; periodic quintic spline, paper 001 Sec. 6A)", path.display())
+        }
+        _ => format!("`{}`", source_text(&r.source)),
+    };
     let rows = compute(r, &curve, (&a, &b), &levels, bits)?;
     let fit = fitted_order(&rows);
     let floor = (f64_floor(&rows), f64_departs(&rows));
     let files = vec![
-        ("convergence.md".to_string(), markdown(r, &rows, fit, floor)),
+        (
+            "convergence.md".to_string(),
+            markdown(r, &described, &rows, fit, floor),
+        ),
         ("convergence.svg".to_string(), figure(&rows)),
         (
             "convergence.json".to_string(),
@@ -299,8 +408,17 @@ fn proven_text(l: &Level) -> String {
     })
 }
 
+/// The curve as the user gave it.
+fn source_text(s: &Source) -> String {
+    match s {
+        Source::Expression(text) => text.clone(),
+        Source::Data(path) => path.display().to_string(),
+    }
+}
+
 fn markdown(
     r: &Request,
+    described: &str,
     rows: &[Level],
     fit: Option<(f64, Option<f64>, usize)>,
     (floor, departs): (Option<usize>, Option<usize>),
@@ -344,11 +462,11 @@ fn markdown(
         },
     );
     format!(
-        "# Convergence of the PHODCOS conversion\n\nCurve `{}` on [{}, {}], C⁴ PH interpolants (φ* = 0) on 2ⁿ uniform segments; \
+        "# Convergence of the PHODCOS conversion\n\nCurve {} on [{}, {}], C⁴ PH interpolants (φ* = 0) on 2ⁿ uniform segments; \
          E = max over ξ of ‖γ − p‖ (paper 001, Eq. 21). Certified: MPFR at {} and {} bits (digits both agree on, at most 20 shown; all are in the JSON); proven: a \
          branch-and-bound enclosure in ball arithmetic (`--scalar ball:<bits>` only); f64: the same pipeline in double precision.\n\n\
          {}\n- fitted order: {fit_text}\n- {floor_text}\n- {departs_text}\n\n![error against segments](./convergence.svg)\n",
-        r.curve,
+        described,
         r.interval.0,
         r.interval.1,
         certified_bits(r),
@@ -440,7 +558,7 @@ fn json_rows(
         })
         .collect();
     let doc = json!({
-        "curve": r.curve,
+        "curve": source_text(&r.source),
         "interval": [r.interval.0, r.interval.1],
         "scalar": r.scalar.to_string(),
         "rows": items,
