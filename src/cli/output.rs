@@ -101,6 +101,15 @@ fn f64_value(x: f64) -> Value {
     })
 }
 
+/// The path of field `key` inside the object at `path` ("a.b"), for error messages.
+fn field_path(path: &str, key: &str) -> String {
+    if path.is_empty() {
+        key.to_string()
+    } else {
+        format!("{path}.{key}")
+    }
+}
+
 /// Render with every number as its plain string (`to_plain_string`).
 pub fn render_plain<T: Field>(out: &Out<T>) -> Value {
     match out {
@@ -172,14 +181,7 @@ pub fn render_proven(out: &Out<Ball>, path: &str) -> Result<Value, RunError> {
         Out::Object(fields) => Value::Object(
             fields
                 .iter()
-                .map(|(k, v)| {
-                    let p = if path.is_empty() {
-                        k.clone()
-                    } else {
-                        format!("{path}.{k}")
-                    };
-                    render_proven(v, &p).map(|r| (k.clone(), r))
-                })
+                .map(|(k, v)| render_proven(v, &field_path(path, k)).map(|r| (k.clone(), r)))
                 .collect::<Result<Map<_, _>, _>>()?,
         ),
         Out::Int(i) => Value::from(*i),
@@ -208,12 +210,7 @@ pub fn render_certified(lo: &Out<Float>, hi: &Out<Float>, path: &str) -> Result<
         (Out::Object(xs), Out::Object(ys)) if xs.len() == ys.len() => {
             let mut map = Map::new();
             for ((k, x), (_, y)) in xs.iter().zip(ys) {
-                let p = if path.is_empty() {
-                    k.clone()
-                } else {
-                    format!("{path}.{k}")
-                };
-                map.insert(k.clone(), render_certified(x, y, &p)?);
+                map.insert(k.clone(), render_certified(x, y, &field_path(path, k))?);
             }
             Value::Object(map)
         }
@@ -298,14 +295,9 @@ pub fn check_finite(value: &Value, path: &str, scalar: &str) -> Result<(), RunEr
             .iter()
             .enumerate()
             .try_for_each(|(i, v)| check_finite(v, &format!("{path}[{i}]"), scalar)),
-        Value::Object(map) => map.iter().try_for_each(|(k, v)| {
-            let p = if path.is_empty() {
-                k.clone()
-            } else {
-                format!("{path}.{k}")
-            };
-            check_finite(v, &p, scalar)
-        }),
+        Value::Object(map) => map
+            .iter()
+            .try_for_each(|(k, v)| check_finite(v, &field_path(path, k), scalar)),
         _ => Ok(()),
     }
 }

@@ -15,7 +15,9 @@ use super::input::{fail, InputError};
 use super::Failure;
 use crate::algo::ph::enclosure::proven_error;
 use crate::algo::ph::hermite::FreeParameters;
-use crate::algo::ph::piecewise::{certified_error, conversion_error, convert, DEFAULT_SAMPLES};
+use crate::algo::ph::piecewise::{
+    certified_error, conversion_error, convert, observed_order, DEFAULT_SAMPLES,
+};
 use crate::curve::spline::PeriodicSpline;
 use crate::curve::{Curve, ExprCurve};
 use crate::report::number::{bound_text, sig};
@@ -292,10 +294,9 @@ fn compute(
     Ok(out)
 }
 
-/// log₂(E_coarse/E_fine), `None` when either is zero.
+/// log₂(E_coarse/E_fine) (the library's observed order), `None` when either is zero.
 fn order(coarse: &Float, fine: &Float) -> Option<f64> {
-    (!coarse.is_zero() && !fine.is_zero())
-        .then(|| Float::with_val(64, coarse / fine).log2().to_f64())
+    observed_order(coarse, fine).map(|(_, order)| order.to_f64())
 }
 
 /// Student's t quantile for a two-sided 95 % interval with `df` degrees of freedom.
@@ -375,7 +376,7 @@ pub fn run(r: &Request, out: &Path) -> Result<String, Failure> {
     let files = vec![
         (
             "convergence.md".to_string(),
-            markdown(r, &described, &rows, fit, floor),
+            markdown(r, (&described, bits), &rows, fit, floor),
         ),
         ("convergence.svg".to_string(), figure(&rows)),
         (
@@ -418,7 +419,7 @@ fn source_text(s: &Source) -> String {
 
 fn markdown(
     r: &Request,
-    described: &str,
+    (described, bits): (&str, u32),
     rows: &[Level],
     fit: Option<(f64, Option<f64>, usize)>,
     (floor, departs): (Option<usize>, Option<usize>),
@@ -469,17 +470,10 @@ fn markdown(
         described,
         r.interval.0,
         r.interval.1,
-        certified_bits(r),
-        2 * certified_bits(r),
+        bits,
+        2 * bits,
         table(&["segments", "E certified", "E proven", "E f64", "observed order"], &body)
     )
-}
-
-fn certified_bits(r: &Request) -> u32 {
-    match r.scalar {
-        ScalarKind::Mpfr(b) | ScalarKind::Ball(b) => b,
-        _ => 0,
-    }
 }
 
 fn figure(rows: &[Level]) -> String {

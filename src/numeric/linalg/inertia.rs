@@ -24,34 +24,6 @@ pub fn eigenvalues_below<T: Field>(a: &Matrix<T>, shift: &T) -> Option<usize> {
     ldl_pivots(&shifted).map(|d| d.iter().filter(|p| **p < zero).count())
 }
 
-/// A proven bracket lo ≤ λ_k < hi of the k-th smallest eigenvalue of the symmetric `a`,
-/// searched around `estimate` > 0 with relative half-width `relative`, which is doubled up to
-/// `tries` times while the bracket fails (a poor estimate) or a shift hits a zero pivot.
-pub fn bracket_eigenvalue<T: Field>(
-    a: &Matrix<T>,
-    k: usize,
-    estimate: &T,
-    relative: &T,
-    tries: usize,
-) -> Option<(T, T)> {
-    let ctx = estimate.ctx();
-    let one = T::one_in(&ctx);
-    let mut width = relative.clone();
-    for _ in 0..tries {
-        let lo = estimate.clone() * &(one.clone() - &width);
-        let hi = estimate.clone() * &(one.clone() + &width);
-        if let (Some(below_lo), Some(below_hi)) =
-            (eigenvalues_below(a, &lo), eigenvalues_below(a, &hi))
-        {
-            if below_lo <= k && below_hi > k {
-                return Some((lo, hi));
-            }
-        }
-        width = width.clone() + &width;
-    }
-    None
-}
-
 /// A symmetric matrix of exact rationals scaled to integers (GMP), for fast exact inertia:
 /// the rational matrix is `entries / scale`.
 pub struct IntegerSymmetric {
@@ -187,14 +159,22 @@ mod tests {
         ]);
         let a = r.mul(&d).mul(&r.transpose());
         assert_eq!(eigenvalues_below(&a, &q(5, 1)), Some(2));
-        let (lo, hi) = bracket_eigenvalue(&a, 1, &q(41, 10), &q(1, 100), 10).unwrap();
-        assert!(lo <= q(4, 1) && q(4, 1) < hi);
-        // A wrong estimate is widened until it brackets, never accepted as it is.
-        let (lo, hi) = bracket_eigenvalue(&a, 0, &q(3, 2), &q(1, 100), 20).unwrap();
-        assert!(lo <= q(1, 1) && q(1, 1) < hi);
-        assert!(bracket_eigenvalue(&a, 0, &q(3, 2), &q(1, 100), 3).is_none());
-        // The integer (Bareiss) count agrees with the rational one at every shift.
         let fast = IntegerSymmetric::new(&a);
+        let estimate = |x: f64| rug::Float::with_val(64, x);
+        let contains = |(lo, hi): (rug::Rational, rug::Rational), v: i32| {
+            lo <= v && v < hi
+        };
+        assert!(contains(
+            fast.bracket(1, &estimate(4.1), 0.01, 10).unwrap(),
+            4
+        ));
+        // A wrong estimate is widened until it brackets, never accepted as it is.
+        assert!(contains(
+            fast.bracket(0, &estimate(1.5), 0.01, 20).unwrap(),
+            1
+        ));
+        assert!(fast.bracket(0, &estimate(1.5), 0.01, 3).is_none());
+        // The integer (Bareiss) count agrees with the rational LDLᵀ one at every shift.
         for (n, d) in [(1, 2), (3, 2), (5, 1), (17, 2), (10, 1)] {
             let shift = rug::Rational::from((n, d));
             assert_eq!(
