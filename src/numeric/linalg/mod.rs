@@ -4,6 +4,7 @@
 //! - [`gauss`]: Gaussian elimination with partial pivoting: `solve`, `inverse`, `determinant`.
 //!   Exact in rationals (any non-zero pivot is exact; the largest one is chosen anyway so
 //!   the same code is the backward-stable choice in floating point).
+//! - [`banded`]: banded and cyclic banded elimination, O(n) for the systems of spline fits.
 //! - [`svd`]: singular values by one-sided Jacobi at any precision.
 //! - [`inertia`]: proven eigenvalue brackets of symmetric matrices (Sylvester's law of inertia).
 //! - [`reference`](mod@reference): the same quantities in f64 through nalgebra, the reference our generic
@@ -12,6 +13,7 @@
 //! nalgebra's decompositions need `ComplexField`, which neither `rug::Float` nor
 //! `BigRational` implement, hence these short generic routines (DESIGN.md, "Scalars").
 
+pub mod banded;
 pub mod gauss;
 pub mod inertia;
 pub mod reference;
