@@ -1080,28 +1080,55 @@ fn report_convergence_writes_markdown_svg_and_json_for_a_users_curve() {
             .unwrap();
     assert_eq!(doc["rows"].as_array().unwrap().len(), 4);
     let _ = std::fs::remove_dir_all(&dir);
-    // Data that do not close the curve are refused on one line.
-    std::fs::write(
-        &csv,
-        "0,1,0,0\n1,2,0,0\n2,3,0,0\n3,4,0,0\n4,5,0,0\n5,6,0,0\n6,7,0,0\n7,8,0,0\n",
-    )
-    .unwrap();
-    let open = trajverify(
-        &[
-            "report",
-            "convergence",
-            "--data",
-            csv.to_str().unwrap(),
-            "--interval",
-            "0",
-            "1",
-            "--out",
-            out,
-        ],
-        "",
-    );
-    assert_eq!(open.code, 2, "{}", open.stderr);
-    assert!(open.stderr.contains("closed curve"), "{}", open.stderr);
+    // Data that do not close: the clamped quintic spline, proven with ball; the enclosure
+    // holds the certified value.
+    let open_rows: Vec<String> = (0..=40)
+        .map(|i| {
+            let t = f64::from(i) / 20.0;
+            format!("{t},{},{},{}", t.cos(), (2.0 * t).sin(), t * t / 3.0)
+        })
+        .collect();
+    std::fs::write(&csv, open_rows.join("\n")).unwrap();
+    let open_args = |interval: &'static str| {
+        vec![
+            "report".to_string(),
+            "convergence".into(),
+            "--data".into(),
+            csv.to_str().unwrap().into(),
+            "--interval".into(),
+            "0".into(),
+            interval.into(),
+            "--levels".into(),
+            "0-2".into(),
+            "--scalar".into(),
+            "ball:128".into(),
+            "--out".into(),
+            out.into(),
+        ]
+    };
+    let args = open_args("2");
+    let open = trajverify(&args.iter().map(String::as_str).collect::<Vec<_>>(), "");
+    assert_eq!(open.code, 0, "{}", open.stderr);
+    let doc: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("convergence.json")).unwrap())
+            .unwrap();
+    for row in doc["rows"].as_array().unwrap() {
+        let number = |v: &Value| v.as_str().unwrap().parse::<f64>().unwrap();
+        let certified = number(&row["error_certified"]);
+        let (lower, upper) = (
+            number(&row["error_proven"]["lower"]),
+            number(&row["error_proven"]["upper"]),
+        );
+        assert!(lower <= certified && certified <= upper, "{row}");
+    }
+    let md = std::fs::read_to_string(dir.join("convergence.md")).unwrap();
+    assert!(md.contains("41 rows of an open curve"), "{md}");
+    let _ = std::fs::remove_dir_all(&dir);
+    // An open curve is known only between its first and last times.
+    let args = open_args("3");
+    let outside = trajverify(&args.iter().map(String::as_str).collect::<Vec<_>>(), "");
+    assert_eq!(outside.code, 2, "{}", outside.stderr);
+    assert!(outside.stderr.contains("--interval"), "{}", outside.stderr);
     assert!(!dir.exists());
     let _ = std::fs::remove_file(&csv);
 }

@@ -140,8 +140,9 @@ pub enum ReportKind {
             conflicts_with = "data"
         )]
         curve: Option<String>,
-        /// Or a CSV file of samples t, x, y, z of a closed curve (the last row repeats the first
-        /// point one period later), fitted by the periodic quintic spline of paper 001, Sec. 6A.
+        /// Or a CSV file of samples t, x, y, z fitted by a C⁴ quintic spline: periodic (paper 001,
+        /// Sec. 6A) when the last row repeats the first point, clamped otherwise (then the
+        /// interval must lie within the first and last times).
         #[arg(long, value_name = "CSV")]
         data: Option<PathBuf>,
         /// The parameter interval a b.

@@ -18,7 +18,7 @@ use crate::algo::ph::hermite::FreeParameters;
 use crate::algo::ph::piecewise::{
     certified_error, conversion_error, convert, observed_order, DEFAULT_SAMPLES,
 };
-use crate::curve::spline::PeriodicSpline;
+use crate::curve::spline::{ClampedSpline, PeriodicSpline};
 use crate::curve::{Curve, ExprCurve};
 use crate::report::number::{bound_text, sig};
 use crate::report::plot::{self, Corner, Panel, Series, Style};
@@ -48,22 +48,32 @@ struct Level {
 pub enum Source {
     /// An expression `[x(t), y(t), z(t)]`.
     Expression(String),
-    /// A CSV file of samples t, x, y, z of a closed curve (the last row repeats the first
-    /// point one period later), fitted by the periodic quintic spline of paper 001, Sec. 6A.
+    /// A CSV file of samples t, x, y, z: a closed curve when the last row repeats the first
+    /// point (one period later), fitted by the periodic quintic spline of paper 001, Sec. 6A;
+    /// otherwise an open curve, fitted by the clamped quintic spline (C⁴ either way).
     Data(std::path::PathBuf),
 }
 
 /// The curve in one number type: an expression compiled for it, or the data's spline.
 enum UserCurve<T> {
     Expression(crate::curve::CompiledCurve<T>),
-    Data(PeriodicSpline),
+    Closed(PeriodicSpline),
+    Open(ClampedSpline),
 }
 
 impl<T: crate::scalar::Real> Curve<T> for UserCurve<T> {
     fn jet(&self, t: &T, order: usize) -> Vec<[T; 3]> {
         match self {
             UserCurve::Expression(c) => c.jet(t, order),
-            UserCurve::Data(s) => s.jet(t, order),
+            UserCurve::Closed(s) => s.jet(t, order),
+            UserCurve::Open(s) => s.jet(t, order),
+        }
+    }
+    fn seam_bound(&self, lo: f64, hi: f64) -> f64 {
+        match self {
+            UserCurve::Expression(c) => c.seam_bound(lo, hi),
+            UserCurve::Closed(s) => Curve::<T>::seam_bound(s, lo, hi),
+            UserCurve::Open(s) => Curve::<T>::seam_bound(s, lo, hi),
         }
     }
 }
@@ -71,14 +81,17 @@ impl<T: crate::scalar::Real> Curve<T> for UserCurve<T> {
 /// The parsed curve, before it is put into a number type.
 enum Parsed {
     Expression(ExprCurve),
-    Data(PeriodicSpline, usize),
+    /// The spline through the data and the number of rows.
+    Closed(PeriodicSpline, usize),
+    Open(ClampedSpline, usize),
 }
 
 impl Parsed {
     fn in_type<T: crate::scalar::Real>(&self, ctx: &T::Ctx) -> UserCurve<T> {
         match self {
             Parsed::Expression(e) => UserCurve::Expression(e.compile::<T>(ctx)),
-            Parsed::Data(s, _) => UserCurve::Data(s.clone()),
+            Parsed::Closed(s, _) => UserCurve::Closed(s.clone()),
+            Parsed::Open(s, _) => UserCurve::Open(s.clone()),
         }
     }
 }
@@ -87,7 +100,8 @@ impl Parsed {
 const MAX_ROWS: usize = 1_000_000;
 
 /// Read t, x, y, z rows (a header line and extra columns are allowed) and fit the periodic
-/// quintic spline; the last row must repeat the first point (a closed curve).
+/// quintic spline when the last row repeats the first point (a closed curve), the clamped
+/// one otherwise.
 fn read_data(path: &std::path::Path) -> Result<Parsed, InputError> {
     let text = std::fs::read_to_string(path)
         .map_err(|e| InputError(format!("option --data: {}: {e}", path.display())))?;
@@ -122,8 +136,8 @@ fn read_data(path: &std::path::Path) -> Result<Parsed, InputError> {
         }
     }
     let n = times.len();
-    if n < 8 {
-        return fail("option --data: at least 8 rows (7 samples and the closing row)");
+    if n < 6 {
+        return fail("option --data: at least 6 rows (a quintic spline needs 6 samples)");
     }
     let size = points
         .iter()
@@ -133,12 +147,21 @@ fn read_data(path: &std::path::Path) -> Result<Parsed, InputError> {
     let gap = (0..3)
         .map(|k| (points[n - 1][k] - points[0][k]).abs())
         .fold(0.0, f64::max);
-    if gap > 1e-9 * size {
-        return fail(format!("option --data: the last row must repeat the first point (a closed curve); they differ by {gap:e}"));
-    }
-    PeriodicSpline::interpolate(5, &times[..n - 1], times[n - 1], &points[..n - 1])
-        .map(|s| Parsed::Data(s, n))
-        .map_err(|e| InputError(format!("option --data: {e}")))
+    let start = Instant::now();
+    let fitted = if gap <= 1e-9 * size {
+        if n < 8 {
+            return fail("option --data: a closed curve needs at least 8 rows (7 samples and the closing row)");
+        }
+        PeriodicSpline::interpolate(5, &times[..n - 1], times[n - 1], &points[..n - 1])
+            .map(|s| Parsed::Closed(s, n))
+    } else {
+        ClampedSpline::interpolate(5, &times, &points).map(|s| Parsed::Open(s, n))
+    };
+    eprintln!(
+        "fitted the quintic spline through {n} rows, {:.1} s",
+        start.elapsed().as_secs_f64()
+    );
+    fitted.map_err(|e| InputError(format!("option --data: {e}")))
 }
 
 /// What the user asked for.
@@ -195,6 +218,13 @@ fn validate(r: &Request) -> Result<(Parsed, BigRational, BigRational, Vec<u32>, 
     let (a, b) = (read(&r.interval.0)?, read(&r.interval.1)?);
     if b <= a {
         return fail("option --interval: need a < b");
+    }
+    if let Parsed::Open(spline, _) = &curve {
+        // An open curve is known only between its first and last samples.
+        let (first, last) = spline.domain();
+        if a.to_f64() < first || b.to_f64() > last {
+            return fail(format!("option --interval: an open curve's data cover only [{first}, {last}] (the first and last times)"));
+        }
     }
     let levels = parse_levels(&r.levels)?;
     let bits = match r.scalar {
@@ -365,8 +395,11 @@ fn f64_departs(levels: &[Level]) -> Option<usize> {
 pub fn run(r: &Request, out: &Path) -> Result<String, Failure> {
     let (curve, a, b, levels, bits) = validate(r).map_err(|e| Failure::Usage(e.0))?;
     let described = match (&r.source, &curve) {
-        (Source::Data(path), Parsed::Data(_, rows)) => {
+        (Source::Data(path), Parsed::Closed(_, rows)) => {
             format!("given by `{}` ({rows} rows of a closed curve; periodic quintic spline, paper 001 Sec. 6A)", path.display())
+        }
+        (Source::Data(path), Parsed::Open(_, rows)) => {
+            format!("given by `{}` ({rows} rows of an open curve; quintic spline on a clamped knot vector with averaged interior knots, C⁴)", path.display())
         }
         _ => format!("`{}`", source_text(&r.source)),
     };

@@ -14,11 +14,23 @@ use taylor::Taylor;
 pub trait Curve<T: Real>: Sync {
     /// γ(t), γ′(t), …, γ⁽ᵒʳᵈᵉʳ⁾(t): entry k is the k-th derivative.
     fn jet(&self, t: &T, order: usize) -> Vec<[T; 3]>;
+
+    /// An upper bound of ‖γ(x) − P(x)‖ for x in [lo, hi], where P is the analytic piece that
+    /// [`Curve::jet`] describes at any point of [lo, hi] (its analytic continuation past the
+    /// piece's ends). Zero, the default, for a curve analytic on [lo, hi]; for a spline, the
+    /// terms its knots inside add ([`spline`], "Seams"). Proven enclosures need it: their
+    /// Taylor models are built from one piece and would not hold across a knot.
+    fn seam_bound(&self, _lo: f64, _hi: f64) -> f64 {
+        0.0
+    }
 }
 
 impl<T: Real, C: Curve<T> + ?Sized> Curve<T> for &C {
     fn jet(&self, t: &T, order: usize) -> Vec<[T; 3]> {
         (**self).jet(t, order)
+    }
+    fn seam_bound(&self, lo: f64, hi: f64) -> f64 {
+        (**self).seam_bound(lo, hi)
     }
 }
 

@@ -1,5 +1,6 @@
-//! Periodic interpolating B-splines of odd degree on non-uniform knots: the smooth curve
-//! through sampled orbit data (paper 001, Sec. 6A).
+//! Interpolating B-splines of odd degree through sampled data: periodic on non-uniform knots
+//! (the smooth closed curve through orbit data, paper 001, Sec. 6A) and open on a clamped
+//! knot vector ([`ClampedSpline`], for data that do not close).
 //!
 //! The spline s(t) = Σ_j c_j B_j(t) of degree p = 2r+1 has one B-spline centred on every data
 //! time t_j (support [t_{j−r−1}, t_{j+r+1}], knots extended periodically with the period T),
@@ -8,14 +9,31 @@
 //! conversion needs C⁴ Hermite data, hence p = 5 (the paper's fourth-order spline is C³ or,
 //! read as degree 4, still only C³).
 //!
-//! The coefficients are solved once in f64 (Gaussian elimination with partial pivoting) and
-//! then *define* the curve: [`PeriodicSpline::jet`] evaluates that exact piecewise
-//! polynomial and its derivatives in any precision (de Boor–Cox derivatives, The NURBS Book,
-//! Algorithm A2.3), so an MPFR evaluation is the same curve as the f64 one, not a refit.
+//! The coefficients are solved once (banded elimination with partial pivoting in 128-bit
+//! MPFR, rounded to nearest f64: the exact interpolant's coefficients, correctly rounded,
+//! independent of the solver) and then *define* the curve: `jet` evaluates that exact
+//! piecewise polynomial and its derivatives in any precision (de Boor–Cox derivatives, The
+//! NURBS Book, Algorithm A2.3), so an MPFR evaluation is the same curve as the f64 one, not a
+//! refit.
+//!
+//! # Seams
+//!
+//! Adjacent pieces of a C^{p−1} spline of degree p agree in p derivatives at their knot κ, so
+//! P_right(x) − P_left(x) = J_κ (x − κ)^p/p! with J_κ the jump of the p-th derivative. Hence
+//! for any piece P meeting an interval X of width w, and x ∈ X,
+//! ‖γ(x) − P(x)‖ ≤ Σ_{κ ∈ X} ‖J_κ‖ w^p/p!, the knots inside X being the only ones between P
+//! and x. [`Curve::seam_bound`] returns this sum, rounded up, with each ‖J_κ‖ bounded in ball
+//! arithmetic from the f64 coefficients: the proven enclosures of `algo::ph::enclosure` add
+//! it to their Taylor remainders, which are otherwise valid only within one piece.
 
 use super::Curve;
-use crate::numeric::linalg::{gauss, Matrix};
-use crate::scalar::{Field, Real};
+use crate::numeric::linalg::banded::{Banded, Cyclic};
+use crate::numeric::linalg::Matrix;
+use crate::scalar::ball::Ball;
+use crate::scalar::{Field, Float, Real};
+
+/// The precision the interpolation systems are solved in before rounding to f64.
+const FIT_BITS: u32 = 128;
 
 /// A periodic spline curve in ℝ³.
 #[derive(Clone, Debug)]
@@ -76,20 +94,24 @@ impl PeriodicSpline {
             period_end,
             coefficients: vec![[0.0; 3]; n],
         };
-        let mut a = Matrix::from_fn(n, n, |_, _| 0.0);
-        for i in 0..n {
-            let (first, values) = spline.basis_derivatives(&times[i], 0);
+        // Rows have p nonzeros around the diagonal; the band of half-width r + 1 wraps around
+        // the corners (periodic knots), a cyclic banded system solved in O(N). It is solved
+        // in 128-bit MPFR and rounded to nearest f64, so the curve is the exact interpolant
+        // of the data with correctly rounded coefficients, whatever the elimination order.
+        let half = degree.div_ceil(2);
+        let mut a = Cyclic::zeros(n, half, half, &FIT_BITS);
+        for (i, time) in times.iter().enumerate() {
+            let t = Float::from_f64(*time, &FIT_BITS);
+            let (first, values) = spline.basis_derivatives(&t, 0);
             for (j, v) in values[0].iter().enumerate() {
                 let col = (first + j as i64).rem_euclid(n as i64) as usize;
-                a[(i, col)] += *v;
+                a.add(i, col, v);
             }
         }
-        for d in 0..3 {
-            let b: Vec<f64> = points.iter().map(|p| p[d]).collect();
-            let c = gauss::solve(&a, &b).map_err(|_| SplineError::Singular)?;
-            for (j, cj) in c.into_iter().enumerate() {
-                spline.coefficients[j][d] = cj;
-            }
+        let rhs = Matrix::from_fn(n, 3, |i, d| Float::from_f64(points[i][d], &FIT_BITS));
+        let c = a.solve(&rhs).map_err(|_| SplineError::Singular)?;
+        for (j, cj) in spline.coefficients.iter_mut().enumerate() {
+            *cj = [c[(j, 0)].to_f64(), c[(j, 1)].to_f64(), c[(j, 2)].to_f64()];
         }
         Ok(spline)
     }
@@ -112,8 +134,6 @@ impl PeriodicSpline {
     /// p+1 B-splines nonzero on the knot span containing t (t reduced into one period).
     fn basis_derivatives<T: Field>(&self, t: &T, order: usize) -> (i64, Vec<Vec<T>>) {
         let ctx = t.ctx();
-        let p = self.degree;
-        let r = (p as i64 - 1) / 2;
         // Reduce t into [t_0, t_N) and find the span i with t_i ≤ t < t_{i+1}.
         let t0 = T::from_f64(self.times[0], &ctx);
         let period = T::from_f64(self.period(), &ctx);
@@ -134,15 +154,57 @@ impl PeriodicSpline {
                 hi = mid;
             }
         }
-        let span = lo as i64;
+        self.on_span(lo as i64, &t, order)
+    }
+
+    /// As [`Self::basis_derivatives`], on the polynomial piece of span i (t_i ≤ t < t_{i+1},
+    /// i taken periodically), evaluated at t wherever t is.
+    fn on_span<T: Field>(&self, span: i64, t: &T, order: usize) -> (i64, Vec<Vec<T>>) {
+        let ctx = t.ctx();
+        let p = self.degree;
+        let r = (p as i64 - 1) / 2;
         // B_j has support [τ_{j−r−1}, τ_{j+r+1}]: as the NURBS-book N_{k,p} with knots
         // u_k = τ_{k−r−1}, B_j = N_{j}. On [τ_i, τ_{i+1}] = [u_s, u_{s+1}] with s = i + r + 1
         // the nonzero functions are N_{s−p} … N_s.
         let s = span + r + 1;
         let u = |k: i64| self.knot::<T>(k - r - 1, &ctx);
-        let ders = ders_basis_funs(s, &t, p, order, &u);
+        let ders = ders_basis_funs(s, t, p, order, &u);
         (s - p as i64, ders)
     }
+
+    /// An upper bound of ‖P_i^(p) − P_{i−1}^(p)‖ at the knot t_i (module doc, "Seams").
+    fn jump_bound(&self, i: i64) -> f64 {
+        let n = self.n() as i64;
+        let t = Ball::from_f64(self.times[i.rem_euclid(n) as usize], &FIT_BITS);
+        let top = |span: i64| {
+            let (first, ders) = self.on_span(span, &t, self.degree);
+            combine(&ders, self.degree, |j| {
+                &self.coefficients[(first + j as i64).rem_euclid(n) as usize]
+            })
+            .swap_remove(self.degree)
+        };
+        norm_up(&top(i), &top(i - 1))
+    }
+}
+
+/// ‖a − b‖ rounded up, for balls.
+fn norm_up(a: &[Ball; 3], b: &[Ball; 3]) -> f64 {
+    let squares: f64 = (0..3)
+        .map(|d| {
+            let diff = a[d].clone() - &b[d];
+            let top = diff.upper().abs().max(&diff.lower().abs());
+            top.to_f64_round(rug::float::Round::Up).powi(2)
+        })
+        .sum();
+    (squares * (1.0 + 1e-12)).sqrt() * (1.0 + 1e-12)
+}
+
+/// Σ_κ J_κ w^p/p! rounded up: the seam bound of knots with jump bounds `jumps` on an
+/// interval of width w (module doc, "Seams").
+fn seam_sum(jumps: impl Iterator<Item = f64>, width: f64, degree: usize) -> f64 {
+    let total: f64 = jumps.sum::<f64>() * (1.0 + 1e-12);
+    let factorial: f64 = (1..=degree).map(|k| k as f64).product();
+    total * (width * (1.0 + 1e-12)).powi(degree as i32) / factorial * (1.0 + 1e-12)
 }
 
 /// The NURBS Book, Algorithm A2.3: derivatives 0…n of the p+1 nonzero B-splines
@@ -221,23 +283,203 @@ fn ders_basis_funs<T: Field>(
 
 impl<T: Real> Curve<T> for PeriodicSpline {
     fn jet(&self, t: &T, order: usize) -> Vec<[T; 3]> {
-        let ctx = t.ctx();
         let (first, ders) = self.basis_derivatives(t, order);
         let n = self.n() as i64;
-        (0..=order)
-            .map(|k| {
-                let mut v = [T::zero_in(&ctx), T::zero_in(&ctx), T::zero_in(&ctx)];
-                if k < ders.len() {
-                    for (j, b) in ders[k].iter().enumerate() {
-                        let c = &self.coefficients[(first + j as i64).rem_euclid(n) as usize];
-                        for d in 0..3 {
-                            v[d].mul_add_assign(b, &T::from_f64(c[d], &ctx));
-                        }
+        combine(&ders, order, |j| {
+            &self.coefficients[(first + j as i64).rem_euclid(n) as usize]
+        })
+    }
+
+    fn seam_bound(&self, lo: f64, hi: f64) -> f64 {
+        // Every knot t_i + mT in [lo, hi] (widened, so rounding can only add knots).
+        let (lo, hi) = widen(lo, hi);
+        let (t0, period, n) = (self.times[0], self.period(), self.n() as i64);
+        if !(lo.is_finite() && hi.is_finite()) {
+            return f64::INFINITY;
+        }
+        let first_wrap = ((lo - self.period_end) / period).floor() as i64 - 1;
+        let last_wrap = ((hi - t0) / period).ceil() as i64 + 1;
+        if last_wrap - first_wrap > 1 + 4 * n.max(1) {
+            return f64::INFINITY; // absurdly wide: no useful bound
+        }
+        // Per wrap m, the times with lo ≤ t_i + mT ≤ hi by a binary search (the widening
+        // makes up for the rounding of t_i + mT, so no knot is missed).
+        let knots = (first_wrap..=last_wrap).flat_map(|m| {
+            let shift = m as f64 * period;
+            let first = self.times.partition_point(|&t| t + shift < lo);
+            let last = self.times.partition_point(|&t| t + shift <= hi);
+            first as i64..last.max(first) as i64
+        });
+        let jumps = knots.map(|i| self.jump_bound(i));
+        seam_sum(jumps, hi - lo, self.degree)
+    }
+}
+
+/// [lo, hi] widened by a relative 1e-12 of its magnitude on each side.
+fn widen(lo: f64, hi: f64) -> (f64, f64) {
+    let margin = 1e-12 * (lo.abs().max(hi.abs()) + (hi - lo)) + f64::MIN_POSITIVE;
+    (lo - margin, hi + margin)
+}
+
+/// Σ_j c_j B_j^(k)(t) for k = 0…order, from the derivatives of the nonzero B-splines
+/// (`ders[k][j]`, zero beyond the degree) and their coefficients.
+fn combine<'a, T: Real>(
+    ders: &[Vec<T>],
+    order: usize,
+    coefficient: impl Fn(usize) -> &'a [f64; 3],
+) -> Vec<[T; 3]> {
+    let ctx = ders[0][0].ctx();
+    (0..=order)
+        .map(|k| {
+            let mut v = [T::zero_in(&ctx), T::zero_in(&ctx), T::zero_in(&ctx)];
+            if k < ders.len() {
+                for (j, b) in ders[k].iter().enumerate() {
+                    let c = coefficient(j);
+                    for d in 0..3 {
+                        v[d].mul_add_assign(b, &T::from_f64(c[d], &ctx));
                     }
                 }
-                v
-            })
-            .collect()
+            }
+            v
+        })
+        .collect()
+}
+
+/// An open interpolating spline in ℝ³ of odd degree p on a clamped knot vector: p + 1 knots
+/// at each end and interior knots at the averages of p consecutive data times (The NURBS
+/// Book, Eq. 9.8, the choice that satisfies Schoenberg–Whitney, so the collocation system is
+/// nonsingular). Interior knots are simple, so the spline is C^{p−1}: C⁴ for p = 5.
+#[derive(Clone, Debug)]
+pub struct ClampedSpline {
+    /// Degree p.
+    pub degree: usize,
+    /// The knot vector u_0 … u_{N+p} (N data points).
+    pub knots: Vec<f64>,
+    /// B-spline coefficients, one per data point.
+    pub coefficients: Vec<[f64; 3]>,
+}
+
+impl ClampedSpline {
+    /// Interpolate points x_i at strictly increasing times t_i.
+    pub fn interpolate(
+        degree: usize,
+        times: &[f64],
+        points: &[[f64; 3]],
+    ) -> Result<Self, SplineError> {
+        let n = times.len();
+        if n < degree + 1 || points.len() != n {
+            return Err(SplineError::TooFewPoints(degree + 1));
+        }
+        if let Some(i) = (1..n).find(|&i| times[i] <= times[i - 1]) {
+            return Err(SplineError::NotIncreasing(i));
+        }
+        let mut knots = vec![times[0]; degree + 1];
+        for j in 1..n - degree {
+            let sum: f64 = times[j..j + degree].iter().sum();
+            knots.push(sum / degree as f64);
+        }
+        knots.extend(std::iter::repeat_n(times[n - 1], degree + 1));
+        let mut spline = ClampedSpline {
+            degree,
+            knots,
+            coefficients: vec![[0.0; 3]; n],
+        };
+        // Row i has its p + 1 nonzeros in columns span − p … span; the band is measured.
+        let rows: Vec<(usize, Vec<Float>)> = times
+            .iter()
+            .map(|t| spline.basis_derivatives(&Float::from_f64(*t, &FIT_BITS), 0))
+            .map(|(first, ders)| (first, ders.into_iter().next().unwrap_or_default()))
+            .collect();
+        let lower = rows.iter().enumerate().map(|(i, r)| i.saturating_sub(r.0));
+        let upper = rows
+            .iter()
+            .enumerate()
+            .map(|(i, r)| (r.0 + degree).saturating_sub(i));
+        let mut a = Banded::zeros(
+            n,
+            lower.max().unwrap_or(0),
+            upper.max().unwrap_or(0),
+            &FIT_BITS,
+        );
+        for (i, (first, values)) in rows.iter().enumerate() {
+            for (j, v) in values.iter().enumerate() {
+                a.add(i, first + j, v);
+            }
+        }
+        let rhs = Matrix::from_fn(n, 3, |i, d| Float::from_f64(points[i][d], &FIT_BITS));
+        let c = a.solve(rhs).map_err(|_| SplineError::Singular)?;
+        for (j, cj) in spline.coefficients.iter_mut().enumerate() {
+            *cj = [c[(j, 0)].to_f64(), c[(j, 1)].to_f64(), c[(j, 2)].to_f64()];
+        }
+        Ok(spline)
+    }
+
+    /// The data's time range [t_0, t_{N−1}].
+    pub fn domain(&self) -> (f64, f64) {
+        (self.knots[0], self.knots[self.knots.len() - 1])
+    }
+
+    /// The index of the first nonzero B-spline at t and the derivatives 0…`order` of the
+    /// p + 1 B-splines nonzero there (outside the domain, the end pieces extended).
+    fn basis_derivatives<T: Field>(&self, t: &T, order: usize) -> (usize, Vec<Vec<T>>) {
+        let ctx = t.ctx();
+        let p = self.degree;
+        let last = self.knots.len() - p - 2;
+        // The span s in p … N−1 with u_s ≤ t < u_{s+1} (the last span is closed).
+        let (mut lo, mut hi) = (p, last + 1);
+        while hi - lo > 1 {
+            let mid = (lo + hi) / 2;
+            if *t >= T::from_f64(self.knots[mid], &ctx) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        self.on_span(lo, t, order)
+    }
+
+    /// As [`Self::basis_derivatives`], on the polynomial piece of span s (p ≤ s ≤ N − 1).
+    fn on_span<T: Field>(&self, s: usize, t: &T, order: usize) -> (usize, Vec<Vec<T>>) {
+        let ctx = t.ctx();
+        let knot = |k: i64| T::from_f64(self.knots[k as usize], &ctx);
+        (
+            s - self.degree,
+            ders_basis_funs(s as i64, t, self.degree, order, &knot),
+        )
+    }
+
+    /// An upper bound of the jump of the p-th derivative at the interior knot u_s
+    /// (p < s < N), between spans s − 1 and s.
+    fn jump_bound(&self, s: usize) -> f64 {
+        let t = Ball::from_f64(self.knots[s], &FIT_BITS);
+        let top = |span: usize| {
+            let (first, ders) = self.on_span(span, &t, self.degree);
+            combine(&ders, self.degree, |j| &self.coefficients[first + j]).swap_remove(self.degree)
+        };
+        norm_up(&top(s), &top(s - 1))
+    }
+}
+
+impl<T: Real> Curve<T> for ClampedSpline {
+    fn jet(&self, t: &T, order: usize) -> Vec<[T; 3]> {
+        let (first, ders) = self.basis_derivatives(t, order);
+        combine(&ders, order, |j| &self.coefficients[first + j])
+    }
+
+    fn seam_bound(&self, lo: f64, hi: f64) -> f64 {
+        let (lo, hi) = widen(lo, hi);
+        if !(lo.is_finite() && hi.is_finite()) {
+            return f64::INFINITY;
+        }
+        let p = self.degree;
+        // Interior knots u_{p+1} … u_{N−1} inside [lo, hi] (sorted: two binary searches).
+        let first = self.knots.partition_point(|&k| k < lo).max(p + 1);
+        let last = self
+            .knots
+            .partition_point(|&k| k <= hi)
+            .min(self.knots.len() - p - 1);
+        let jumps = (first..last.max(first)).map(|s| self.jump_bound(s));
+        seam_sum(jumps, hi - lo, p)
     }
 }
 
@@ -282,5 +524,133 @@ mod tests {
             }
             // The fifth derivative jumps at a knot (C⁴, not C⁵) in general.
         }
+    }
+
+    #[test]
+    fn clamped_quintic_reproduces_quintic_polynomials_and_is_c4() {
+        // Degree-5 polynomials lie in the spline space, so their interpolant is themselves.
+        let poly = |t: f64| {
+            [
+                t.powi(5) - 2.0 * t * t,
+                1.0 - t.powi(3),
+                0.5 * t.powi(4) + t,
+            ]
+        };
+        let times: Vec<f64> = (0..17)
+            .map(|i| {
+                let u = i as f64 / 16.0;
+                u * u * 1.5 - 0.25
+            })
+            .collect();
+        let points: Vec<[f64; 3]> = times.iter().map(|&t| poly(t)).collect();
+        let s = ClampedSpline::interpolate(5, &times, &points).unwrap();
+        assert_eq!(s.domain(), (times[0], times[16]));
+        for t in [-0.25, -0.1, 0.3337, 0.9, 1.25] {
+            let j = Curve::<f64>::jet(&s, &t, 5);
+            let exact = poly(t);
+            for d in 0..3 {
+                assert!((j[0][d] - exact[d]).abs() < 1e-12, "value at {t}");
+            }
+            // Fifth derivative of x: 120 everywhere.
+            assert!((j[5][0] - 120.0).abs() < 1e-6, "x^(5) at {t}: {}", j[5][0]);
+        }
+        // A non-polynomial is C⁴ across an interior knot, not C⁵.
+        let wave: Vec<[f64; 3]> = times
+            .iter()
+            .map(|&t| [t.sin(), (3.0 * t).cos(), 0.0])
+            .collect();
+        let w = ClampedSpline::interpolate(5, &times, &wave).unwrap();
+        let knot = w.knots[9];
+        let l = Curve::<f64>::jet(&w, &(knot - 1e-9), 5);
+        let r = Curve::<f64>::jet(&w, &(knot + 1e-9), 5);
+        for k in 0..=4 {
+            assert!((l[k][1] - r[k][1]).abs() < 1e-4, "order {k}");
+        }
+        assert!(
+            (l[5][1] - r[5][1]).abs() > 1e-3,
+            "the fifth derivative jumps"
+        );
+        assert_eq!(
+            ClampedSpline::interpolate(5, &[0.0, 1.0, 1.0, 2.0, 3.0, 4.0], &[[0.0; 3]; 6]).err(),
+            Some(SplineError::NotIncreasing(2))
+        );
+    }
+
+    /// ‖γ(x) − P(x)‖ at `samples` points of [lo, hi], P the piece of `span` evaluated by
+    /// `piece`, against the seam bound.
+    fn check_seams(
+        curve: &dyn Curve<Float>,
+        piece: &dyn Fn(&Float) -> [Float; 3],
+        (lo, hi): (f64, f64),
+        bound: f64,
+    ) -> f64 {
+        let mut largest = 0.0f64;
+        for i in 0..=200 {
+            let x = Float::with_val(256, lo + (hi - lo) * f64::from(i) / 200.0);
+            let g = curve.jet(&x, 0).swap_remove(0);
+            let p = piece(&x);
+            let d: f64 = (0..3)
+                .map(|k| Float::with_val(256, &g[k] - &p[k]).to_f64().powi(2))
+                .sum::<f64>()
+                .sqrt();
+            assert!(d <= bound, "{d:e} > seam bound {bound:e} at {x}");
+            largest = largest.max(d);
+        }
+        largest
+    }
+
+    #[test]
+    fn seam_bounds_cover_the_distance_to_a_neighbouring_piece() {
+        let times: Vec<f64> = (0..30)
+            .map(|i| {
+                let u = f64::from(i) / 30.0;
+                u + 0.02 * (6.0 * u).sin()
+            })
+            .collect();
+        let pts: Vec<[f64; 3]> = times
+            .iter()
+            .map(|&t| [(6.0 * t).cos(), (4.0 * t).sin(), t * t])
+            .collect();
+        let closed = PeriodicSpline::interpolate(5, &times, 1.0, &pts).unwrap();
+        let open = ClampedSpline::interpolate(5, &times, &pts).unwrap();
+        let closed = &closed;
+        let piece_closed = |span: i64| {
+            move |x: &Float| {
+                let (first, ders) = closed.on_span(span, x, 0);
+                combine(&ders, 0, |j| {
+                    &closed.coefficients[(first + j as i64).rem_euclid(30) as usize]
+                })
+                .swap_remove(0)
+            }
+        };
+        // Around knots 10–12, from span 10; and across the period's end from span 29.
+        for (span, window) in [
+            (10i64, (times[10] - 0.01, times[12] + 0.02)),
+            (29, (0.99, 1.03)),
+        ] {
+            let bound = Curve::<Float>::seam_bound(closed, window.0, window.1);
+            let seen = check_seams(closed, &piece_closed(span), window, bound);
+            assert!(
+                seen > 0.0 && bound < 1e4 * seen,
+                "bound {bound:e}, seen {seen:e}"
+            );
+        }
+        // Inside one span there is no seam.
+        assert_eq!(
+            Curve::<Float>::seam_bound(closed, times[3] + 1e-3, times[4] - 1e-3),
+            0.0
+        );
+        let s = 5 + 8; // span of the clamped knot vector
+        let window = (open.knots[s] - 0.02, open.knots[s + 2] + 0.01);
+        let piece_open = |x: &Float| {
+            let (first, ders) = open.on_span(s, x, 0);
+            combine(&ders, 0, |j| &open.coefficients[first + j]).swap_remove(0)
+        };
+        let bound = Curve::<Float>::seam_bound(&open, window.0, window.1);
+        let seen = check_seams(&open, &piece_open, window, bound);
+        assert!(
+            seen > 0.0 && bound < 1e4 * seen,
+            "bound {bound:e}, seen {seen:e}"
+        );
     }
 }

@@ -9,7 +9,10 @@
 //! |r_i(s)| ≤ max_{x ∈ X} |γ_i^(18)(x)| (hω)^18/18!,
 //!
 //! since p has degree 17 (its 18th derivative vanishes) and X = t_k + h[u_a, u_b] is covered
-//! by one ball on which the curve's jet is evaluated. A piece is halved until that remainder
+//! by one ball on which the curve's jet is evaluated. For a piecewise curve (a spline through
+//! data) the jet describes one polynomial piece P, and ‖γ − P‖ ≤ the curve's seam bound on X
+//! ([`Curve::seam_bound`]: the knots inside X) is added to the remainder, so a piece that
+//! straddles a knot is halved until the seam term is negligible too. A piece is halved until that remainder
 //! is negligible (below a tenth of the target width of the current lower bound). The squared
 //! norm F(s) = Σ_i Q_i(s)² of the polynomial part is a polynomial of degree 34; on a box
 //! S = [s₀ − w, s₀ + w] of the piece,
@@ -171,6 +174,12 @@ fn model<C: Curve<Ball> + ?Sized>(
         .iter()
         .map(|g| (magnitude_up(g) * magnitude_up(&term)).powi(2))
         .sum();
+    // A piecewise curve (a spline) differs from the piece the jet described by at most its
+    // seam bound on X.
+    let seam = curve.seam_bound(
+        spread.lower().to_f64_round(Round::Down),
+        spread.upper().to_f64_round(Round::Up),
+    );
     // F = Σ_i Q_i², by convolution.
     let mut norm2 = vec![Ball::zero_in(&bits); 2 * ORDER + 1];
     // Σ_i Q_i² by convolution, each cross term once and doubled.
@@ -192,7 +201,7 @@ fn model<C: Curve<Ball> + ?Sized>(
         slope,
         curvature,
         // √ rounded up, with margin for the f64 sum.
-        remainder: (remainder2 * (1.0 + 1e-12)).sqrt() * (1.0 + 1e-12),
+        remainder: ((remainder2 * (1.0 + 1e-12)).sqrt() * (1.0 + 1e-12) + seam) * (1.0 + 1e-15),
     }
 }
 
@@ -392,5 +401,70 @@ mod tests {
                 e.relative_width()
             );
         }
+    }
+
+    /// A spline that hides its seams: what the enclosure would be told without
+    /// [`Curve::seam_bound`].
+    struct SeamsHidden(crate::curve::spline::ClampedSpline);
+
+    impl Curve<Ball> for SeamsHidden {
+        fn jet(&self, t: &Ball, order: usize) -> Vec<[Ball; 3]> {
+            self.0.jet(t, order)
+        }
+    }
+
+    #[test]
+    fn a_splines_enclosure_contains_the_certified_maximum_only_with_its_seams() {
+        use crate::curve::spline::ClampedSpline;
+        // 41 samples of a smooth open curve on [0, 2]: 35 interior knots, C⁴ across each.
+        let times: Vec<f64> = (0..41).map(|i| f64::from(i) / 20.0).collect();
+        let points: Vec<[f64; 3]> = times
+            .iter()
+            .map(|&t| [t.cos(), (2.0 * t).sin(), t * t / 3.0])
+            .collect();
+        let spline = ClampedSpline::interpolate(5, &times, &points).unwrap();
+        let (a, b) = (
+            BigRational::from_integer(0.into()),
+            BigRational::from_integer(2.into()),
+        );
+        let enclose = |n: usize, curve: &dyn Curve<Ball>| {
+            let pw = convert(
+                curve,
+                &Ball::from_i64(0, &256),
+                &Ball::from_i64(2, &256),
+                n,
+                4,
+                &FreeParameters::zero(4, &256),
+                false,
+            )
+            .unwrap();
+            proven_error(curve, &pw, 1e-6, 200_000)
+        };
+        let mut hidden_excludes = false;
+        for n in [1usize, 8] {
+            let certified = certified_error(
+                |_| spline.clone(),
+                &a,
+                &b,
+                n,
+                4,
+                &FreeParameters::zero(4, &()),
+                128,
+                256,
+            )
+            .unwrap()
+            .hi;
+            let e = enclose(n, &spline);
+            assert!(
+                e.lower <= certified && certified <= e.upper,
+                "n = {n}: [{}, {}] misses {certified}",
+                e.lower,
+                e.upper
+            );
+            let blind = enclose(n, &SeamsHidden(spline.clone()));
+            hidden_excludes |= !(blind.lower <= certified && certified <= blind.upper);
+        }
+        // Without the seam term the Taylor models run across knots and the "proof" is wrong.
+        assert!(hidden_excludes, "the seam term made no difference");
     }
 }

@@ -161,9 +161,7 @@ mod tests {
         assert_eq!(eigenvalues_below(&a, &q(5, 1)), Some(2));
         let fast = IntegerSymmetric::new(&a);
         let estimate = |x: f64| rug::Float::with_val(64, x);
-        let contains = |(lo, hi): (rug::Rational, rug::Rational), v: i32| {
-            lo <= v && v < hi
-        };
+        let contains = |(lo, hi): (rug::Rational, rug::Rational), v: i32| lo <= v && v < hi;
         assert!(contains(
             fast.bracket(1, &estimate(4.1), 0.01, 10).unwrap(),
             4

@@ -87,6 +87,11 @@ impl<T: Real> Curve<T> for Inertial<'_> {
             .map(|k| [xe[k].clone(), ye[k].clone(), ze[k].clone()])
             .collect()
     }
+
+    /// The rotation is analytic and preserves norms: the spline's seams, unchanged.
+    fn seam_bound(&self, lo: f64, hi: f64) -> f64 {
+        Curve::<T>::seam_bound(self.0, lo, hi)
+    }
 }
 
 /// Everything the report needs from the NRHO.
