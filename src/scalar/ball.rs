@@ -234,7 +234,11 @@ impl Ball {
         if lo.is_zero() && hi.is_zero() {
             return (super::certify::max_digits(self.mid.prec()), "0".into());
         }
-        let mut digits = super::certify::agreeing_digits(&lo, &hi).max(1);
+        // An exact ball (radius 0) proves every digit; show as many as its precision holds,
+        // as for zero, not the extra ones of the 64 guard bits of lower()/upper().
+        let mut digits = super::certify::agreeing_digits(&lo, &hi)
+            .min(super::certify::max_digits(self.mid.prec()))
+            .max(1);
         while digits > 0 {
             let (a, b) = (
                 format_float_digits(&lo, digits),
