@@ -6,10 +6,10 @@
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use std::hint::black_box;
 use std::time::Duration;
-use trajverify::algo::ph::enclosure::proven_error;
 use trajverify::algo::ph::hermite::{interpolate, FreeParameters, HermiteData};
 use trajverify::algo::ph::piecewise::segment_jet;
 use trajverify::algo::ph::piecewise::{certified_error, convert};
+use trajverify::curve::enclosure::proven_error;
 use trajverify::curve::{Curve, ExprCurve};
 use trajverify::scalar::ball::Ball;
 use trajverify::scalar::{BigRational, Field, Float, Real};

@@ -1045,6 +1045,66 @@ fn report_convergence_writes_markdown_svg_and_json_for_a_users_curve() {
     assert_eq!(bad.stderr.trim().lines().count(), 1, "{}", bad.stderr);
     assert!(bad.stderr.contains("--curve"), "{}", bad.stderr);
     assert!(!dir.exists());
+    // Piecewise Hermite–Bernstein (paper 000's map on every segment): with m = 1 the
+    // classical order 4 lies in the fitted interval; an unknown method is refused.
+    let hermite = trajverify(
+        &[
+            "report",
+            "convergence",
+            "--curve",
+            "[cos(3*t), sin(2*t), t^2]",
+            "--interval",
+            "0",
+            "1",
+            "--levels",
+            "2-8",
+            "--method",
+            "hermite:1",
+            "--scalar",
+            "ball:128",
+            "--out",
+            out,
+        ],
+        "",
+    );
+    assert_eq!(hermite.code, 0, "{}", hermite.stderr);
+    let doc: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("convergence.json")).unwrap())
+            .unwrap();
+    assert_eq!(doc["expected_order"], 4);
+    let fit = &doc["fitted_order"];
+    let (order, ci) = (
+        fit["order"].as_f64().unwrap(),
+        fit["ci95"].as_f64().unwrap(),
+    );
+    assert!((order - 4.0).abs() <= ci && ci < 0.05, "{fit}");
+    let md = std::fs::read_to_string(dir.join("convergence.md")).unwrap();
+    assert!(
+        md.contains("Hermite–Bernstein interpolation (m = 1)"),
+        "{md}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+    for method in ["hermite:9", "bspline", "hermite:x"] {
+        let bad = trajverify(
+            &[
+                "report",
+                "convergence",
+                "--curve",
+                "[t, t, t]",
+                "--interval",
+                "0",
+                "1",
+                "--method",
+                method,
+                "--out",
+                out,
+            ],
+            "",
+        );
+        assert_eq!(bad.code, 2, "{method}: {}", bad.stderr);
+        assert!(bad.stderr.contains("--method"), "{}", bad.stderr);
+        assert!(!dir.exists());
+    }
     // A closed curve given as data: a circle sampled at 64 points, the last row closing it.
     let csv = std::env::temp_dir().join(format!("trajverify-circle-{}.csv", std::process::id()));
     let mut rows = vec!["t,x,y,z".to_string()];

@@ -129,8 +129,9 @@ Exit status: 0 success, 2 bad input (one line naming the field, nothing on stdou
 /// The reports `report` writes.
 #[derive(Subcommand, Debug)]
 pub enum ReportKind {
-    /// Table 1 for your curve: the PHODCOS conversion error against 2ⁿ segments (certified,
-    /// proven with ball:<bits>, and f64), observed and fitted orders, where f64 stops improving.
+    /// Table 1 for your curve: the PHODCOS conversion (or piecewise Hermite–Bernstein) error
+    /// against 2ⁿ segments (certified, proven with ball:<bits>, and f64), observed and fitted
+    /// orders against the expected one, where f64 stops improving.
     Convergence {
         /// The curve, "[x(t), y(t), z(t)]" (numbers, t, pi, + - * / ^, sin cos tan exp ln sqrt atan).
         #[arg(
@@ -148,6 +149,11 @@ pub enum ReportKind {
         /// The parameter interval a b.
         #[arg(long, num_args = 2, required = true, value_names = ["A", "B"], allow_hyphen_values = true)]
         interval: Vec<String>,
+        /// The approximation: "phodcos" (C⁴ PH curves, paper 001; expected order 6) or
+        /// "hermite:M" (piecewise Hermite–Bernstein with M = 0…8 derivatives at each joint,
+        /// paper 000's map; degree 2M+1, classical order 2M+2).
+        #[arg(long, value_name = "METHOD", default_value = "phodcos")]
+        method: String,
         /// Levels n (2ⁿ segments): "a-b" or "n1,n2,…", within 0…14.
         #[arg(long, default_value = "0-8")]
         levels: String,
@@ -299,6 +305,7 @@ pub fn execute(cli: Cli) -> Result<String, Failure> {
                     curve,
                     data,
                     interval,
+                    method,
                     levels,
                     scalar,
                     out,
@@ -316,6 +323,7 @@ pub fn execute(cli: Cli) -> Result<String, Failure> {
             let request = report_convergence::Request {
                 source,
                 interval: (interval[0].clone(), interval[1].clone()),
+                method,
                 levels,
                 scalar,
             };

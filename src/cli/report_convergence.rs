@@ -1,30 +1,35 @@
 //! `trajverify report convergence`: Table 1 for a user's own curve, as a report.
 //!
-//! For each refinement level n the curve is converted on 2ⁿ uniform segments (C⁴ PH
-//! interpolants, φ* = 0) and the conversion error E = max_ξ ‖γ − p‖ (Eq. 21) is found:
+//! For each refinement level n the curve is approximated on 2ⁿ uniform segments — converted
+//! to C⁴ PH interpolants with φ* = 0 (`--method phodcos`, paper 001), or interpolated by
+//! two-point Hermite pieces in Bernstein form (`--method hermite:<m>`, paper 000) — and the
+//! error E = max_ξ ‖γ − p‖ (paper 001, Eq. 21) is found:
 //! certified (MPFR at p and 2p bits, sampled maxima refined by Newton) and, with
 //! `--scalar ball:<bits>`, proven (a branch-and-bound enclosure in balls). Beside it, the same
 //! pipeline in f64. The report gives the observed order of each refinement, log₂(E_{n−1}/E_n),
 //! a least-squares order over the finer half of the levels with a 95 % confidence interval
-//! (Student's t on the residuals; "exact fit" when they vanish), and the level from which
-//! f64 stops improving. It writes `convergence.md`, `convergence.svg` and
+//! (Student's t on the residuals; "exact fit" when they vanish) set against the order the
+//! theory expects (6 by Theorem 1; 2m + 2 by the classical Hermite remainder), and the level
+//! from which f64 stops improving. It writes `convergence.md`, `convergence.svg` and
 //! `convergence.json` into the output directory, each complete or not at all.
 
 use super::budget;
 use super::input::{fail, InputError};
 use super::Failure;
-use crate::algo::ph::enclosure::proven_error;
+use crate::algo::hermite;
 use crate::algo::ph::hermite::FreeParameters;
-use crate::algo::ph::piecewise::{
-    certified_error, conversion_error, convert, observed_order, DEFAULT_SAMPLES,
+use crate::algo::ph::piecewise::{certified_error, convert, observed_order};
+use crate::curve::approx::{
+    certified_max_error, conversion_error, BernsteinPieces, PiecewiseBernstein, DEFAULT_SAMPLES,
 };
+use crate::curve::enclosure::proven_error;
 use crate::curve::spline::{ClampedSpline, PeriodicSpline};
 use crate::curve::{Curve, ExprCurve};
 use crate::report::number::{bound_text, sig};
 use crate::report::plot::{self, Corner, Panel, Series, Style};
 use crate::report::table;
 use crate::scalar::ball::Ball;
-use crate::scalar::{BigRational, Field, Float, ScalarKind};
+use crate::scalar::{BigRational, Field, Float, Real, ScalarKind};
 use rug::float::Round;
 use serde_json::json;
 use std::path::Path;
@@ -170,10 +175,77 @@ pub struct Request {
     pub source: Source,
     /// The interval [a, b], as written.
     pub interval: (String, String),
+    /// "phodcos" or "hermite:<m>".
+    pub method: String,
     /// The levels, e.g. "0-10" or "2,4,6".
     pub levels: String,
     /// mpfr:<bits> or ball:<bits>.
     pub scalar: ScalarKind,
+}
+
+/// The approximation whose error is measured.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Method {
+    /// C⁴ PH interpolants with φ* = 0 (paper 001, Algorithm 2).
+    Phodcos,
+    /// Piecewise Hermite–Bernstein interpolation with m derivatives at every joint (paper 000).
+    Hermite(usize),
+}
+
+/// The most derivatives per joint for `hermite:<m>`: degree 2m + 1 ≤ 17, what the proven
+/// enclosure's Taylor models cover.
+const MAX_HERMITE_DERIVATIVES: usize = (crate::curve::enclosure::ORDER - 1) / 2;
+
+impl Method {
+    fn parse(text: &str) -> Result<Method, InputError> {
+        if text == "phodcos" {
+            return Ok(Method::Phodcos);
+        }
+        match text.strip_prefix("hermite:").map(str::parse::<usize>) {
+            Some(Ok(m)) if m <= MAX_HERMITE_DERIVATIVES => Ok(Method::Hermite(m)),
+            _ => fail(format!(
+                "option --method: {text:?} is not \"phodcos\" or \"hermite:M\" with M in 0…{MAX_HERMITE_DERIVATIVES}"
+            )),
+        }
+    }
+
+    /// The order the theory predicts for a smooth curve, and where it comes from.
+    fn expected_order(self) -> (usize, &'static str) {
+        match self {
+            Method::Phodcos => (6, "Theorem 1 of paper 001"),
+            Method::Hermite(m) => (
+                2 * m + 2,
+                "the classical Hermite remainder; paper 000 claims no order",
+            ),
+        }
+    }
+
+    fn title(self) -> String {
+        match self {
+            Method::Phodcos => "the PHODCOS conversion".into(),
+            Method::Hermite(m) => format!("piecewise Hermite–Bernstein interpolation (m = {m})"),
+        }
+    }
+
+    fn pieces(self) -> String {
+        match self {
+            Method::Phodcos => "C⁴ PH interpolants (φ* = 0)".into(),
+            Method::Hermite(m) => format!(
+                "two-point Hermite interpolants of degree {} in Bernstein form (paper 000, Eqs. 11–18; C^{m} at the joints)",
+                2 * m + 1
+            ),
+        }
+    }
+}
+
+/// The checked request.
+struct Plan {
+    curve: Parsed,
+    a: BigRational,
+    b: BigRational,
+    levels: Vec<u32>,
+    bits: u32,
+    method: Method,
 }
 
 /// Parse "a-b" or "n1,n2,…" into increasing levels within [0, MAX_LEVEL].
@@ -204,7 +276,8 @@ fn parse_levels(text: &str) -> Result<Vec<u32>, InputError> {
 }
 
 /// Check the request; return the parsed curve, interval and levels.
-fn validate(r: &Request) -> Result<(Parsed, BigRational, BigRational, Vec<u32>, u32), InputError> {
+fn validate(r: &Request) -> Result<Plan, InputError> {
+    let method = Method::parse(&r.method)?;
     let curve = match &r.source {
         Source::Expression(text) => Parsed::Expression(
             ExprCurve::parse(text).map_err(|e| InputError(format!("option --curve: {e}")))?,
@@ -245,83 +318,151 @@ fn validate(r: &Request) -> Result<(Parsed, BigRational, BigRational, Vec<u32>, 
         "levels",
         &format!("{segments} segments at {}", r.scalar),
     )?;
-    Ok((curve, a, b, levels, bits))
+    Ok(Plan {
+        curve,
+        a,
+        b,
+        levels,
+        bits,
+        method,
+    })
 }
 
 /// Compute every level, reporting progress on stderr.
-fn compute(
-    r: &Request,
-    curve: &Parsed,
-    (a, b): (&BigRational, &BigRational),
-    levels: &[u32],
-    bits: u32,
-) -> Result<Vec<Level>, Failure> {
-    let zero = FreeParameters::zero(4, &());
+fn compute(r: &Request, plan: &Plan) -> Result<Vec<Level>, Failure> {
     let start = Instant::now();
     let mut out = Vec::new();
-    for &n in levels {
+    for &n in &plan.levels {
         let segments = 1usize << n;
-        let e = certified_error(
-            |p| curve.in_type::<Float>(&p),
-            a,
-            b,
-            segments,
-            4,
-            &zero,
-            bits,
-            2 * bits,
-        )
-        .map_err(|e| {
-            Failure::Internal(format!("the conversion failed on {segments} segments: {e}"))
-        })?;
+        let failed = |what: &str, e: String| {
+            Failure::Internal(format!("the {what} failed on {segments} segments: {e}"))
+        };
+        let certified = certified_level(plan, segments).map_err(|e| failed("conversion", e))?;
         let proven = match r.scalar {
             ScalarKind::Ball(bits) => {
-                let c = curve.in_type::<Ball>(&bits);
-                let (ba, bb) = (Ball::from_rational(a, &bits), Ball::from_rational(b, &bits));
-                let pw = convert(
-                    &c,
-                    &ba,
-                    &bb,
-                    segments,
-                    4,
-                    &FreeParameters::zero(4, &bits),
-                    false,
-                )
-                .map_err(|e| {
-                    Failure::Internal(format!(
-                        "the ball conversion failed on {segments} segments: {e}"
-                    ))
-                })?;
-                let enclosure = proven_error(&c, &pw, 1e-6, 4_000_000);
-                Some((enclosure.lower, enclosure.upper))
+                Some(proven_level(plan, segments, bits).map_err(|e| failed("ball conversion", e))?)
             }
             _ => None,
         };
-        let c64 = curve.in_type::<f64>(&());
-        let f64_error = convert(
-            &c64,
-            &a.to_f64(),
-            &b.to_f64(),
-            segments,
-            4,
-            &FreeParameters::zero(4, &()),
-            false,
-        )
-        .map_or(f64::NAN, |pw| {
-            conversion_error(&c64, &pw, DEFAULT_SAMPLES).max
-        });
         eprintln!(
             "level {n} ({segments} segments) done, {:.1} s",
             start.elapsed().as_secs_f64()
         );
         out.push(Level {
             segments,
-            certified: (e.lo, e.hi),
+            certified,
             proven,
-            f64_error,
+            f64_error: f64_level(plan, segments),
         });
     }
     Ok(out)
+}
+
+/// The fit of `curve` on `segments` pieces of [a, b] by the plan's method, in any type.
+fn fit<T: Real>(
+    method: Method,
+    curve: &UserCurve<T>,
+    (a, b): (&T, &T),
+    segments: usize,
+) -> Result<Fitted<T>, String> {
+    Ok(match method {
+        Method::Phodcos => {
+            let zero = FreeParameters::zero(4, &a.ctx());
+            Fitted::Ph(convert(curve, a, b, segments, 4, &zero, false).map_err(|e| e.to_string())?)
+        }
+        Method::Hermite(m) => Fitted::Hermite(
+            hermite::piecewise::interpolate_curve(curve, (a, b), segments, m)
+                .map_err(|e| e.to_string())?,
+        ),
+    })
+}
+
+/// The certified error (at p and 2p bits) on `segments` pieces.
+fn certified_level(plan: &Plan, segments: usize) -> Result<(Float, Float), String> {
+    let e = match plan.method {
+        // One segment refitted at 2p bits (what Table 1 uses).
+        Method::Phodcos => certified_error(
+            |p| plan.curve.in_type::<Float>(&p),
+            &plan.a,
+            &plan.b,
+            segments,
+            4,
+            &FreeParameters::zero(4, &()),
+            plan.bits,
+            2 * plan.bits,
+        )
+        .map_err(|e| e.to_string())?,
+        Method::Hermite(_) => certified_max_error(
+            |p| plan.curve.in_type::<Float>(&p),
+            |c, p| {
+                let (a, b) = (
+                    Float::from_rational(&plan.a, &p),
+                    Float::from_rational(&plan.b, &p),
+                );
+                fit(plan.method, c, (&a, &b), segments)
+            },
+            plan.bits,
+            2 * plan.bits,
+        )?,
+    };
+    Ok((e.lo, e.hi))
+}
+
+/// The proven enclosure [lower, upper] in ball:<bits>.
+fn proven_level(plan: &Plan, segments: usize, bits: u32) -> Result<(Float, Float), String> {
+    let c = plan.curve.in_type::<Ball>(&bits);
+    let (a, b) = (
+        Ball::from_rational(&plan.a, &bits),
+        Ball::from_rational(&plan.b, &bits),
+    );
+    let e = proven_error(
+        &c,
+        &fit(plan.method, &c, (&a, &b), segments)?,
+        1e-6,
+        4_000_000,
+    );
+    Ok((e.lower, e.upper))
+}
+
+/// The error of the same pipeline in f64 (NaN when it fails there).
+fn f64_level(plan: &Plan, segments: usize) -> f64 {
+    let c = plan.curve.in_type::<f64>(&());
+    fit(
+        plan.method,
+        &c,
+        (&plan.a.to_f64(), &plan.b.to_f64()),
+        segments,
+    )
+    .map_or(f64::NAN, |pw| {
+        conversion_error(&c, &pw, DEFAULT_SAMPLES).max
+    })
+}
+
+/// A fit by either method: both are pieces in Bernstein form.
+enum Fitted<T> {
+    Ph(crate::algo::ph::piecewise::PiecewisePh<T>),
+    Hermite(PiecewiseBernstein<T>),
+}
+
+impl<T: Real> BernsteinPieces<T> for Fitted<T> {
+    fn interval(&self) -> (&T, &T) {
+        match self {
+            Fitted::Ph(p) => p.interval(),
+            Fitted::Hermite(p) => p.interval(),
+        }
+    }
+    fn count(&self) -> usize {
+        match self {
+            Fitted::Ph(p) => p.count(),
+            Fitted::Hermite(p) => p.count(),
+        }
+    }
+    fn control_points(&self, k: usize) -> Vec<[T; 3]> {
+        match self {
+            Fitted::Ph(p) => p.control_points(k),
+            Fitted::Hermite(p) => p.control_points(k),
+        }
+    }
 }
 
 /// log₂(E_coarse/E_fine) (the library's observed order), `None` when either is zero.
@@ -371,6 +512,21 @@ fn fitted_order(levels: &[Level]) -> Option<(f64, Option<f64>, usize)> {
     Some((-slope, ci, k))
 }
 
+/// The observed orders across the levels the fit uses, (first, last), when they move
+/// monotonically (at least two of them): the order is still drifting there, which the
+/// constant-order fit and its interval do not model.
+fn order_drift(levels: &[Level]) -> Option<(f64, f64)> {
+    let window = &levels[levels.len() / 2..];
+    let orders: Vec<f64> = window
+        .windows(2)
+        .filter_map(|w| order(&w[0].certified.1, &w[1].certified.1))
+        .collect();
+    let rising = orders.windows(2).all(|w| w[1] > w[0]);
+    let falling = orders.windows(2).all(|w| w[1] < w[0]);
+    (orders.len() >= 2 && orders.len() + 1 == window.len() && (rising || falling))
+        .then(|| (orders[0], orders[orders.len() - 1]))
+}
+
 /// The first level from which f64 stops improving: its error no longer falls while the
 /// certified one still does by more than a factor 2.
 fn f64_floor(levels: &[Level]) -> Option<usize> {
@@ -393,8 +549,9 @@ fn f64_departs(levels: &[Level]) -> Option<usize> {
 
 /// Write the report for `r` into `out`.
 pub fn run(r: &Request, out: &Path) -> Result<String, Failure> {
-    let (curve, a, b, levels, bits) = validate(r).map_err(|e| Failure::Usage(e.0))?;
-    let described = match (&r.source, &curve) {
+    let plan = validate(r).map_err(|e| Failure::Usage(e.0))?;
+    let (curve, bits) = (&plan.curve, plan.bits);
+    let described = match (&r.source, curve) {
         (Source::Data(path), Parsed::Closed(_, rows)) => {
             format!("given by `{}` ({rows} rows of a closed curve; periodic quintic spline, paper 001 Sec. 6A)", path.display())
         }
@@ -403,18 +560,18 @@ pub fn run(r: &Request, out: &Path) -> Result<String, Failure> {
         }
         _ => format!("`{}`", source_text(&r.source)),
     };
-    let rows = compute(r, &curve, (&a, &b), &levels, bits)?;
+    let rows = compute(r, &plan)?;
     let fit = fitted_order(&rows);
     let floor = (f64_floor(&rows), f64_departs(&rows));
     let files = vec![
         (
             "convergence.md".to_string(),
-            markdown(r, (&described, bits), &rows, fit, floor),
+            markdown(r, (&described, bits, plan.method), &rows, fit, floor),
         ),
         ("convergence.svg".to_string(), figure(&rows)),
         (
             "convergence.json".to_string(),
-            json_rows(r, &rows, fit, floor),
+            json_rows(r, plan.method, &rows, fit, floor),
         ),
     ];
     crate::report::write_files(out, &files)
@@ -452,7 +609,7 @@ fn source_text(s: &Source) -> String {
 
 fn markdown(
     r: &Request,
-    (described, bits): (&str, u32),
+    (described, bits, method): (&str, u32, Method),
     rows: &[Level],
     fit: Option<(f64, Option<f64>, usize)>,
     (floor, departs): (Option<usize>, Option<usize>),
@@ -495,14 +652,28 @@ fn markdown(
             )
         },
     );
+    let (expected, source) = method.expected_order();
+    let drift = order_drift(rows).map_or(String::new(), |(first, last)| {
+        format!(
+            "\n- the observed order still {} across the fitted levels ({first:.4} → {last:.4}): the interval assumes a constant order, so terms of higher order in h bias it; finer levels move it",
+            if last > first { "rises" } else { "falls" }
+        )
+    });
+    let verdict = match fit {
+        Some((o, Some(ci), _)) if (o - expected as f64).abs() <= ci => "inside",
+        Some((_, Some(_), _)) => "outside",
+        _ => "no interval to compare",
+    };
     format!(
-        "# Convergence of the PHODCOS conversion\n\nCurve {} on [{}, {}], C⁴ PH interpolants (φ* = 0) on 2ⁿ uniform segments; \
+        "# Convergence of {}\n\nCurve {} on [{}, {}], {} on 2ⁿ uniform segments; \
          E = max over ξ of ‖γ − p‖ (paper 001, Eq. 21). Certified: MPFR at {} and {} bits (digits both agree on, at most 20 shown; all are in the JSON); proven: a \
          branch-and-bound enclosure in ball arithmetic (`--scalar ball:<bits>` only); f64: the same pipeline in double precision.\n\n\
-         {}\n- fitted order: {fit_text}\n- {floor_text}\n- {departs_text}\n\n![error against segments](./convergence.svg)\n",
+         {}\n- fitted order: {fit_text}{drift}\n- expected order for a smooth curve: {expected} ({source}); the expected order is {verdict} the 95 % interval\n- {floor_text}\n- {departs_text}\n\n![error against segments](./convergence.svg)\n",
+        method.title(),
         described,
         r.interval.0,
         r.interval.1,
+        method.pieces(),
         bits,
         2 * bits,
         table(&["segments", "E certified", "E proven", "E f64", "observed order"], &body)
@@ -551,7 +722,7 @@ fn figure(rows: &[Level]) -> String {
         ));
     }
     let panel = Panel {
-        title: "conversion error against refinement".into(),
+        title: "error against refinement".into(),
         x_label: "n (2ⁿ segments, dimensionless)".into(),
         y_label: "E = max ‖γ − p‖ (curve units)".into(),
         series,
@@ -564,6 +735,7 @@ fn figure(rows: &[Level]) -> String {
 
 fn json_rows(
     r: &Request,
+    method: Method,
     rows: &[Level],
     fit: Option<(f64, Option<f64>, usize)>,
     (floor, departs): (Option<usize>, Option<usize>),
@@ -586,6 +758,9 @@ fn json_rows(
         .collect();
     let doc = json!({
         "curve": source_text(&r.source),
+        "method": r.method,
+        "expected_order": method.expected_order().0,
+        "order_drift": order_drift(rows).map(|(first, last)| json!({"first": first, "last": last})),
         "interval": [r.interval.0, r.interval.1],
         "scalar": r.scalar.to_string(),
         "rows": items,

@@ -5,12 +5,12 @@ use super::dispatch::{run_real, run_two_precision, RealJob, TwoPrecisionJob};
 use super::input::{self, fail, InputError, RunError};
 use super::output::{agreed_text, flush, largest, noise_level, Out};
 use super::Rendered;
-use crate::algo::ph::enclosure::proven_error;
 use crate::algo::ph::hermite::{interpolate, FreeParameters, HermiteData, PhHermiteError};
 use crate::algo::ph::piecewise::{
     certified_error, conversion_error, convert, observed_order, phodcos, DEFAULT_SAMPLES,
 };
 use crate::algo::ph::PhCurve;
+use crate::curve::enclosure::proven_error;
 use crate::curve::{Curve, ExprCurve};
 use crate::scalar::ball::Ball;
 use crate::scalar::certify::format_float_digits;
@@ -266,7 +266,7 @@ impl RealJob for PhodcosJob {
     }
 
     /// In balls the error is proven: lower ≤ E ≤ upper by branch and bound
-    /// (`algo::ph::enclosure`, relative width 1e-6), printed as the ball [lower, upper].
+    /// (`curve::enclosure`, relative width 1e-6), printed as the ball [lower, upper].
     fn run_ball(&self, bits: u32) -> Result<Out<Ball>, RunError> {
         let input = &self.input;
         let Some(n) = input.segments else {

@@ -1,7 +1,11 @@
 //! Curves given by the user: parametric expressions ([`expr`]) and sampled data fitted by a
 //! smooth spline ([`spline`]), both able to report their derivatives at a point in the working
-//! precision ([`Curve::jet`]), which is what Hermite interpolation needs.
+//! precision ([`Curve::jet`]), which is what Hermite interpolation needs; and the distance
+//! between a curve and a piecewise Bernstein approximation of it, as a certified maximum
+//! ([`approx`]) or a proven enclosure ([`enclosure`]).
 
+pub mod approx;
+pub mod enclosure;
 pub mod expr;
 pub mod spline;
 pub mod taylor;

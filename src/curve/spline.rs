@@ -23,7 +23,7 @@
 //! for any piece P meeting an interval X of width w, and x ∈ X,
 //! ‖γ(x) − P(x)‖ ≤ Σ_{κ ∈ X} ‖J_κ‖ w^p/p!, the knots inside X being the only ones between P
 //! and x. [`Curve::seam_bound`] returns this sum, rounded up, with each ‖J_κ‖ bounded in ball
-//! arithmetic from the f64 coefficients: the proven enclosures of `algo::ph::enclosure` add
+//! arithmetic from the f64 coefficients: the proven enclosures of `curve::enclosure` add
 //! it to their Taylor remainders, which are otherwise valid only within one piece.
 
 use super::Curve;

@@ -36,6 +36,7 @@
 //! ```
 
 pub mod condition;
+pub mod piecewise;
 
 use crate::numeric::linalg::Matrix;
 use crate::numeric::poly::differences::{anti_difference, backward_anti_difference};

@@ -42,7 +42,6 @@
 //! assert!((precise - 1u32).abs() < 1e-60);
 //! ```
 
-pub mod enclosure;
 pub mod hermite;
 pub mod piecewise;
 pub mod symbolic;
@@ -54,6 +53,7 @@ use crate::scalar::{Field, Real};
 
 /// C(n, k) from the compile-time Pascal triangle of [`crate::numeric::poly::binom`] (every entry the
 /// PH code needs, n ≤ 2·[`MAX_PREIMAGE_DEGREE`], fits in it).
+pub use crate::numeric::poly::bernstein::bernstein_jet;
 pub use crate::numeric::poly::binom;
 
 /// The largest preimage degree accepted (keeps every binomial product inside i64).
@@ -244,57 +244,6 @@ pub fn curvature_torsion<T: Real>(jet: &[[T; 3]]) -> (T, T) {
     let kappa = c2.sqrt() / &(speed.clone() * &speed * &speed);
     let tau = vec3::dot(&c, &jet[3]) / &c2;
     (kappa, tau)
-}
-
-/// Values and derivatives up to `order` of the Bernstein polynomial Σ c_i B_i^n on [0, 1]
-/// with vector coefficients: the k-th derivative is n!/(n−k)! times the de Casteljau value
-/// of the k-th forward differences.
-#[allow(clippy::needless_range_loop)] // component loops over the const dimension D
-pub fn bernstein_jet<T: Field, const D: usize>(
-    ctrl: &[[T; D]],
-    xi: &T,
-    order: usize,
-) -> Vec<[T; D]> {
-    let n = ctrl.len() - 1;
-    let ctx = xi.ctx();
-    let one_minus = T::one_in(&ctx) - xi;
-    let mut diffs: Vec<[T; D]> = ctrl.to_vec();
-    let mut out = Vec::with_capacity(order + 1);
-    let mut factor = T::one_in(&ctx);
-    for k in 0..=order {
-        if k > n {
-            out.push(std::array::from_fn(|_| T::zero_in(&ctx)));
-            continue;
-        }
-        if k > 0 {
-            for i in 0..diffs.len() - 1 {
-                for d in 0..D {
-                    let next = diffs[i + 1][d].clone() - &diffs[i][d];
-                    diffs[i][d] = next;
-                }
-            }
-            diffs.pop();
-            factor *= &T::from_i64((n - k + 1) as i64, &ctx);
-        }
-        let mut work = diffs.clone();
-        for r in (1..work.len()).rev() {
-            for i in 0..r {
-                for d in 0..D {
-                    let mut v = work[i][d].clone() * &one_minus;
-                    v.mul_add_assign(&work[i + 1][d], xi);
-                    work[i][d] = v;
-                }
-            }
-        }
-        let mut value = work.swap_remove(0);
-        if k > 0 {
-            for v in value.iter_mut() {
-                *v *= &factor;
-            }
-        }
-        out.push(value);
-    }
-    out
 }
 
 #[cfg(test)]

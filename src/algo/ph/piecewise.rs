@@ -9,18 +9,22 @@
 //! and the curve are unchanged while A, R and ω become continuous. (Eq. 22b prints a left
 //! product A_α A_i, which would rotate the curve; see the claims.)
 //!
-//! The conversion error E = max_ξ ‖γ(ξ) − p(ξ)‖ (Eqs. 2, 21) is computed as a true maximum:
-//! f(ξ) = ‖γ_k(ξ) − p_k(ξ)‖² is sampled on a uniform grid in every segment and each sampled
-//! local maximum is refined by Newton's method on f′ = 0 with the exact second derivative
-//! (curve derivatives from Taylor-mode AD, curve polynomial in local power form), kept inside
-//! the bracket of its neighbouring samples. The sampled maximum is reported too.
+//! The conversion error E = max_ξ ‖γ(ξ) − p(ξ)‖ (Eqs. 2, 21) is computed as a true maximum by
+//! [`crate::curve::approx`] (sampling, then Newton on f′ = 0), which measures any piecewise
+//! Bernstein approximant; [`PiecewisePh`] is one ([`BernsteinPieces`]). Here: the paper's grid
+//! maximum and the certified error of a conversion, recomputed on one segment at 2p bits.
 
 use super::hermite::{interpolate, FreeParameters, HermiteData, PhHermiteError};
 use super::{bernstein_jet, PhCurve};
+use crate::curve::approx::recertify;
+use crate::curve::approx::SegmentDistance;
+pub use crate::curve::approx::{
+    conversion_error, knot, refine_local_max, BernsteinPieces, CertifiedError, ConversionError,
+    DEFAULT_SAMPLES,
+};
 use crate::curve::taylor::Taylor;
 use crate::curve::Curve;
 use crate::numeric::quat::{vec3, Quat};
-use crate::scalar::certify::{certify, Certified};
 use crate::scalar::{BigRational, Field, Float, Real};
 use rayon::prelude::*;
 
@@ -75,10 +79,16 @@ impl<T: Real> PiecewisePh<T> {
     }
 }
 
-/// a + (b − a) k / N.
-pub fn knot<T: Field>(a: &T, b: &T, n: usize, k: usize) -> T {
-    let ctx = a.ctx();
-    a.clone() + &((b.clone() - a) * &T::from_i64(k as i64, &ctx) / &T::from_i64(n as i64, &ctx))
+impl<T: Real> BernsteinPieces<T> for PiecewisePh<T> {
+    fn interval(&self) -> (&T, &T) {
+        (&self.a, &self.b)
+    }
+    fn count(&self) -> usize {
+        self.segments.len()
+    }
+    fn control_points(&self, k: usize) -> Vec<[T; 3]> {
+        self.segments[k].control_points()
+    }
 }
 
 /// γ(t), h γ′(t), …, h^m γ⁽ᵐ⁾(t): the jet in the local parameter of a segment of length h
@@ -165,235 +175,6 @@ pub fn align_roll<T: Real>(segments: &mut [PhCurve<T>]) {
             *a = a.mul(&rot);
         }
     }
-}
-
-/// The conversion error of one conversion.
-#[derive(Clone, Debug)]
-pub struct ConversionError<T> {
-    /// max over ξ of ‖γ − p‖, refined to the working precision.
-    pub max: T,
-    /// The maximum over the sample grid only.
-    pub sampled: T,
-    /// Where the maximum is: segment and local parameter.
-    pub segment: usize,
-    /// The local parameter ξ ∈ [0, 1] of the maximum.
-    pub xi: T,
-}
-
-/// Samples per segment for locating the maxima before refinement.
-pub const DEFAULT_SAMPLES: usize = 16;
-
-/// E = max_ξ ‖γ(ξ) − p(ξ)‖ over all segments (Eq. 21), sampled with `samples` intervals per
-/// segment, then refined.
-pub fn conversion_error<T: Real, C: Curve<T> + ?Sized>(
-    curve: &C,
-    pw: &PiecewisePh<T>,
-    samples: usize,
-) -> ConversionError<T> {
-    let h = pw.step();
-    let per_segment: Vec<(T, T, T)> = pw
-        .segments
-        .par_iter()
-        .enumerate()
-        .map(|(k, seg)| segment_error(curve, seg, &pw.knot(k), &h, samples))
-        .collect();
-    let mut best = 0usize;
-    for k in 1..per_segment.len() {
-        if per_segment[k].0 > per_segment[best].0 {
-            best = k;
-        }
-    }
-    let mut sampled = per_segment[0].1.clone();
-    for s in &per_segment {
-        if s.1 > sampled {
-            sampled = s.1.clone();
-        }
-    }
-    let (max, _, xi) = per_segment[best].clone();
-    ConversionError {
-        max,
-        sampled,
-        segment: best,
-        xi,
-    }
-}
-
-/// The power-basis coefficients of a Bernstein polynomial on [0, 1] with vector values.
-fn power_form<T: Field>(points: &[[T; 3]]) -> Vec<[T; 3]> {
-    let n = points.len() - 1;
-    let ctx = points[0][0].ctx();
-    // c_k = C(n,k) Δᵏ p_0
-    let mut diffs = points.to_vec();
-    let mut out = Vec::with_capacity(n + 1);
-    for k in 0..=n {
-        if k > 0 {
-            for i in 0..diffs.len() - 1 {
-                diffs[i] = vec3::sub(&diffs[i + 1], &diffs[i]);
-            }
-            diffs.pop();
-        }
-        out.push(vec3::scale(
-            &diffs[0],
-            &T::from_i64(super::binom(n, k), &ctx),
-        ));
-    }
-    out
-}
-
-/// p (and p′, p″ when `order` is 2) at ξ from power-form coefficients (Horner).
-fn horner_jet<T: Field>(c: &[[T; 3]], xi: &T, order: usize) -> [[T; 3]; 3] {
-    let ctx = xi.ctx();
-    let mut p = c[c.len() - 1].clone();
-    let mut d1 = vec3::zero::<T>(&ctx);
-    let mut d2 = vec3::zero::<T>(&ctx);
-    for ck in c.iter().rev().skip(1) {
-        for d in 0..3 {
-            if order > 0 {
-                // d2 = d2 ξ + 2 d1; d1 = d1 ξ + p (before p is updated)
-                let two_d1 = d1[d].clone() + &d1[d];
-                d2[d] = d2[d].clone() * xi + &two_d1;
-                d1[d] = d1[d].clone() * xi + &p[d];
-            }
-            let mut next = ck[d].clone();
-            next.mul_add_assign(&p[d], xi);
-            p[d] = next;
-        }
-    }
-    [p, d1, d2]
-}
-
-/// The squared distance f = |γ_k − p_k|² on one segment, with g = ½f′ and g′ for Newton.
-struct SegmentDistance<'a, T, C: ?Sized> {
-    curve: &'a C,
-    coeffs: Vec<[T; 3]>,
-    t0: T,
-    h: T,
-}
-
-impl<'a, T: Real, C: Curve<T> + ?Sized> SegmentDistance<'a, T, C> {
-    fn new(curve: &'a C, seg: &PhCurve<T>, t0: &T, h: &T) -> Self {
-        SegmentDistance {
-            curve,
-            coeffs: power_form(&seg.control_points()),
-            t0: t0.clone(),
-            h: h.clone(),
-        }
-    }
-    /// f(ξ).
-    fn value(&self, xi: &T) -> T {
-        let t = self.t0.clone() + &(self.h.clone() * xi);
-        let g = self.curve.jet(&t, 0);
-        let p = horner_jet(&self.coeffs, xi, 0);
-        let e0 = vec3::sub(&g[0], &p[0]);
-        vec3::dot(&e0, &e0)
-    }
-    /// (g, g′) with g = (γ−p)·(hγ′−p′) = ½f′ and g′ = |hγ′−p′|² + (γ−p)·(h²γ″−p″).
-    fn slope(&self, xi: &T) -> (T, T) {
-        let t = self.t0.clone() + &(self.h.clone() * xi);
-        let g = self.curve.jet(&t, 2);
-        let p = horner_jet(&self.coeffs, xi, 2);
-        let e0 = vec3::sub(&g[0], &p[0]);
-        let e1 = vec3::sub(&vec3::scale(&g[1], &self.h), &p[1]);
-        let h2 = self.h.clone() * &self.h;
-        let e2 = vec3::sub(&vec3::scale(&g[2], &h2), &p[2]);
-        let slope = vec3::dot(&e0, &e1);
-        let curv = vec3::dot(&e1, &e1) + &vec3::dot(&e0, &e2);
-        (slope, curv)
-    }
-    /// Newton on g = 0 from `x`, kept inside (lo, hi); the maximum f found and where.
-    fn refine(&self, mut x: T, lo: &T, hi: &T) -> (T, T) {
-        let ctx = x.ctx();
-        let tolerance = T::epsilon(&ctx).sqrt() * &T::from_ratio(1, 1 << 10, &ctx);
-        let half = T::from_ratio(1, 2, &ctx);
-        let mut previous: Option<T> = None;
-        for _ in 0..40 {
-            let (g, dg) = self.slope(&x);
-            if dg.is_zero() {
-                break;
-            }
-            let step = g / &dg;
-            let mut next = x.clone() - &step;
-            if next <= *lo || next >= *hi || !next.is_finite() {
-                // Newton left the bracket: bisect towards the ascent instead.
-                next = if step < T::zero_in(&ctx) {
-                    (x.clone() + hi) * &half
-                } else {
-                    (x.clone() + lo) * &half
-                };
-            }
-            let moved = (next.clone() - &x).abs();
-            x = next;
-            // Converged, or no longer converging quadratically: the step is then set by
-            // rounding noise in f′ (the error is far below the curve's size) and ξ is as
-            // accurate as f′ allows; f is flat there, so f(ξ) is accurate regardless.
-            let stalled = previous
-                .as_ref()
-                .is_some_and(|p| moved.clone() * &T::from_i64(4, &ctx) > *p);
-            previous = Some(moved.clone());
-            if stalled || moved <= tolerance {
-                break;
-            }
-        }
-        (self.value(&x), x)
-    }
-}
-
-/// (refined max, sampled max, argmax ξ) of ‖γ_k − p_k‖ on one segment.
-fn segment_error<T: Real, C: Curve<T> + ?Sized>(
-    curve: &C,
-    seg: &PhCurve<T>,
-    t0: &T,
-    h: &T,
-    samples: usize,
-) -> (T, T, T) {
-    let ctx = h.ctx();
-    let dist = SegmentDistance::new(curve, seg, t0, h);
-    let samples = samples.max(2);
-    let grid: Vec<T> = (0..=samples)
-        .map(|i| T::from_ratio(i as i64, samples as i64, &ctx))
-        .collect();
-    let values: Vec<T> = grid.iter().map(|x| dist.value(x)).collect();
-    let mut sampled_best = 0usize;
-    for i in 1..values.len() {
-        if values[i] > values[sampled_best] {
-            sampled_best = i;
-        }
-    }
-    let mut best = (values[sampled_best].clone(), grid[sampled_best].clone());
-    for i in 1..samples {
-        if !(values[i] >= values[i - 1] && values[i] >= values[i + 1]) || values[i].is_zero() {
-            continue;
-        }
-        let (f, x) = dist.refine(grid[i].clone(), &grid[i - 1], &grid[i + 1]);
-        if f > best.0 {
-            best = (f, x);
-        }
-    }
-    (best.0.sqrt(), values[sampled_best].sqrt(), best.1)
-}
-
-/// The local maximum of ‖γ_k − p_k‖ near ξ₀ on segment `seg` starting at t0: Newton from ξ₀
-/// inside (ξ₀ − w, ξ₀ + w) ∩ (0, 1). Used to recompute a maximum found at one precision at
-/// a higher one (certified digits).
-pub fn refine_local_max<T: Real, C: Curve<T> + ?Sized>(
-    curve: &C,
-    seg: &PhCurve<T>,
-    t0: &T,
-    h: &T,
-    xi0: &T,
-    width: &T,
-) -> (T, T) {
-    let ctx = h.ctx();
-    let dist = SegmentDistance::new(curve, seg, t0, h);
-    let lo = crate::scalar::max_of(xi0.clone() - width, T::zero_in(&ctx));
-    let hi = xi0.clone() + width;
-    let hi = if hi > T::one_in(&ctx) {
-        T::one_in(&ctx)
-    } else {
-        hi
-    };
-    let (f, x) = dist.refine(xi0.clone(), &lo, &hi);
-    (f.sqrt(), x)
 }
 
 /// A conversion and its error.
@@ -522,29 +303,6 @@ pub fn sample_points<T: Real>(pw: &PiecewisePh<T>, per_segment: usize) -> Vec<[T
     out
 }
 
-/// A conversion error computed at p bits over all segments and recomputed at a higher
-/// precision on the segment and near the parameter where the maximum was found.
-#[derive(Clone, Debug)]
-pub struct CertifiedError {
-    /// The maximum at p bits (all segments sampled and refined).
-    pub lo: Float,
-    /// The same local maximum at the higher precision.
-    pub hi: Float,
-    /// The sampled maximum at p bits.
-    pub sampled: Float,
-    /// The segment of the local maximum.
-    pub segment: usize,
-    /// The local parameter ξ of the local maximum.
-    pub xi: Float,
-}
-
-impl CertifiedError {
-    /// The error with the digits the two precisions agree on.
-    pub fn certified(&self) -> Certified {
-        certify(&self.lo, &self.hi)
-    }
-}
-
 /// The distances |γ(t) − p(t)| at the global parameters `ts` (each in [a, b]), in order:
 /// what a sampled evaluation of the error measures.
 pub fn grid_distances<T: Real, C: Curve<T> + ?Sized>(
@@ -567,7 +325,7 @@ pub fn grid_distances<T: Real, C: Curve<T> + ?Sized>(
             if per_segment[k].is_empty() {
                 return Vec::new();
             }
-            let dist = SegmentDistance::new(curve, seg, &pw.knot(k), &h);
+            let dist = SegmentDistance::new(curve, &seg.control_points(), &pw.knot(k), &h);
             per_segment[k]
                 .iter()
                 .map(|(i, xi)| (*i, dist.value(xi).sqrt()))
@@ -660,7 +418,7 @@ pub fn certified_grid_error<C: Curve<Float>>(
         let (seg, t0, h) = segment_at(&hi_curve, interval, (segments, k), m, free, hi_bits)?;
         // ξ exactly: (t − t_k)/h from the rational t.
         let xi_hi = (Float::from_rational(&ts[i], &hi_bits) - &t0) / &h;
-        let value = SegmentDistance::new(&hi_curve, &seg, &t0, &h)
+        let value = SegmentDistance::new(&hi_curve, &seg.control_points(), &t0, &h)
             .value(&xi_hi)
             .sqrt();
         if value > max_hi {
@@ -705,16 +463,7 @@ pub fn certified_error<C: Curve<Float>>(
     let hi_curve = make(hi_bits);
     let k = e.segment;
     let (seg, t0, h) = segment_at(&hi_curve, (a, b), (segments, k), m, free, hi_bits)?;
-    let xi_hi = Float::with_val(hi_bits, &e.xi);
-    let width = Float::from_ratio(1, DEFAULT_SAMPLES as i64, &hi_bits);
-    let (hi, _) = refine_local_max(&hi_curve, &seg, &t0, &h, &xi_hi, &width);
-    Ok(CertifiedError {
-        lo: e.max,
-        hi,
-        sampled: e.sampled,
-        segment: k,
-        xi: e.xi,
-    })
+    Ok(recertify(e, &hi_curve, &seg.control_points(), (&t0, &h)))
 }
 
 #[cfg(test)]

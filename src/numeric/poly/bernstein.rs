@@ -200,6 +200,57 @@ pub fn power_basis_derivative<T: Field>(a: &[T], j: usize, zeta: &T, duration: &
     acc / &powi(duration, j as u32)
 }
 
+/// Values and derivatives up to `order` of the Bernstein polynomial Σ c_i B_i^n on [0, 1]
+/// with vector coefficients: the k-th derivative is n!/(n−k)! times the de Casteljau value
+/// of the k-th forward differences.
+#[allow(clippy::needless_range_loop)] // component loops over the const dimension D
+pub fn bernstein_jet<T: Field, const D: usize>(
+    ctrl: &[[T; D]],
+    xi: &T,
+    order: usize,
+) -> Vec<[T; D]> {
+    let n = ctrl.len() - 1;
+    let ctx = xi.ctx();
+    let one_minus = T::one_in(&ctx) - xi;
+    let mut diffs: Vec<[T; D]> = ctrl.to_vec();
+    let mut out = Vec::with_capacity(order + 1);
+    let mut factor = T::one_in(&ctx);
+    for k in 0..=order {
+        if k > n {
+            out.push(std::array::from_fn(|_| T::zero_in(&ctx)));
+            continue;
+        }
+        if k > 0 {
+            for i in 0..diffs.len() - 1 {
+                for d in 0..D {
+                    let next = diffs[i + 1][d].clone() - &diffs[i][d];
+                    diffs[i][d] = next;
+                }
+            }
+            diffs.pop();
+            factor *= &T::from_i64((n - k + 1) as i64, &ctx);
+        }
+        let mut work = diffs.clone();
+        for r in (1..work.len()).rev() {
+            for i in 0..r {
+                for d in 0..D {
+                    let mut v = work[i][d].clone() * &one_minus;
+                    v.mul_add_assign(&work[i + 1][d], xi);
+                    work[i][d] = v;
+                }
+            }
+        }
+        let mut value = work.swap_remove(0);
+        if k > 0 {
+            for v in value.iter_mut() {
+                *v *= &factor;
+            }
+        }
+        out.push(value);
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -1,12 +1,12 @@
 //! Table 1 proven: for every row, bounds lower ≤ E ≤ upper of the conversion error (Eq. 21)
-//! from ball arithmetic and branch and bound (`algo::ph::enclosure`), next to the certified
+//! from ball arithmetic and branch and bound (`curve::enclosure`), next to the certified
 //! value; and the order of Theorem 1 as a proven interval from the bounds of two rows.
 
 use super::super::{Outcome, Verdict};
 use super::table1::{curve, Row};
-use crate::algo::ph::enclosure::{proven_error, ErrorEnclosure};
 use crate::algo::ph::hermite::FreeParameters;
 use crate::algo::ph::piecewise::convert;
+use crate::curve::enclosure::{proven_error, ErrorEnclosure};
 use crate::scalar::ball::Ball;
 use crate::scalar::{Field, Float};
 use rug::float::Round;
