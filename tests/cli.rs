@@ -137,6 +137,25 @@ fn condition_number_is_certified_and_compared_with_f64() {
         r#"{"derivatives": 10, "interval": [0, 1], "matrix": "binomial"}"#,
     ));
     assert!(ours["certified_digits"].as_u64().unwrap() >= 10, "{ours}");
+    // Proven: the ball from exact Sylvester-inertia brackets holds the certified value.
+    for m in [5, 30] {
+        let input = format!(r#"{{"derivatives": {m}, "interval": [0, 1], "matrix": "transform"}}"#);
+        let proven = json(&trajverify(
+            &["run", "hermite-condition", "--scalar", "ball:128"],
+            &input,
+        ));
+        let certified = json(&trajverify(&["run", "hermite-condition"], &input));
+        let number = |v: &Value| v.as_str().unwrap().parse::<f64>().unwrap();
+        let (mid, radius) = (
+            number(&proven["condition_number"]["value"]),
+            number(&proven["condition_number"]["radius"]),
+        );
+        let k = number(&certified["condition_number"]);
+        assert!(
+            (k - mid).abs() <= radius + 1e-10 * k && radius <= 1e-10 * k,
+            "m = {m}: {proven} vs {k}"
+        );
+    }
 }
 
 #[test]

@@ -123,6 +123,12 @@ pub trait TwoPrecisionJob {
     fn f64(&self) -> Result<Rendered, RunError>;
     /// The computation at `bits` (and whatever higher precision its method certifies with).
     fn mpfr(&self, bits: u32) -> Result<Rendered, RunError>;
+    /// A proven form at `bits`, for the methods that have one (by default, refused).
+    fn ball(&self, bits: u32) -> Result<Out<Ball>, RunError> {
+        fail(format!(
+            "option --scalar: ball:{bits} is not available here: this method compares two MPFR precisions to certify its digits"
+        ))
+    }
 }
 
 /// `job` in f64 or MPFR; `rational_refusal` is the one-line error for `--scalar rational`.
@@ -135,8 +141,6 @@ pub fn run_two_precision(
         ScalarKind::F64 => job.f64(),
         ScalarKind::Rational => fail(rational_refusal),
         ScalarKind::Mpfr(bits) => job.mpfr(bits),
-        ScalarKind::Ball(_) => fail(format!(
-            "option --scalar: {scalar} is not available here: this method compares two MPFR precisions to certify its digits"
-        )),
+        ScalarKind::Ball(bits) => proven(scalar, || job.ball(bits)),
     }
 }
