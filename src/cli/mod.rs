@@ -130,7 +130,7 @@ Exit status: 0 success, 2 bad input (one line naming the field, nothing on stdou
 #[derive(Subcommand, Debug)]
 pub enum ReportKind {
     /// Table 1 for your curve: the PHODCOS conversion (or piecewise Hermite–Bernstein) error
-    /// against 2ⁿ segments (certified, proven with ball:<bits>, and f64), observed and fitted
+    /// against 2ⁿ segments (certified, proven with ball:BITS, and f64), observed and fitted
     /// orders against the expected one, where f64 stops improving.
     Convergence {
         /// The curve, "[x(t), y(t), z(t)]" (numbers, t, pi, + - * / ^, sin cos tan exp ln sqrt atan).

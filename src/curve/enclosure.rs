@@ -12,8 +12,9 @@
 //! since p has degree at most 17 (its 18th derivative vanishes) and X = t_k + h[u_a, u_b] is covered
 //! by one ball on which the curve's jet is evaluated. For a piecewise curve (a spline through
 //! data) the jet describes one polynomial piece P, and ‖γ − P‖ ≤ the curve's seam bound on X
-//! ([`Curve::seam_bound`]: the knots inside X) is added to the remainder, so a piece that
-//! straddles a knot is halved until the seam term is negligible too. A piece is halved until that remainder
+//! ([`Curve::seam_bound`]: the knots inside X) is added to the remainder; each segment is
+//! first split at the curve's breakpoints ([`Curve::breakpoints`]), so a knot sits at a
+//! piece's end and its seam term is rounding-sized. A piece is halved until that remainder
 //! is negligible (below a tenth of the target width of the current lower bound). The squared
 //! norm F(s) = Σ_i Q_i(s)² of the polynomial part is a polynomial of degree 34; on a box
 //! S = [s₀ − w, s₀ + w] of the piece,
@@ -184,6 +185,10 @@ fn model<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
     // seam bound on X.
     let seam = curve.seam_bound(
         spread.lower().to_f64_round(Round::Down),
+        (
+            xc.lower().to_f64_round(Round::Down),
+            xc.upper().to_f64_round(Round::Up),
+        ),
         spread.upper().to_f64_round(Round::Up),
     );
     // F = Σ_i Q_i², by convolution.
@@ -245,12 +250,25 @@ fn pieces<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
     let bits = pw.interval().0.ctx();
     let k = whole.segment;
     let points = pw.control_points(k);
-    let mut todo = vec![(
-        Float::with_val(bits, 0),
-        Float::with_val(bits, 1),
-        0u32,
-        Some(whole),
-    )];
+    // A piecewise curve's breakpoints split the segment first: a piece ending at a knot
+    // sees it only within rounding of its end, so its seam term vanishes.
+    let splits = breakpoints_in_segment(curve, pw, k);
+    let mut todo = if splits.is_empty() {
+        vec![(
+            Float::with_val(bits, 0),
+            Float::with_val(bits, 1),
+            0u32,
+            Some(whole),
+        )]
+    } else {
+        let ends: Vec<Float> = std::iter::once(Float::with_val(bits, 0))
+            .chain(splits)
+            .chain(std::iter::once(Float::with_val(bits, 1)))
+            .collect();
+        ends.windows(2)
+            .map(|w| (w[0].clone(), w[1].clone(), 0u32, None))
+            .collect()
+    };
     let mut done = Vec::new();
     while let Some((a, b, depth, known)) = todo.pop() {
         let m = known.unwrap_or_else(|| model(curve, pw, (k, &points), (&a, &b)));
@@ -263,6 +281,35 @@ fn pieces<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
         }
     }
     done
+}
+
+/// The curve's breakpoints inside segment k, as local parameters u ∈ (0, 1), increasing
+/// (each rounded: the seam bound accounts for the knot's true position).
+fn breakpoints_in_segment<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
+    curve: &C,
+    pw: &P,
+    k: usize,
+) -> Vec<Float> {
+    let (tk, h) = (pw.knot(k), pw.step());
+    let end = tk.clone() + &h;
+    let (lo, hi) = (
+        tk.lower()
+            .to_f64_round(Round::Down)
+            .min(end.lower().to_f64_round(Round::Down)),
+        tk.upper()
+            .to_f64_round(Round::Up)
+            .max(end.upper().to_f64_round(Round::Up)),
+    );
+    let bits = h.ctx();
+    let mut us: Vec<Float> = curve
+        .breakpoints(lo, hi)
+        .into_iter()
+        .map(|at| (Float::with_val(bits, at) - tk.mid()) / h.mid())
+        .filter(|u| *u > 0 && *u < 1)
+        .collect();
+    us.sort_by(|a, b| a.partial_cmp(b).unwrap_or(std::cmp::Ordering::Equal));
+    us.dedup();
+    us
 }
 
 /// Points per whole-segment model for the first lower bound.

@@ -20,12 +20,19 @@ pub trait Curve<T: Real>: Sync {
     fn jet(&self, t: &T, order: usize) -> Vec<[T; 3]>;
 
     /// An upper bound of ‖γ(x) − P(x)‖ for x in [lo, hi], where P is the analytic piece that
-    /// [`Curve::jet`] describes at any point of [lo, hi] (its analytic continuation past the
-    /// piece's ends). Zero, the default, for a curve analytic on [lo, hi]; for a spline, the
-    /// terms its knots inside add ([`spline`], "Seams"). Proven enclosures need it: their
-    /// Taylor models are built from one piece and would not hold across a knot.
-    fn seam_bound(&self, _lo: f64, _hi: f64) -> f64 {
+    /// [`Curve::jet`] describes at the centre, a point of [lo, hi] known to lie in
+    /// `centre` = (lower, upper) (P continued analytically past its piece's ends). Zero, the
+    /// default, for a curve analytic on [lo, hi]; for a spline, the terms its knots inside add
+    /// ([`spline`], "Seams"). Proven enclosures need it: their Taylor models are built from
+    /// one piece and would not hold across a knot.
+    fn seam_bound(&self, _lo: f64, _centre: (f64, f64), _hi: f64) -> f64 {
         0.0
+    }
+
+    /// The points of [lo, hi] where the curve is not analytic (a spline's knots), so that a
+    /// proven enclosure can split its pieces there; none, the default, for an analytic curve.
+    fn breakpoints(&self, _lo: f64, _hi: f64) -> Vec<f64> {
+        Vec::new()
     }
 }
 
@@ -33,8 +40,11 @@ impl<T: Real, C: Curve<T> + ?Sized> Curve<T> for &C {
     fn jet(&self, t: &T, order: usize) -> Vec<[T; 3]> {
         (**self).jet(t, order)
     }
-    fn seam_bound(&self, lo: f64, hi: f64) -> f64 {
-        (**self).seam_bound(lo, hi)
+    fn seam_bound(&self, lo: f64, centre: (f64, f64), hi: f64) -> f64 {
+        (**self).seam_bound(lo, centre, hi)
+    }
+    fn breakpoints(&self, lo: f64, hi: f64) -> Vec<f64> {
+        (**self).breakpoints(lo, hi)
     }
 }
 

@@ -19,12 +19,14 @@
 //! # Seams
 //!
 //! Adjacent pieces of a C^{p−1} spline of degree p agree in p derivatives at their knot κ, so
-//! P_right(x) − P_left(x) = J_κ (x − κ)^p/p! with J_κ the jump of the p-th derivative. Hence
-//! for any piece P meeting an interval X of width w, and x ∈ X,
-//! ‖γ(x) − P(x)‖ ≤ Σ_{κ ∈ X} ‖J_κ‖ w^p/p!, the knots inside X being the only ones between P
-//! and x. [`Curve::seam_bound`] returns this sum, rounded up, with each ‖J_κ‖ bounded in ball
-//! arithmetic from the f64 coefficients: the proven enclosures of `curve::enclosure` add
-//! it to their Taylor remainders, which are otherwise valid only within one piece.
+//! P_right(x) − P_left(x) = J_κ (x − κ)^p/p!, with J_κ the jump of the p-th derivative. Let
+//! P be the piece at a point c of an interval X. For x ∈ X the knots between P and x are
+//! knots inside X on the far side of c, so ‖γ(x) − P(x)‖ ≤ Σ_{κ ∈ X} ‖J_κ‖ d_κ^p/p!, with d_κ
+//! the distance from κ to the end of X beyond it as seen from c (the whole width of X when c
+//! may lie on either side of κ). [`Curve::seam_bound`] returns this sum, rounded up, each
+//! ‖J_κ‖ bounded in ball arithmetic from the f64 coefficients; [`Curve::breakpoints`] lists
+//! the knots. The proven enclosures of `curve::enclosure` split their pieces at the knots and
+//! add the sum to their Taylor remainders, which otherwise hold only within one piece.
 
 use super::Curve;
 use crate::numeric::linalg::banded::{Banded, Cyclic};
@@ -199,12 +201,37 @@ fn norm_up(a: &[Ball; 3], b: &[Ball; 3]) -> f64 {
     (squares * (1.0 + 1e-12)).sqrt() * (1.0 + 1e-12)
 }
 
-/// Σ_κ J_κ w^p/p! rounded up: the seam bound of knots with jump bounds `jumps` on an
-/// interval of width w (module doc, "Seams").
-fn seam_sum(jumps: impl Iterator<Item = f64>, width: f64, degree: usize) -> f64 {
-    let total: f64 = jumps.sum::<f64>() * (1.0 + 1e-12);
+/// Σ_κ J_κ d_κ^p/p! rounded up over the knots (position, jump bound) of [lo, hi]: d_κ is
+/// the distance from κ to the end of [lo, hi] away from the centre (the side where γ and the
+/// centre's piece differ), the whole width when κ may be on either side of the centre
+/// (module doc, "Seams"). Infinite for a non-finite window.
+fn seam_sum(
+    knots: impl Iterator<Item = (f64, f64)>,
+    (lo, hi): (f64, f64),
+    (centre_lo, centre_hi): (f64, f64),
+    degree: usize,
+) -> f64 {
+    let (lo, hi) = widen(lo, hi);
+    if !(lo.is_finite() && hi.is_finite()) {
+        return f64::INFINITY;
+    }
+    // Knot positions are rounded sums: a margin covers them.
+    let margin = 1e-12 * (lo.abs().max(hi.abs()) + (hi - lo));
     let factorial: f64 = (1..=degree).map(|k| k as f64).product();
-    total * (width * (1.0 + 1e-12)).powi(degree as i32) / factorial * (1.0 + 1e-12)
+    let total: f64 = knots
+        .map(|(at, jump)| {
+            let d = if at > centre_hi + margin {
+                hi - at
+            } else if at < centre_lo - margin {
+                at - lo
+            } else {
+                hi - lo
+            };
+            let d = (d.max(0.0) + margin) * (1.0 + 1e-12);
+            jump * d.powi(degree as i32)
+        })
+        .sum();
+    total * (1.0 + 1e-12) / factorial * (1.0 + 1e-12)
 }
 
 /// The NURBS Book, Algorithm A2.3: derivatives 0…n of the p+1 nonzero B-splines
@@ -290,28 +317,48 @@ impl<T: Real> Curve<T> for PeriodicSpline {
         })
     }
 
-    fn seam_bound(&self, lo: f64, hi: f64) -> f64 {
-        // Every knot t_i + mT in [lo, hi] (widened, so rounding can only add knots).
-        let (lo, hi) = widen(lo, hi);
-        let (t0, period, n) = (self.times[0], self.period(), self.n() as i64);
-        if !(lo.is_finite() && hi.is_finite()) {
+    fn seam_bound(&self, lo: f64, centre: (f64, f64), hi: f64) -> f64 {
+        let Some(knots) = self.knots_in(lo, hi) else {
             return f64::INFINITY;
+        };
+        let jumps = knots.iter().map(|&(at, i)| (at, self.jump_bound(i)));
+        seam_sum(jumps, (lo, hi), centre, self.degree)
+    }
+
+    fn breakpoints(&self, lo: f64, hi: f64) -> Vec<f64> {
+        self.knots_in(lo, hi)
+            .unwrap_or_default()
+            .into_iter()
+            .map(|k| k.0)
+            .collect()
+    }
+}
+
+impl PeriodicSpline {
+    /// Every knot t_i + mT in [lo, hi] widened (so rounding can only add knots), as
+    /// (position, i); `None` for a window that is not finite or spans more than a few periods.
+    fn knots_in(&self, lo: f64, hi: f64) -> Option<Vec<(f64, i64)>> {
+        let (lo, hi) = widen(lo, hi);
+        let (t0, period) = (self.times[0], self.period());
+        if !(lo.is_finite() && hi.is_finite()) {
+            return None;
         }
         let first_wrap = ((lo - self.period_end) / period).floor() as i64 - 1;
         let last_wrap = ((hi - t0) / period).ceil() as i64 + 1;
-        if last_wrap - first_wrap > 1 + 4 * n.max(1) {
-            return f64::INFINITY; // absurdly wide: no useful bound
+        if last_wrap - first_wrap > 8 {
+            return None; // wider than a few periods: no useful list
         }
         // Per wrap m, the times with lo ≤ t_i + mT ≤ hi by a binary search (the widening
         // makes up for the rounding of t_i + mT, so no knot is missed).
-        let knots = (first_wrap..=last_wrap).flat_map(|m| {
-            let shift = m as f64 * period;
-            let first = self.times.partition_point(|&t| t + shift < lo);
-            let last = self.times.partition_point(|&t| t + shift <= hi);
-            first as i64..last.max(first) as i64
-        });
-        let jumps = knots.map(|i| self.jump_bound(i));
-        seam_sum(jumps, hi - lo, self.degree)
+        let knots = (first_wrap..=last_wrap)
+            .flat_map(|m| {
+                let shift = m as f64 * period;
+                let first = self.times.partition_point(|&t| t + shift < lo);
+                let last = self.times.partition_point(|&t| t + shift <= hi);
+                (first..last.max(first)).map(move |i| (self.times[i] + shift, i as i64))
+            })
+            .collect();
+        Some(knots)
     }
 }
 
@@ -466,20 +513,33 @@ impl<T: Real> Curve<T> for ClampedSpline {
         combine(&ders, order, |j| &self.coefficients[first + j])
     }
 
-    fn seam_bound(&self, lo: f64, hi: f64) -> f64 {
+    fn seam_bound(&self, lo: f64, centre: (f64, f64), hi: f64) -> f64 {
+        let jumps = self
+            .knots_in(lo, hi)
+            .map(|s| (self.knots[s], self.jump_bound(s)));
+        seam_sum(jumps, (lo, hi), centre, self.degree)
+    }
+
+    fn breakpoints(&self, lo: f64, hi: f64) -> Vec<f64> {
+        self.knots_in(lo, hi).map(|s| self.knots[s]).collect()
+    }
+}
+
+impl ClampedSpline {
+    /// The indices of the interior knots u_{p+1} … u_{N−1} inside [lo, hi] widened (sorted:
+    /// two binary searches).
+    fn knots_in(&self, lo: f64, hi: f64) -> std::ops::Range<usize> {
         let (lo, hi) = widen(lo, hi);
         if !(lo.is_finite() && hi.is_finite()) {
-            return f64::INFINITY;
+            return 0..0;
         }
         let p = self.degree;
-        // Interior knots u_{p+1} … u_{N−1} inside [lo, hi] (sorted: two binary searches).
         let first = self.knots.partition_point(|&k| k < lo).max(p + 1);
         let last = self
             .knots
             .partition_point(|&k| k <= hi)
             .min(self.knots.len() - p - 1);
-        let jumps = (first..last.max(first)).map(|s| self.jump_bound(s));
-        seam_sum(jumps, hi - lo, p)
+        first..last.max(first)
     }
 }
 
@@ -628,7 +688,13 @@ mod tests {
             (10i64, (times[10] - 0.01, times[12] + 0.02)),
             (29, (0.99, 1.03)),
         ] {
-            let bound = Curve::<Float>::seam_bound(closed, window.0, window.1);
+            // The piece of `span` at a point of the window inside that span.
+            let centre = if span == 10 {
+                (times[10] + times[11]) / 2.0
+            } else {
+                0.995
+            };
+            let bound = Curve::<Float>::seam_bound(closed, window.0, (centre, centre), window.1);
             let seen = check_seams(closed, &piece_closed(span), window, bound);
             assert!(
                 seen > 0.0 && bound < 1e4 * seen,
@@ -637,7 +703,12 @@ mod tests {
         }
         // Inside one span there is no seam.
         assert_eq!(
-            Curve::<Float>::seam_bound(closed, times[3] + 1e-3, times[4] - 1e-3),
+            Curve::<Float>::seam_bound(
+                closed,
+                times[3] + 1e-3,
+                (times[3] + 0.01, times[3] + 0.01),
+                times[4] - 1e-3
+            ),
             0.0
         );
         let s = 5 + 8; // span of the clamped knot vector
@@ -646,7 +717,8 @@ mod tests {
             let (first, ders) = open.on_span(s, x, 0);
             combine(&ders, 0, |j| &open.coefficients[first + j]).swap_remove(0)
         };
-        let bound = Curve::<Float>::seam_bound(&open, window.0, window.1);
+        let centre = (open.knots[s] + open.knots[s + 1]) / 2.0;
+        let bound = Curve::<Float>::seam_bound(&open, window.0, (centre, centre), window.1);
         let seen = check_seams(&open, &piece_open, window, bound);
         assert!(
             seen > 0.0 && bound < 1e4 * seen,

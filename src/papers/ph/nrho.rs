@@ -89,8 +89,12 @@ impl<T: Real> Curve<T> for Inertial<'_> {
     }
 
     /// The rotation is analytic and preserves norms: the spline's seams, unchanged.
-    fn seam_bound(&self, lo: f64, hi: f64) -> f64 {
-        Curve::<T>::seam_bound(self.0, lo, hi)
+    fn seam_bound(&self, lo: f64, centre: (f64, f64), hi: f64) -> f64 {
+        Curve::<T>::seam_bound(self.0, lo, centre, hi)
+    }
+
+    fn breakpoints(&self, lo: f64, hi: f64) -> Vec<f64> {
+        Curve::<T>::breakpoints(self.0, lo, hi)
     }
 }
 
