@@ -766,6 +766,19 @@ fn gerbs_path_interpolates_the_waypoints_with_curvature_one_over_r() {
     let length = v["length"].as_str().unwrap();
     assert!(length.starts_with("1349.14216332056819"), "{length}");
     assert!(length.len() > 35, "{length}");
+    // An ERBS weight near a knot is a real value of about 1e-47 at 256 bits and nothing at
+    // 128: the y of the first line's sample is 0 to the printed precision, not a refusal.
+    let erbs = trajverify(
+        &["run", "gerbs-path", "--scalar", "mpfr:128"],
+        r#"{"waypoints": [[0,0],[10,0],[10,10],[20,10]], "radius": 2, "theta_o": "pi/8", "kind": "erbs", "samples": 401}"#,
+    );
+    assert_eq!(erbs.code, 0, "{}", erbs.stderr);
+    let v = json(&erbs);
+    assert_eq!(v["points"][1][1], "0");
+    assert!(v["points"][1][0]
+        .as_str()
+        .unwrap()
+        .starts_with("0.0117809724509617"));
 }
 
 #[test]

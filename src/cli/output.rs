@@ -16,8 +16,9 @@ pub enum Out<T> {
     Num(T),
     /// A number that may vanish mathematically, with the scale of the quantities it was
     /// computed from. Printed like [`Out::Num`], except that when two precisions agree on
-    /// no digit and both values lie below [`noise_level`] of their scale, it is printed as
-    /// 0: it is zero to the precision (a straight line's conversion error), not unknown.
+    /// no digit and both values lie below [`noise_level`] of the scale at the lower
+    /// precision, it is printed as 0: it is zero to the precision printed (a straight line's
+    /// conversion error, an ERBS weight far below the resolution), not unknown.
     MaybeZero(T, T),
     List(Vec<Out<T>>),
     Object(Vec<(String, Out<T>)>),
@@ -236,8 +237,12 @@ pub fn agreed_text(
     if c.digits > 0 || (a.is_zero() && b.is_zero()) {
         return Some((c.text, false));
     }
-    let (sa, sb) = scales?;
-    let noise = a.clone().abs() < noise_level(sa) && b.clone().abs() < noise_level(sb);
+    // Both below the lower precision's resolution: the higher one may resolve a real value
+    // there (an ERBS weight of 1e-58 beside a path of size 20), but a p-bit result holds no
+    // digit of it, so 0 is its value to the precision printed.
+    let (sa, _) = scales?;
+    let level = noise_level(sa);
+    let noise = a.clone().abs() < level && b.clone().abs() < level;
     noise.then(|| ("0".to_string(), true))
 }
 

@@ -538,21 +538,35 @@ impl PathJob {
             .collect();
         // Mathematical zeros print as 0 (noise_level): coordinates next to the largest
         // waypoint coordinate, tangents next to the largest tangent, curvature next to 1/R.
-        let point_level = largest(waypoints.iter().flatten()).map(|m| noise_level(&m));
-        let tangent_level =
-            largest(at_knots.iter().flat_map(|p| p.d1.iter())).map(|m| noise_level(&m));
-        let curvature_level = noise_level(&(T::one_in(ctx) / &T::from_rational(&self.radius, ctx)));
-        let vector = |v: &[T; 2], level: Option<&T>| {
-            Out::nums(v.iter().map(|x| flush(x.clone(), level)).collect())
+        // Each is also marked as a possible zero with its scale, so a value below the
+        // lower precision's resolution at both precisions certifies as 0 (an ERBS weight of
+        // 1e-58 is a real value at 256 bits and nothing at 128).
+        let point_scale = largest(waypoints.iter().flatten());
+        let tangent_scale = largest(at_knots.iter().flat_map(|p| p.d1.iter()));
+        let curvature_scale = T::one_in(ctx) / &T::from_rational(&self.radius, ctx);
+        let curvature_level = noise_level(&curvature_scale);
+        let vector = |v: &[T; 2], scale: Option<&T>| {
+            let level = scale.map(noise_level);
+            Out::List(
+                v.iter()
+                    .map(|x| {
+                        let x = flush(x.clone(), level.as_ref());
+                        scale.map_or(Out::Num(x.clone()), |s| Out::MaybeZero(x, s.clone()))
+                    })
+                    .collect(),
+            )
         };
-        let kappa = |k: &T| finite_or_null(flush(k.clone(), Some(&curvature_level)));
+        let kappa = |k: &T| match finite_or_null(flush(k.clone(), Some(&curvature_level))) {
+            Out::Num(x) => Out::MaybeZero(x, curvature_scale.clone()),
+            other => other,
+        };
         let at_waypoints = at_knots
             .iter()
             .map(|p| {
                 Out::object(vec![
                     ("t", Out::Num(p.t.clone())),
-                    ("point", vector(&p.point, point_level.as_ref())),
-                    ("tangent", vector(&p.d1, tangent_level.as_ref())),
+                    ("point", vector(&p.point, point_scale.as_ref())),
+                    ("tangent", vector(&p.d1, tangent_scale.as_ref())),
                     ("curvature", kappa(&p.curvature)),
                 ])
             })
@@ -567,7 +581,7 @@ impl PathJob {
                 Out::List(
                     samples
                         .iter()
-                        .map(|p| vector(&p.point, point_level.as_ref()))
+                        .map(|p| vector(&p.point, point_scale.as_ref()))
                         .collect(),
                 ),
             ),
