@@ -59,34 +59,33 @@ pub enum Source {
     Data(std::path::PathBuf),
 }
 
-/// The curve in one number type: an expression compiled for it, or the data's spline.
-enum UserCurve<T> {
+/// The curve in one number type: an expression compiled for it, or the data's spline
+/// (borrowed: it is the same exact piecewise polynomial in every type).
+enum UserCurve<'a, T> {
     Expression(crate::curve::CompiledCurve<T>),
-    Closed(PeriodicSpline),
-    Open(ClampedSpline),
+    Closed(&'a PeriodicSpline),
+    Open(&'a ClampedSpline),
 }
 
-impl<T: crate::scalar::Real> Curve<T> for UserCurve<T> {
-    fn jet(&self, t: &T, order: usize) -> Vec<[T; 3]> {
+impl<T: crate::scalar::Real> UserCurve<'_, T> {
+    fn as_curve(&self) -> &dyn Curve<T> {
         match self {
-            UserCurve::Expression(c) => c.jet(t, order),
-            UserCurve::Closed(s) => s.jet(t, order),
-            UserCurve::Open(s) => s.jet(t, order),
+            UserCurve::Expression(c) => c,
+            UserCurve::Closed(s) => *s,
+            UserCurve::Open(s) => *s,
         }
+    }
+}
+
+impl<T: crate::scalar::Real> Curve<T> for UserCurve<'_, T> {
+    fn jet(&self, t: &T, order: usize) -> Vec<[T; 3]> {
+        self.as_curve().jet(t, order)
     }
     fn seam_bound(&self, lo: f64, centre: (f64, f64), hi: f64) -> f64 {
-        match self {
-            UserCurve::Expression(c) => c.seam_bound(lo, centre, hi),
-            UserCurve::Closed(s) => Curve::<T>::seam_bound(s, lo, centre, hi),
-            UserCurve::Open(s) => Curve::<T>::seam_bound(s, lo, centre, hi),
-        }
+        self.as_curve().seam_bound(lo, centre, hi)
     }
     fn breakpoints(&self, lo: f64, hi: f64) -> Vec<f64> {
-        match self {
-            UserCurve::Expression(c) => c.breakpoints(lo, hi),
-            UserCurve::Closed(s) => Curve::<T>::breakpoints(s, lo, hi),
-            UserCurve::Open(s) => Curve::<T>::breakpoints(s, lo, hi),
-        }
+        self.as_curve().breakpoints(lo, hi)
     }
 }
 
@@ -99,11 +98,11 @@ enum Parsed {
 }
 
 impl Parsed {
-    fn in_type<T: crate::scalar::Real>(&self, ctx: &T::Ctx) -> UserCurve<T> {
+    fn in_type<T: crate::scalar::Real>(&self, ctx: &T::Ctx) -> UserCurve<'_, T> {
         match self {
             Parsed::Expression(e) => UserCurve::Expression(e.compile::<T>(ctx)),
-            Parsed::Closed(s, _) => UserCurve::Closed(s.clone()),
-            Parsed::Open(s, _) => UserCurve::Open(s.clone()),
+            Parsed::Closed(s, _) => UserCurve::Closed(s),
+            Parsed::Open(s, _) => UserCurve::Open(s),
         }
     }
 }
@@ -399,7 +398,7 @@ fn compute(r: &Request, plan: &Plan) -> Result<Vec<Level>, Failure> {
 /// The fit of `curve` on `segments` pieces of [a, b] by the plan's method, in any type.
 fn fit<T: Real>(
     method: Method,
-    curve: &UserCurve<T>,
+    curve: &UserCurve<'_, T>,
     (a, b): (&T, &T),
     segments: usize,
 ) -> Result<Fitted<T>, String> {

@@ -551,7 +551,10 @@ impl PathJob {
                 v.iter()
                     .map(|x| {
                         let x = flush(x.clone(), level.as_ref());
-                        scale.map_or(Out::Num(x.clone()), |s| Out::MaybeZero(x, s.clone()))
+                        match scale {
+                            Some(s) => Out::MaybeZero(x, s.clone()),
+                            None => Out::Num(x),
+                        }
                     })
                     .collect(),
             )

@@ -380,13 +380,15 @@ pub fn proven_error<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
         .into_par_iter()
         .map(|k| model(curve, pw, (k, &pw.control_points(k)), (&zero, &one)))
         .collect();
+    // The remainder each piece must reach: a tenth of the target width at the lower bound.
+    let tolerance_at = |lower: f64| (lower * target / 10.0).max(f64::MIN_POSITIVE);
     let mut rough = sampled_lower_bound(&whole, bits);
-    if whole.iter().any(|m| m.remainder > rough * target / 10.0) {
+    if whole.iter().any(|m| m.remainder > tolerance_at(rough)) {
         // Some segment must be split: the bound sets how finely, so make it as good as a
         // direct evaluation can (the models' remainders may be too large to give one).
         rough = rough.max(evaluated_lower_bound(curve, pw));
     }
-    let tolerance = (rough * target / 10.0).max(f64::MIN_POSITIVE);
+    let tolerance = tolerance_at(rough);
     let models: Vec<Model> = whole
         .into_par_iter()
         .flat_map_iter(|m| pieces(curve, pw, m, tolerance))

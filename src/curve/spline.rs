@@ -110,11 +110,10 @@ impl PeriodicSpline {
                 a.add(i, col, v);
             }
         }
-        let rhs = Matrix::from_fn(n, 3, |i, d| Float::from_f64(points[i][d], &FIT_BITS));
-        let c = a.solve(&rhs).map_err(|_| SplineError::Singular)?;
-        for (j, cj) in spline.coefficients.iter_mut().enumerate() {
-            *cj = [c[(j, 0)].to_f64(), c[(j, 1)].to_f64(), c[(j, 2)].to_f64()];
-        }
+        let c = a
+            .solve(data_matrix(points))
+            .map_err(|_| SplineError::Singular)?;
+        spline.coefficients = rounded_rows(&c);
         Ok(spline)
     }
 
@@ -187,6 +186,20 @@ impl PeriodicSpline {
         };
         norm_up(&top(i), &top(i - 1))
     }
+}
+
+/// The data points as an N × 3 right-hand side at `FIT_BITS` (exact: they are doubles).
+fn data_matrix(points: &[[f64; 3]]) -> Matrix<Float> {
+    Matrix::from_fn(points.len(), 3, |i, d| {
+        Float::from_f64(points[i][d], &FIT_BITS)
+    })
+}
+
+/// The rows of an N × 3 solution, each entry rounded to the nearest double.
+fn rounded_rows(c: &Matrix<Float>) -> Vec<[f64; 3]> {
+    (0..c.rows())
+        .map(|j| [c[(j, 0)].to_f64(), c[(j, 1)].to_f64(), c[(j, 2)].to_f64()])
+        .collect()
 }
 
 /// ‖a − b‖ rounded up, for balls.
@@ -453,11 +466,10 @@ impl ClampedSpline {
                 a.add(i, first + j, v);
             }
         }
-        let rhs = Matrix::from_fn(n, 3, |i, d| Float::from_f64(points[i][d], &FIT_BITS));
-        let c = a.solve(rhs).map_err(|_| SplineError::Singular)?;
-        for (j, cj) in spline.coefficients.iter_mut().enumerate() {
-            *cj = [c[(j, 0)].to_f64(), c[(j, 1)].to_f64(), c[(j, 2)].to_f64()];
-        }
+        let c = a
+            .solve(data_matrix(points))
+            .map_err(|_| SplineError::Singular)?;
+        spline.coefficients = rounded_rows(&c);
         Ok(spline)
     }
 

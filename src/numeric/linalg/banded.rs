@@ -156,7 +156,7 @@ impl<T: Field> Cyclic<T> {
 
     /// Solve A X = B (Woodbury: one banded elimination and a dense solve of the size of the
     /// number of corner columns).
-    pub fn solve(self, rhs: &Matrix<T>) -> Result<Matrix<T>, SingularMatrix> {
+    pub fn solve(self, rhs: Matrix<T>) -> Result<Matrix<T>, SingularMatrix> {
         let n = self.band.n;
         let k = rhs.cols();
         let mut columns: Vec<usize> = self.corners.iter().map(|c| c.1).collect();
@@ -250,7 +250,7 @@ mod tests {
             let rhs = Matrix::from_fn(n, 2, |i, j| q(entry(j, i) + 1));
             let b0: Vec<BigRational> = (0..n).map(|i| rhs[(i, 0)].clone()).collect();
             let b1: Vec<BigRational> = (0..n).map(|i| rhs[(i, 1)].clone()).collect();
-            let x = system.solve(&rhs).expect("nonsingular");
+            let x = system.solve(rhs.clone()).expect("nonsingular");
             assert_eq!(
                 (0..n).map(|i| x[(i, 0)].clone()).collect::<Vec<_>>(),
                 gauss::solve(&dense, &b0).unwrap()
