@@ -25,6 +25,7 @@ fn spec<T: Real>(ctx: &T::Ctx) -> PathSpec<T> {
         theta_o: T::pi(ctx) / &T::from_i64(8, ctx),
         line_length: None,
         convention: ArcConvention::TurnDirection,
+        turns: None,
     }
 }
 

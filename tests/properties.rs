@@ -373,6 +373,7 @@ mod gerbs {
             theta_o: T::pi(ctx) / &T::from_i64(8, ctx),
             line_length: None,
             convention: ArcConvention::TurnDirection,
+            turns: None,
         }
     }
 

@@ -13,7 +13,7 @@
 use super::input::{fail, RunError};
 use super::output::Out;
 use super::Rendered;
-use crate::scalar::ball::{undecided_comparisons, Ball};
+use crate::scalar::ball::{tally, Ball};
 use crate::scalar::{BigRational, Field, Float, Real, ScalarKind};
 
 /// A computation that needs only `+ − × ÷`: runs in f64, rationals and MPFR.
@@ -56,9 +56,8 @@ fn proven(
     scalar: ScalarKind,
     run: impl FnOnce() -> Result<Out<Ball>, RunError>,
 ) -> Result<Rendered, RunError> {
-    let before = undecided_comparisons();
-    let out = run()?;
-    let undecided = undecided_comparisons().saturating_sub(before);
+    let (out, undecided) = tally(run);
+    let out = out?;
     if undecided > 0 {
         return Err(RunError::Internal(format!(
             "{undecided} comparison(s) could not be decided in {scalar} (the balls overlap), so the result is not proven; \

@@ -160,24 +160,19 @@ pub fn number(v: &Value, path: &str) -> Result<BigRational, InputError> {
 
 /// A real input: an exact number, or a constant expression such as `"pi/8"` (the curve
 /// language without t) that is evaluated in the working precision.
-#[derive(Clone, Debug, PartialEq)]
-pub enum RealInput {
-    Exact(BigRational),
-    Expr(crate::curve::expr::Expr),
-}
+pub use crate::curve::expr::ExactReal as RealInput;
 
-impl RealInput {
-    /// The value in the number type `T`; an error naming `path` if it is not finite.
-    pub fn to<T: crate::scalar::Real>(&self, ctx: &T::Ctx, path: &str) -> Result<T, InputError> {
-        let x = match self {
-            RealInput::Exact(q) => T::from_rational(q, ctx),
-            RealInput::Expr(e) => e.eval(&T::zero_in(ctx)),
-        };
-        if !x.is_finite() {
-            return fail(format!("field \"{path}\": the expression is not finite"));
-        }
-        Ok(x)
+/// The value of an exact input in `T`; an error naming `path` if it is not finite.
+pub fn real_in<T: crate::scalar::Real>(
+    x: &RealInput,
+    ctx: &T::Ctx,
+    path: &str,
+) -> Result<T, InputError> {
+    let v = x.eval::<T>(ctx);
+    if !v.is_finite() {
+        return fail(format!("field \"{path}\": the expression is not finite"));
     }
+    Ok(v)
 }
 
 /// A number, or a string holding a number or a constant expression (`"pi/8"`), at `path`.

@@ -464,7 +464,19 @@ fn run(
     }
     let text = String::from_utf8(bytes)
         .map_err(|e| Failure::Usage(format!("{source}: not UTF-8 text: {e}")))?;
-    let doc = input::parse_document(&text).map_err(|e| Failure::Usage(e.0))?;
+    run_text(algorithm, scalar, &text)
+}
+
+/// `run <algorithm> [--scalar <scalar>]` on the JSON input `text`, in process: the JSON
+/// line it prints, or how it failed (for the differential soundness test, which runs
+/// thousands of inputs without a process each).
+#[doc(hidden)]
+pub fn run_text(
+    algorithm: Algorithm,
+    scalar: Option<ScalarKind>,
+    text: &str,
+) -> Result<String, Failure> {
+    let doc = input::parse_document(text).map_err(|e| Failure::Usage(e.0))?;
     let value = match algorithm {
         Algorithm::Hermite => run_hermite::run_hermite(&doc, scalar.unwrap_or(ScalarKind::F64)),
         Algorithm::HermiteCondition => {

@@ -129,47 +129,31 @@ pub fn render_plain<T: Field>(out: &Out<T>) -> Value {
     }
 }
 
-/// A radius as a short decimal that is not below it (two significant digits, rounded up).
-fn radius_text(r: f64) -> String {
-    if r == 0.0 || !r.is_finite() {
-        return format!("{r:e}");
-    }
-    // "d.ddd…e±x" of the double itself, then its mantissa rounded up to one decimal.
-    let full = format!("{r:e}");
-    let (mantissa, exponent) = full.split_once('e').unwrap_or((&full, "0"));
-    let exponent: i32 = exponent.parse().unwrap_or(0);
-    let tenths = (mantissa.parse::<f64>().unwrap_or(9.9) * 10.0 * (1.0 + 1e-15)).ceil() as i64;
-    if tenths >= 100 {
-        format!("1.0e{}", exponent + 1)
-    } else {
-        format!("{}.{}e{}", tenths / 10, tenths % 10, exponent)
-    }
-}
-
-/// Render a ball tree: each number as {"value": the digits every point of its ball rounds
-/// to (null when not even one is proven), "radius": an upper bound of the ball's radius}.
+/// Render a ball tree: each number as {"value", "radius"}, two decimals with every point
+/// of the ball inside [value − radius, value + radius] as printed ([`Ball::printed`]):
+/// `value` carries the digits every point of the ball rounds to (the midpoint to two digits
+/// when not even one is proven) and `radius` is measured from `value`, rounded up.
 /// Fails, naming the field, when a ball is not finite (an unbounded enclosure).
 pub fn render_proven(out: &Out<Ball>, path: &str) -> Result<Value, RunError> {
     Ok(match out {
         Out::Num(b) | Out::MaybeZero(b, _) => {
-            if !Field::is_finite(b) {
+            let Some(printed) = b.printed() else {
+                if b.mid().is_finite() && b.mid().clone().abs() > 1e290 {
+                    return Err(RunError::Input(format!(
+                        "output \"{path}\" is about {} in ball:{}: beyond the range of a ball's radius (an f64, about 1e308); use mpfr:<bits>",
+                        format_float_digits(b.mid(), 3),
+                        b.ctx()
+                    )));
+                }
                 return Err(RunError::Input(format!(
                     "output \"{path}\" has no finite enclosure in ball:{}: an operation met a ball containing a singularity \
                      (a division by a ball around 0, a square root or logarithm of one reaching below 0); raise the precision",
                     b.ctx()
                 )));
-            }
-            let (digits, text) = b.proven_digits();
+            };
             let mut m = Map::new();
-            m.insert(
-                "value".into(),
-                if digits == 0 {
-                    Value::Null
-                } else {
-                    Value::String(text)
-                },
-            );
-            m.insert("radius".into(), Value::String(radius_text(b.rad())));
+            m.insert("value".into(), Value::String(printed.value));
+            m.insert("radius".into(), Value::String(printed.radius));
             Value::Object(m)
         }
         Out::List(items) => Value::Array(

@@ -6,7 +6,7 @@ use super::input::{self, fail, InputError, RunError};
 use super::output::Out;
 use super::Rendered;
 use crate::algo::bspline::bang_bang;
-use crate::algo::bspline::fit::SplineSpace;
+use crate::algo::bspline::fit::{schoenberg_whitney, FitError, SplineSpace};
 use crate::algo::bspline::gram::gram_entries;
 use crate::algo::bspline::CardinalBSpline;
 use crate::scalar::qsqrt2::QSqrt2;
@@ -120,6 +120,11 @@ fn read_fit(doc: &Map<String, Value>) -> Result<FitInput, InputError> {
     {
         return fail(format!("field \"times[{i}]\": {} lies outside the support (0, {end}) of the spline, where every basis function vanishes", times[i]));
     }
+    if weights.is_none() {
+        // Full row rank of B, decided exactly on the rational times (never on a pivot).
+        schoenberg_whitney(&times, degree, controls)
+            .map_err(|e| InputError(format!("field \"times\": {e}")))?;
+    }
     Ok(FitInput {
         degree,
         controls,
@@ -141,8 +146,11 @@ fn fit_in<T: Field>(data: &FitInput, ctx: &T::Ctx) -> Result<Out<T>, InputError>
     for c in 0..dims {
         let values: Vec<T> = data.values.iter().map(|v| conv(&v[c])).collect();
         let tau = match &weights {
-            None => space.interpolate(&times, &values),
-            Some(w) => space.smooth(&times, &values, w),
+            // Support, rank and weights were decided on the exact input (`read_fit`).
+            None => space
+                .interpolate_checked(&times, &values)
+                .and_then(|(tau, condition)| check_conditioning(tau, &condition, ctx)),
+            Some(w) => space.smooth_checked(&times, &values, w),
         }
         .map_err(|e| InputError(format!("field \"times\": {e}")))?;
         per_coordinate.push(tau);
@@ -165,6 +173,25 @@ fn fit_in<T: Field>(data: &FitInput, ctx: &T::Ctx) -> Result<Out<T>, InputError>
         ("tau", Out::List(tau)),
         ("problem", Out::Text(kind.into())),
     ]))
+}
+
+/// τ, or the refusal of a fit whose condition estimate leaves no correct digit at the
+/// unit roundoff of `T` (f64, MPFR; rationals are exact and balls carry their radius).
+fn check_conditioning<T: Field>(
+    tau: Vec<T>,
+    condition: &T,
+    ctx: &T::Ctx,
+) -> Result<Vec<T>, FitError> {
+    match T::unit_roundoff(ctx) {
+        Some(unit) if (condition.to_f64() * unit).is_nan() || condition.to_f64() * unit >= 0.5 => {
+            Err(FitError::IllConditioned {
+                scalar: T::scalar_name(ctx),
+                condition: condition.to_f64(),
+                unit,
+            })
+        }
+        _ => Ok(tau),
+    }
 }
 
 /// `run spline-fit`: optimal interpolating (weights null) or smoothing control points.

@@ -11,11 +11,16 @@ use super::input::{self, fail, InputError, RealInput, RunError};
 use super::output::{flush, largest, noise_level, Out};
 use super::Rendered;
 use crate::algo::gerbs::bfbs::{Bfbs, MAX_EXPONENT};
-use crate::algo::gerbs::dubins::{algorithm1_headings, through_poses, total_length};
+use crate::algo::gerbs::dubins::{
+    self, algorithm1_headings, algorithm1_legs, legs_with_headings, total_length, DubinsError,
+    DubinsPath, DubinsPlan, ExactLeg,
+};
 use crate::algo::gerbs::erbs::{CentreReading, Erbs, ErbsParams};
-use crate::algo::gerbs::path::{check_waypoints, ArcConvention, GerbsPath, PathSpec};
+use crate::algo::gerbs::path::{
+    check_waypoints, exact_turn_signs, ArcConvention, GerbsPath, PathSpec,
+};
 use crate::algo::gerbs::quadrature::default_tolerance;
-use crate::algo::gerbs::{basis_derivatives, Blend, GerbsError, Knots, Side};
+use crate::algo::gerbs::{basis_derivatives_located, Blend, GerbsError, Knots, Located, Side};
 use crate::scalar::{BigRational, Field, Real, ScalarKind};
 use serde_json::{Map, Value};
 
@@ -262,7 +267,11 @@ impl BasisParams {
             };
             let mut v = Vec::with_capacity(5);
             for (x, name) in set.iter().zip(ERBS_FIELDS) {
-                v.push(x.to::<T>(ctx, &format!("params.{name}{index}"))?);
+                v.push(input::real_in::<T>(
+                    x,
+                    ctx,
+                    &format!("params.{name}{index}"),
+                )?);
             }
             let [alpha, beta, gamma, lambda, sigma]: [T; 5] = v
                 .try_into()
@@ -320,9 +329,21 @@ impl BasisJob {
             .at
             .iter()
             .map(|q| {
-                let t = T::from_rational(q, &ctx);
-                let d = basis_derivatives(knots, blend, &t, self.derivatives, self.side)
-                    .unwrap_or_default();
+                // The knot interval and side are decided on the exact point, never on its
+                // rounding (a point 1e-40 below a knot rounds onto it).
+                let d = match self.knots.interval(q, self.side) {
+                    Some(j) => {
+                        // The distances to the interval's ends exact, rounded once.
+                        let at = Located {
+                            t: T::from_rational(q, &ctx),
+                            interval: j,
+                            after_start: T::from_rational(&(q.clone() - self.knots.at(j)), &ctx),
+                            before_end: T::from_rational(&(self.knots.at(j + 1).clone() - q), &ctx),
+                        };
+                        basis_derivatives_located(knots, blend, &at, self.derivatives)
+                    }
+                    None => Vec::new(),
+                };
                 Out::List(
                     d.into_iter()
                         .map(|b| Out::List(b.into_iter().map(finite_or_null).collect()))
@@ -532,8 +553,7 @@ impl PathJob {
         let at_knots: Vec<_> = (0..n)
             .map(|i| {
                 // The knot t_{i+2} of waypoint i + 1 (from the inside at the ends).
-                let t = path.knots.at(i + 2).clone();
-                path.at(&t, if i + 1 == n { Side::Left } else { Side::Right })
+                path.at_knot(i + 2, if i + 1 == n { Side::Left } else { Side::Right })
             })
             .collect();
         // Mathematical zeros print as 0 (noise_level): coordinates next to the largest
@@ -616,9 +636,11 @@ impl RealJob for PathJob {
         let spec = PathSpec {
             waypoints: to_points(&self.waypoints, ctx),
             radius: T::from_rational(&self.radius, ctx),
-            theta_o: self.theta_o.to::<T>(ctx, "theta_o")?,
+            theta_o: input::real_in::<T>(&self.theta_o, ctx, "theta_o")?,
             line_length: self.line_length.as_ref().map(|l| T::from_rational(l, ctx)),
             convention: self.convention,
+            // Decided on the exact waypoints, not on their rounding.
+            turns: Some(exact_turn_signs(&self.waypoints).map_err(gerbs_error)?),
         };
         match &self.params {
             BasisParams::Bfbs(i) => {
@@ -751,6 +773,20 @@ fn path_budget(
     budget::check_output(4.0 * s + 5.0 * w, "samples", "this run")
 }
 
+/// A leg whose shortest word cannot be decided, as a one-line input error.
+fn dubins_error(e: &DubinsError) -> InputError {
+    let leg = match e {
+        DubinsError::Degenerate { leg, .. }
+        | DubinsError::Undecided { leg, .. }
+        | DubinsError::Tie { leg, .. } => *leg,
+    };
+    InputError(format!(
+        "field \"waypoints\": no Dubins path from waypoint {} to {}: {e}",
+        leg + 1,
+        leg + 2
+    ))
+}
+
 /// The ERBS quadrature's extra cost in MPFR beyond [`budget::mpfr_factor`]: the tanh–sinh
 /// rule needs more levels (twice the nodes each) as the precision rises, about (p/256)².
 fn erbs_extra(scalar: ScalarKind) -> f64 {
@@ -763,7 +799,7 @@ fn erbs_extra(scalar: ScalarKind) -> f64 {
 /// An angle (a number or a constant expression) within ±[`MAX_ANGLE`] rad at `path`.
 fn angle(v: &Value, path: &str) -> Result<RealInput, InputError> {
     let a = input::real(v, path)?;
-    let value: f64 = a.to(&(), path)?;
+    let value: f64 = input::real_in(&a, &(), path)?;
     if value.abs() > MAX_ANGLE {
         return fail(format!(
             "field \"{path}\": an angle must lie within ±{MAX_ANGLE:e} rad"
@@ -782,12 +818,14 @@ fn bfbs_extra(scalar: ScalarKind) -> f64 {
     }
 }
 
-/// What `run dubins` asks for.
+/// What `run dubins` asks for: the legs given exactly, each with its shortest word
+/// already decided on that exact input ([`dubins::plan`]).
 struct DubinsJob {
     waypoints: Vec<[BigRational; 2]>,
     headings: Option<Vec<RealInput>>,
     radius: BigRational,
     samples: usize,
+    legs: Vec<(ExactLeg, DubinsPlan)>,
 }
 
 impl RealJob for DubinsJob {
@@ -798,17 +836,16 @@ impl RealJob for DubinsJob {
             Some(h) => h
                 .iter()
                 .enumerate()
-                .map(|(k, x)| x.to::<T>(ctx, &format!("headings[{k}]")))
+                .map(|(k, x)| input::real_in::<T>(x, ctx, &format!("headings[{k}]")))
                 .collect::<Result<Vec<_>, _>>()?,
             None => algorithm1_headings(&w).map_err(gerbs_error)?,
         };
-        let legs = through_poses(&w, &headings, &radius).map_err(|i| {
-            InputError(format!(
-                "field \"waypoints\": no Dubins path from waypoint {} to {}",
-                i + 1,
-                i + 2
-            ))
-        })?;
+        // The decided words, evaluated in T: no comparison decides a branch here.
+        let legs: Vec<DubinsPath<T>> = self
+            .legs
+            .iter()
+            .map(|(leg, plan)| plan.path::<T>(leg, ctx))
+            .collect();
         let total = total_length(&legs, ctx);
         // Mathematical zeros print as 0 (noise_level): coordinates next to the largest
         // waypoint coordinate or R, headings next to π, segment lengths next to the total.
@@ -823,47 +860,25 @@ impl RealJob for DubinsJob {
             noise_level(&T::pi(ctx)),
             noise_level(&total),
         );
+        let scale = scale.clone();
+        let levels = Levels {
+            xy: (xy_level, scale),
+            angle: noise_level(&T::pi(ctx)),
+            length: (length_level, total.clone()),
+            pi: T::pi(ctx),
+        };
         let legs = legs
             .iter()
             .enumerate()
-            .map(|(i, leg)| {
-                let length = leg.total();
-                let samples = leg
-                    .samples(self.samples)
-                    .into_iter()
-                    .map(|[x, y, h]| {
-                        Out::nums(vec![
-                            flush(x, Some(&xy_level)),
-                            flush(y, Some(&xy_level)),
-                            flush(h, Some(&angle_level)),
-                        ])
-                    })
-                    .collect();
-                Out::object(vec![
-                    ("from", Out::Int(i as i64 + 1)),
-                    ("to", Out::Int(i as i64 + 2)),
-                    ("word", Out::Text(leg.word_name())),
-                    (
-                        "lengths",
-                        Out::nums(
-                            leg.lengths
-                                .iter()
-                                .map(|l| flush(l.clone(), Some(&length_level)))
-                                .collect(),
-                        ),
-                    ),
-                    ("length", Out::Num(length)),
-                    ("samples", Out::List(samples)),
-                ])
-            })
+            .map(|(i, leg)| leg_out(i, leg, self.samples, &levels))
             .collect();
         Ok(Out::object(vec![
             (
                 "headings",
-                Out::nums(
+                Out::List(
                     headings
                         .into_iter()
-                        .map(|h| flush(h, Some(&angle_level)))
+                        .map(|h| Out::MaybeZero(flush(h, Some(&angle_level)), T::pi(ctx)))
                         .collect(),
                 ),
             ),
@@ -873,14 +888,16 @@ impl RealJob for DubinsJob {
     }
 }
 
-/// `run dubins`: the shortest Dubins path of radius R between consecutive waypoint poses.
-pub fn run_dubins(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, RunError> {
-    input::only_fields(doc, &["waypoints", "headings", "radius", "samples"])?;
-    let waypoints = waypoints(doc)?;
-    let headings = match doc.get("headings") {
+/// The headings of `run dubins`: `None` for Algorithm 1's (whose checks then apply to the
+/// waypoints), or one exact angle per waypoint.
+fn dubins_headings(
+    doc: &Map<String, Value>,
+    waypoints: &[[BigRational; 2]],
+) -> Result<Option<Vec<RealInput>>, InputError> {
+    Ok(match doc.get("headings") {
         None => {
             // Headings from Algorithm 1: its checks apply.
-            check_waypoints(&waypoints).map_err(gerbs_error)?;
+            check_waypoints(waypoints).map_err(gerbs_error)?;
             None
         }
         Some(v) => {
@@ -912,7 +929,75 @@ pub fn run_dubins(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Render
                     .collect::<Result<Vec<_>, _>>()?,
             )
         }
+    })
+}
+
+/// Each leg given exactly, with its shortest word decided on that exact input (shared by
+/// every number type and both precisions of a certified run).
+fn planned_legs(
+    waypoints: &[[BigRational; 2]],
+    headings: Option<&[RealInput]>,
+    radius: &BigRational,
+) -> Result<Vec<(ExactLeg, DubinsPlan)>, InputError> {
+    let exact_legs = match headings {
+        Some(h) => legs_with_headings(waypoints, h, radius),
+        None => algorithm1_legs(waypoints, radius),
     };
+    exact_legs
+        .into_iter()
+        .enumerate()
+        .map(|(i, leg)| {
+            dubins::plan(&leg, i)
+                .map(|p| (leg, p))
+                .map_err(|e| dubins_error(&e))
+        })
+        .collect()
+}
+
+/// The noise levels of a Dubins output with the scales they come from (see
+/// [`Out::MaybeZero`]).
+struct Levels<T> {
+    xy: (T, T),
+    angle: T,
+    length: (T, T),
+    pi: T,
+}
+
+/// One leg of the `run dubins` output.
+fn leg_out<T: Real>(i: usize, leg: &DubinsPath<T>, samples: usize, levels: &Levels<T>) -> Out<T> {
+    let maybe =
+        |x: T, (level, scale): (&T, &T)| Out::MaybeZero(flush(x, Some(level)), scale.clone());
+    let xy = (&levels.xy.0, &levels.xy.1);
+    let angle = (&levels.angle, &levels.pi);
+    let length = (&levels.length.0, &levels.length.1);
+    let samples = leg
+        .samples(samples)
+        .into_iter()
+        .map(|[x, y, h]| Out::List(vec![maybe(x, xy), maybe(y, xy), maybe(h, angle)]))
+        .collect();
+    Out::object(vec![
+        ("from", Out::Int(i as i64 + 1)),
+        ("to", Out::Int(i as i64 + 2)),
+        ("word", Out::Text(leg.word_name())),
+        (
+            "lengths",
+            Out::List(
+                leg.lengths
+                    .iter()
+                    .map(|l| maybe(l.clone(), length))
+                    .collect(),
+            ),
+        ),
+        ("length", Out::Num(leg.total())),
+        ("samples", Out::List(samples)),
+    ])
+}
+
+/// `run dubins`: the shortest Dubins path of radius R between consecutive waypoint poses.
+pub fn run_dubins(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, RunError> {
+    input::only_fields(doc, &["waypoints", "headings", "radius", "samples"])?;
+    let waypoints = waypoints(doc)?;
+    let headings = dubins_headings(doc, &waypoints)?;
     let radius = positive(doc, "radius", "the turn radius R")?;
     let samples = match doc.get("samples") {
         Some(v) => input::count(v, "samples", MAX_POINTS)?,
@@ -939,11 +1024,13 @@ pub fn run_dubins(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Render
         ),
     )?;
     budget::check_output(3.0 * units, "samples", "this run")?;
+    let legs = planned_legs(&waypoints, headings.as_deref(), &radius)?;
     let job = DubinsJob {
         waypoints,
         headings,
         radius,
         samples,
+        legs,
     };
     run_real(&job, scalar, &needs_real("a Dubins path"))
 }

@@ -9,7 +9,7 @@ use crate::algo::param::descent::{descend, refine, Descent};
 use crate::algo::param::natural::NaturalCubicSpline;
 use crate::algo::param::objective::{chord_length_spacing, Objective};
 use crate::algo::param::one_d::{
-    chord_length_1d, classify, minimizing_parametrization, Case, ParamError,
+    chord_length_1d, classify, parametrization_exact, Case, ParamError, Shape,
 };
 use crate::scalar::{BigRational, Field, Real, ScalarKind};
 use serde_json::{Map, Value};
@@ -63,18 +63,36 @@ pub fn run_marin_1d(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rend
             ("case", Out::Text("I".into())),
         ]))
     };
-    run_real_or_exact(&MarinOneDJob { z: z.clone() }, scalar, exact)
+    let shape = Shape::of_exact(&z).map_err(|e| param_error(e, "z"))?;
+    run_real_or_exact(
+        &MarinOneDJob {
+            z: z.clone(),
+            shape,
+        },
+        scalar,
+        exact,
+    )
 }
 
 /// The exact minimizing parametrization of scalar ordinates (Sec. 2) in one number type.
 struct MarinOneDJob {
     z: Vec<BigRational>,
+    /// The signs of the differences, decided on the exact ordinates (the case and the
+    /// extremes follow from them, never from the rounded values).
+    shape: Shape,
 }
 
 impl RealJob for MarinOneDJob {
     fn run<T: Real>(&self, ctx: &T::Ctx) -> Result<Out<T>, RunError> {
         let zt: Vec<T> = self.z.iter().map(|q| T::from_rational(q, ctx)).collect();
-        let (t, case) = minimizing_parametrization(&zt).map_err(|e| param_error(e, "z"))?;
+        // |Δᵢ| exact, rounded once (a step of 1e-40 between values near 1 survives).
+        let magnitudes: Vec<T> = self
+            .z
+            .windows(2)
+            .map(|w| T::from_rational(&(w[1].clone() - &w[0]).abs(), ctx))
+            .collect();
+        let (t, case) = parametrization_exact(&zt, &magnitudes, &self.shape)
+            .map_err(|e| param_error(e, "z"))?;
         Ok(Out::object(vec![
             ("t", Out::nums(t)),
             ("case", Out::Text(case.name().into())),
@@ -106,6 +124,15 @@ pub fn run_natural_spline(
             "field \"t[{i}]\": knots must increase ({} after {})",
             t[i],
             t[i - 1]
+        ));
+    }
+    // A natural spline is defined on [t0, tN]; outside it the end pieces would be
+    // extrapolated, which the user did not ask for.
+    let (first, last) = (&t[0], &t[t.len() - 1]);
+    if let Some(k) = at.iter().position(|x| x < first || x > last) {
+        return fail(format!(
+            "field \"at[{k}]\": {} lies outside the knots [{first}, {last}], where the spline is not defined",
+            at[k]
         ));
     }
     // A tridiagonal solve per coordinate and one bisection per point: about N + P operations
@@ -163,9 +190,16 @@ fn eval<T: Field>(
     let column = |j: usize| -> Out<T> {
         Out::List(
             at.iter()
-                .map(|x| {
-                    let x = conv(x);
-                    let vals: Vec<T> = splines.iter().map(|s| s.eval_all(&x)[j].clone()).collect();
+                .map(|q| {
+                    // The piece is located on the exact point: the first i ≥ 1 with q ≤ tᵢ.
+                    let piece = (1 + t[1..].partition_point(|k| k < q)).min(t.len() - 1);
+                    // The distances to the piece's ends, exact, then rounded once.
+                    let u = conv(&(t[piece].clone() - q));
+                    let v = conv(&(q.clone() - &t[piece - 1]));
+                    let vals: Vec<T> = splines
+                        .iter()
+                        .map(|s| s.eval_offsets(&u, &v, piece)[j].clone())
+                        .collect();
                     if is_point {
                         Out::nums(vals)
                     } else {

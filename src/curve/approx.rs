@@ -12,6 +12,7 @@
 use super::Curve;
 use crate::numeric::poly::binom;
 use crate::numeric::quat::vec3;
+use crate::scalar::ball::carried;
 use crate::scalar::certify::{certify, Certified};
 use crate::scalar::{Field, Float, Real};
 use rayon::prelude::*;
@@ -92,7 +93,9 @@ pub fn conversion_error<T: Real, C: Curve<T> + ?Sized, P: BernsteinPieces<T> + ?
     let h = pw.step();
     let per_segment: Vec<(T, T, T)> = (0..pw.count())
         .into_par_iter()
-        .map(|k| segment_error(curve, &pw.control_points(k), &pw.knot(k), &h, samples))
+        .map(carried(|k| {
+            segment_error(curve, &pw.control_points(k), &pw.knot(k), &h, samples)
+        }))
         .collect();
     let mut best = 0usize;
     for k in 1..per_segment.len() {

@@ -33,6 +33,7 @@ use super::approx::BernsteinPieces;
 use super::Curve;
 use crate::numeric::poly::bernstein::bernstein_jet;
 use crate::numeric::quat::vec3;
+use crate::scalar::ball::carried;
 use crate::scalar::ball::Ball;
 use crate::scalar::{Field, Float, Real};
 use rayon::prelude::*;
@@ -323,7 +324,7 @@ const LOWER_SAMPLES: i64 = 8;
 fn sampled_lower_bound(whole: &[Model], bits: u32) -> f64 {
     whole
         .par_iter()
-        .map(|m| {
+        .map(carried(|m: &Model| {
             (0..=LOWER_SAMPLES)
                 .map(|i| {
                     // s₀ = ω(2i/L − 1) spans the piece [u_c − ω, u_c + ω].
@@ -333,7 +334,7 @@ fn sampled_lower_bound(whole: &[Model], bits: u32) -> f64 {
                     box_bounds(m, &s0, &Float::with_val(bits, 0)).0
                 })
                 .fold(0.0, f64::max)
-        })
+        }))
         .reduce(|| 0.0, f64::max)
 }
 
@@ -347,7 +348,7 @@ fn evaluated_lower_bound<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Si
     let h = pw.step();
     (0..pw.count())
         .into_par_iter()
-        .map(|k| {
+        .map(carried(|k| {
             let points = pw.control_points(k);
             let tk = pw.knot(k);
             (0..=LOWER_SAMPLES)
@@ -359,40 +360,36 @@ fn evaluated_lower_bound<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Si
                     norm.lower().to_f64_round(Round::Down).max(0.0)
                 })
                 .fold(0.0, f64::max)
-        })
+        }))
         .reduce(|| 0.0, f64::max)
 }
 
-/// Proven bounds lower ≤ E ≤ upper of the conversion error of `pw` against `curve`,
-/// searched until (upper − lower)/lower ≤ `target` or `max_boxes` boxes were evaluated.
-pub fn proven_error<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
-    curve: &C,
-    pw: &P,
-    target: f64,
-    max_boxes: usize,
-) -> ErrorEnclosure {
-    let bits = pw.interval().0.ctx();
-    let n = pw.count();
-    // Whole-segment models first: their centres give a lower bound that sizes the
-    // remainder tolerance; only segments whose remainder exceeds it are split.
-    let (zero, one) = (Float::with_val(bits, 0), Float::with_val(bits, 1));
-    let whole: Vec<Model> = (0..n)
-        .into_par_iter()
-        .map(|k| model(curve, pw, (k, &pw.control_points(k)), (&zero, &one)))
-        .collect();
-    // The remainder each piece must reach: a tenth of the target width at the lower bound.
-    let tolerance_at = |lower: f64| (lower * target / 10.0).max(f64::MIN_POSITIVE);
-    let mut rough = sampled_lower_bound(&whole, bits);
-    if whole.iter().any(|m| m.remainder > tolerance_at(rough)) {
-        // Some segment must be split: the bound sets how finely, so make it as good as a
-        // direct evaluation can (the models' remainders may be too large to give one).
-        rough = rough.max(evaluated_lower_bound(curve, pw));
-    }
-    let tolerance = tolerance_at(rough);
-    let models: Vec<Model> = whole
-        .into_par_iter()
-        .flat_map_iter(|m| pieces(curve, pw, m, tolerance))
-        .collect();
+/// The width below which no box narrows the bounds: the width they already have at the
+/// centre of a whole segment (a box of width 0: only the radii of the balls, the Taylor
+/// remainder taken out), four times over, plus the floor of the squared norm: the bounds come
+/// from F = ‖Q‖², whose rounding noise is about 2^−p·size², so E is not resolved below
+/// √(2^−p)·size. An error that is rounding noise (a curve the method reproduces exactly) is
+/// then enclosed in [0, about the floor] instead of being split and bisected to the budget.
+fn precision_floor<P: BernsteinPieces<Ball> + ?Sized>(pw: &P, whole: &[Model], bits: u32) -> f64 {
+    let zero_width = Float::with_val(bits, 0);
+    let size = (0..pw.count())
+        .flat_map(|k| pw.control_points(k))
+        .flat_map(|p| p.into_iter())
+        .map(|x| x.mid().to_f64().abs())
+        .fold(0.0f64, f64::max);
+    let squared_floor = 16.0 * size * 2f64.powi(-(bits.min(2000) as i32) / 2);
+    whole
+        .iter()
+        .map(|m| {
+            let (lo, up) = box_bounds(m, &zero_width, &zero_width);
+            (up - lo - 2.0 * m.remainder).max(0.0)
+        })
+        .fold(f64::MIN_POSITIVE, f64::max)
+        .mul_add(4.0, squared_floor)
+}
+
+/// One box per piece, the whole piece, with the best lower bound (and its segment) they give.
+fn first_boxes(models: &[Model], bits: u32) -> (BinaryHeap<Candidate>, (f64, usize)) {
     let mut best = (0.0f64, 0usize);
     let mut heap = BinaryHeap::new();
     for (i, m) in models.iter().enumerate() {
@@ -408,10 +405,54 @@ pub fn proven_error<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
             half_width: m.half_width.clone(),
         });
     }
+    (heap, best)
+}
+
+/// Proven bounds lower ≤ E ≤ upper of the conversion error of `pw` against `curve`,
+/// searched until (upper − lower)/lower ≤ `target`, or upper − lower is below the precision
+/// floor (about √(2^−p) times the size of the control points, where the squared norm the
+/// bounds come from is rounding noise: an error the method does not resolve at p bits, such
+/// as that of a curve it reproduces exactly), or `max_boxes` boxes were evaluated.
+pub fn proven_error<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
+    curve: &C,
+    pw: &P,
+    target: f64,
+    max_boxes: usize,
+) -> ErrorEnclosure {
+    let bits = pw.interval().0.ctx();
+    let n = pw.count();
+    // Whole-segment models first: their centres give a lower bound that sizes the
+    // remainder tolerance; only segments whose remainder exceeds it are split.
+    let (zero, one) = (Float::with_val(bits, 0), Float::with_val(bits, 1));
+    let whole: Vec<Model> = (0..n)
+        .into_par_iter()
+        .map(carried(|k| {
+            model(curve, pw, (k, &pw.control_points(k)), (&zero, &one))
+        }))
+        .collect();
+    let floor = precision_floor(pw, &whole, bits);
+    // The remainder each piece must reach: a tenth of the target width at the lower bound,
+    // or the floor.
+    let tolerance_at = |lower: f64| (lower * target / 10.0).max(floor);
+    let mut rough = sampled_lower_bound(&whole, bits);
+    if whole.iter().any(|m| m.remainder > tolerance_at(rough)) {
+        // Some segment must be split: the bound sets how finely, so make it as good as a
+        // direct evaluation can (the models' remainders may be too large to give one).
+        rough = rough.max(evaluated_lower_bound(curve, pw));
+    }
+    let tolerance = tolerance_at(rough);
+    let models: Vec<Model> = whole
+        .into_par_iter()
+        .flat_map_iter(carried(|m| pieces(curve, pw, m, tolerance)))
+        .collect();
+    let (mut heap, mut best) = first_boxes(&models, bits);
     let mut boxes = models.len();
     let upper = loop {
         let Some(top) = heap.pop() else { break best.0 };
-        let done = top.upper <= best.0 * (1.0 + target);
+        // No bisection narrows a box below its model's Taylor remainder (both bounds carry
+        // it) and the precision floor: stop there too.
+        let irreducible = 2.0 * (models[top.model].remainder + floor);
+        let done = top.upper <= best.0 * (1.0 + target) || top.upper - best.0 <= irreducible;
         if done || boxes >= max_boxes {
             break top.upper;
         }

@@ -122,6 +122,27 @@ impl Expr {
     }
 }
 
+/// A real number given exactly: a rational, or a constant expression such as `pi/8`
+/// (exact as a formula, rounded only when it is evaluated in a number type).
+#[derive(Clone, Debug, PartialEq)]
+pub enum ExactReal {
+    /// A rational number.
+    Exact(BigRational),
+    /// A constant expression (it does not mention t).
+    Expr(Expr),
+}
+
+impl ExactReal {
+    /// The value in the number type `T` (rounded once for a rational; for an expression,
+    /// each operation rounded in `T`, so a ball encloses it).
+    pub fn eval<T: Real>(&self, ctx: &T::Ctx) -> T {
+        match self {
+            ExactReal::Exact(q) => T::from_rational(q, ctx),
+            ExactReal::Expr(e) => e.eval(&T::zero_in(ctx)),
+        }
+    }
+}
+
 /// An [`Expr`] with its numbers rounded once into a context: what evaluation runs on.
 #[derive(Clone, Debug)]
 pub enum Compiled<T> {

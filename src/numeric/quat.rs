@@ -279,8 +279,11 @@ pub fn solve_quadratic<T: Real>(a: &[T; 3], phi: &T) -> Result<Quat<T>, Quadrati
 }
 
 /// |a| + a_x, computed as (a_y² + a_z²)/(|a| − a_x) when a_x < 0 to avoid cancellation.
+///
+/// The two forms are equal, so the branch is a rounding choice, not a decision the value
+/// rests on: a ball that straddles 0 takes the first form without counting a comparison.
 pub fn sum_with_norm<T: Real>(norm: &T, a: &[T; 3]) -> T {
-    if a[0] < T::zero_in(&a[0].ctx()) {
+    if a[0].decide_lt(&T::zero_in(&a[0].ctx())) == Some(true) {
         (a[1].clone() * &a[1] + &(a[2].clone() * &a[2])) / &(norm.clone() - &a[0])
     } else {
         norm.clone() + &a[0]

@@ -37,6 +37,35 @@ use rug::Float;
 use std::cmp::Ordering;
 use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 use std::sync::atomic::{AtomicU64, Ordering as AtomicOrdering};
+use std::sync::Arc;
+
+/// A ball as printed (see [`Ball::printed`]): every point of the ball lies within `radius`
+/// of `value`, both read as exact decimals.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct PrintedBall {
+    /// A decimal: the proven digits, or the midpoint to two digits when none is proven.
+    pub value: String,
+    /// An upper bound of the distance from `value` to every point of the ball, two
+    /// significant digits rounded up ("0" for an exact ball printed in full).
+    pub radius: String,
+    /// How many significant digits of `value` are proven (every point of the ball rounds
+    /// to them); 0 when not even the first is.
+    pub digits: u32,
+}
+
+/// A non-negative rational as a decimal of two significant digits that is not below it
+/// ("0" for zero).
+fn upper_decimal(x: &rug::Rational) -> String {
+    if *x == 0 {
+        return "0".into();
+    }
+    // A 64-bit upper bound, then two decimal digits rounded up from it.
+    let (up, _) = Float::with_val_round(64, x, Round::Up);
+    let (negative, mantissa, exp) = up.to_sign_string_exp_round(10, Some(2), Round::Up);
+    let e = exp.unwrap_or(0) - 1;
+    let (lead, rest) = mantissa.split_at(1.min(mantissa.len()));
+    format!("{}{lead}.{rest}e{e}", if negative { "-" } else { "" })
+}
 
 /// A real number known to lie in [mid − rad, mid + rad].
 #[derive(Clone, Debug)]
@@ -47,13 +76,58 @@ pub struct Ball {
 
 static UNDECIDED: AtomicU64 = AtomicU64::new(0);
 
-/// How many ball comparisons could not be decided since the process started (all threads).
+thread_local! {
+    /// The tally of the computation running on this thread ([`tally`]), if any.
+    static CURRENT: std::cell::RefCell<Option<Arc<AtomicU64>>> = const { std::cell::RefCell::new(None) };
+}
+
+/// How many ball comparisons could not be decided since the process started, outside any
+/// [`tally`] (all threads).
 pub fn undecided_comparisons() -> u64 {
     UNDECIDED.load(AtomicOrdering::Relaxed)
 }
 
+/// Run `f` and count the undecided comparisons it makes, and only those: the count belongs
+/// to this computation, not to the process, so computations on other threads (other
+/// commands, other tests) cannot add to it. Work `f` hands to rayon must carry the tally
+/// into the worker threads with [`carried`].
+pub fn tally<R>(f: impl FnOnce() -> R) -> (R, u64) {
+    let counter = Arc::new(AtomicU64::new(0));
+    let result = installed(Some(counter.clone()), f);
+    (result, counter.load(AtomicOrdering::Relaxed))
+}
+
+/// `f` wrapped to count its undecided comparisons in the tally of the thread that wraps it
+/// (for closures run on rayon's worker threads: `.map(carried(|k| …))`).
+pub fn carried<A, R, F: Fn(A) -> R + Sync + Send>(f: F) -> impl Fn(A) -> R + Sync + Send {
+    let counter = CURRENT.with(|c| c.borrow().clone());
+    move |a| installed(counter.clone(), || f(a))
+}
+
+fn installed<R>(counter: Option<Arc<AtomicU64>>, f: impl FnOnce() -> R) -> R {
+    let previous = CURRENT.with(|c| c.replace(counter));
+    // Restore the previous tally even if `f` unwinds.
+    struct Restore(Option<Arc<AtomicU64>>);
+    impl Drop for Restore {
+        fn drop(&mut self) {
+            let previous = self.0.take();
+            CURRENT.with(|c| *c.borrow_mut() = previous);
+        }
+    }
+    let _restore = Restore(previous);
+    f()
+}
+
 fn undecided() {
-    UNDECIDED.fetch_add(1, AtomicOrdering::Relaxed);
+    let counted = CURRENT.with(|c| {
+        c.borrow()
+            .as_ref()
+            .map(|t| t.fetch_add(1, AtomicOrdering::Relaxed))
+            .is_some()
+    });
+    if !counted {
+        UNDECIDED.fetch_add(1, AtomicOrdering::Relaxed);
+    }
     if std::env::var_os("TRAJVERIFY_BALL_TRACE").is_some() {
         eprintln!("{}", std::backtrace::Backtrace::force_capture());
     }
@@ -209,9 +283,14 @@ impl Ball {
         .0
     }
 
-    /// The smallest ball (up to rounding outward) containing [lo, hi].
+    /// The smallest ball (up to rounding outward) containing [lo, hi], its midpoint at the
+    /// larger precision of the two bounds.
     pub fn from_bounds(lo: &Float, hi: &Float) -> Ball {
-        let prec = lo.prec().max(hi.prec());
+        Ball::from_bounds_at(lo, hi, lo.prec().max(hi.prec()))
+    }
+
+    /// A ball containing [lo, hi] with its midpoint at `prec` bits.
+    pub fn from_bounds_at(lo: &Float, hi: &Float, prec: u32) -> Ball {
         let mid = Float::with_val(prec + 2, lo + hi) / 2u32;
         let (mid, _) = Float::with_val_round(prec, &mid, Round::Nearest);
         let above = Float::with_val_round(53, hi - &mid, Round::Up)
@@ -250,6 +329,39 @@ impl Ball {
             digits -= 1;
         }
         (0, String::new())
+    }
+
+    /// The ball as it is printed: a decimal `value` and a decimal `radius` with every point
+    /// of the ball inside [value − radius, value + radius] **as printed** (`None` for a ball
+    /// that is not finite).
+    ///
+    /// `value` carries the [`Ball::proven_digits`] (the digits every point of the ball rounds
+    /// to); when not even the first digit is proven, it is the midpoint to two significant
+    /// digits. Because `value` is rounded, the radius is measured from it, not from the
+    /// unprinted midpoint: it bounds |value − mid| + rad, computed exactly in rationals and
+    /// rounded *up* to two significant digits. It is "0" only when the ball is exact and
+    /// `value` is its midpoint written out in full.
+    pub fn printed(&self) -> Option<PrintedBall> {
+        if !self.mid.is_finite() || !self.rad.is_finite() {
+            return None;
+        }
+        let (digits, proven) = self.proven_digits();
+        let value = if digits == 0 {
+            format_float_digits(&self.mid, 2)
+        } else {
+            proven
+        };
+        let printed = super::parse::parse_rational(&value)
+            .ok()
+            .map(|q| super::mpfr::to_gmp_rational(&q))?;
+        let mid = self.mid.to_rational()?;
+        let rad = rug::Rational::from_f64(self.rad)?;
+        let bound = (printed - mid).abs() + rad;
+        Some(PrintedBall {
+            value,
+            radius: upper_decimal(&bound),
+            digits,
+        })
     }
 
     /// Whether x lies in the ball (for tests of the inclusion principle).
@@ -431,6 +543,38 @@ impl Field for Ball {
     fn to_plain_string(&self) -> String {
         format!("{} ± {:e}", self.mid.to_plain_string(), self.rad)
     }
+    fn decide_lt(&self, other: &Self) -> Option<bool> {
+        self.partial_cmp_quiet(other).map(|o| o == Ordering::Less)
+    }
+    fn hull(lo: &Self, hi: &Self) -> Self {
+        let lower = lo.lower().min(&hi.lower());
+        let upper = lo.upper().max(&hi.upper());
+        Ball::from_bounds_at(&lower, &upper, lo.mid.prec())
+    }
+    fn min_with(&self, other: &Self) -> Self {
+        if self.rad == 0.0 && other.rad == 0.0 {
+            return if other.mid < self.mid {
+                other.clone()
+            } else {
+                self.clone()
+            };
+        }
+        let lower = self.lower().min(&other.lower());
+        let upper = self.upper().min(&other.upper());
+        Ball::from_bounds_at(&lower, &upper, self.mid.prec())
+    }
+    fn max_with(&self, other: &Self) -> Self {
+        if self.rad == 0.0 && other.rad == 0.0 {
+            return if other.mid > self.mid {
+                other.clone()
+            } else {
+                self.clone()
+            };
+        }
+        let lower = self.lower().max(&other.lower());
+        let upper = self.upper().max(&other.upper());
+        Ball::from_bounds_at(&lower, &upper, self.mid.prec())
+    }
 }
 
 impl Real for Ball {
@@ -469,6 +613,11 @@ impl Real for Ball {
         let crosses_cut = x.mid.is_sign_negative() && gy == 0.0;
         if rho <= 0.0 || crosses_cut {
             return Ball::new(Float::with_val(prec, 0), f64::INFINITY);
+        }
+        // On the positive x axis the angle is exactly 0, whatever the ball of x: keep the
+        // exact zero (a straight Dubins leg, an arc of length 0, stays exactly straight).
+        if Field::is_zero(self) && gx > 0.0 {
+            return Ball::exact(Float::with_val(prec, 0));
         }
         let mid = Float::with_val_round(prec, self.mid.atan2_ref(&x.mid), Round::Nearest);
         Ball::rounded(mid, div_up(add_up(x.rad, self.rad), rho))

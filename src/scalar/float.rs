@@ -10,6 +10,9 @@ impl Field for f64 {
     fn scalar_name(_: &()) -> String {
         "f64".into()
     }
+    fn unit_roundoff(_: &()) -> Option<f64> {
+        Some(f64::EPSILON / 2.0)
+    }
     fn from_i64(v: i64, _: &()) -> Self {
         v as f64
     }

@@ -118,6 +118,43 @@ pub trait Field:
     fn mul_sub_assign(&mut self, a: &Self, b: &Self) {
         *self -= &(a.clone() * b);
     }
+    /// The unit roundoff of the number type in `ctx` (2⁻⁵³ for f64, 2⁻ᵖ for MPFR at p
+    /// bits), for methods that check their own conditioning; `None` where no digit is lost
+    /// to rounding unnoticed: exact rationals, and balls, whose radius already says it.
+    fn unit_roundoff(ctx: &Self::Ctx) -> Option<f64> {
+        let _ = ctx;
+        None
+    }
+    /// Whether `self < other`, when that is decided: always for f64, MPFR and rationals;
+    /// for enclosures only when the balls are disjoint (`None` otherwise, without counting an
+    /// undecided comparison — the caller handles it, e.g. a bisection that stops there).
+    fn decide_lt(&self, other: &Self) -> Option<bool> {
+        Some(*self < *other)
+    }
+    /// A value standing for the whole interval [lo, hi] (lo ≤ hi): its midpoint for
+    /// f64, MPFR and rationals, an enclosure of the interval for balls (a bisection's last
+    /// bracket is then a proven enclosure of the root).
+    fn hull(lo: &Self, hi: &Self) -> Self {
+        (lo.clone() + hi) / &Self::from_i64(2, &lo.ctx())
+    }
+    /// The smaller of `self` and `other`. For enclosures ([`ball::Ball`]) an enclosure of
+    /// min(x, y) over every x and y of the two balls: min is continuous, so it needs no
+    /// comparison to be decided (and counts none).
+    fn min_with(&self, other: &Self) -> Self {
+        if *other < *self {
+            other.clone()
+        } else {
+            self.clone()
+        }
+    }
+    /// The larger of `self` and `other` (an enclosure for balls, as [`Field::min_with`]).
+    fn max_with(&self, other: &Self) -> Self {
+        if *other > *self {
+            other.clone()
+        } else {
+            self.clone()
+        }
+    }
     /// All the digits this value carries, uncertified: an exact fraction for rationals,
     /// the shortest round-trip decimal for f64, every significant digit of the precision for
     /// MPFR. Use [`certify`] for digits that two precisions agree on.

@@ -57,6 +57,9 @@ impl Field for Float {
     fn scalar_name(bits: &u32) -> String {
         format!("mpfr:{bits}")
     }
+    fn unit_roundoff(bits: &u32) -> Option<f64> {
+        Some(2f64.powi(-(*bits as i32).min(1074)))
+    }
     fn from_i64(v: i64, bits: &u32) -> Self {
         Float::with_val(*bits, v)
     }

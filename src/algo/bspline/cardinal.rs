@@ -117,30 +117,40 @@ impl<T: Field> CardinalBSpline<T> {
         }
     }
 
-    /// The index of the piece containing t and the local s, with the right-continuous
-    /// convention (t = j belongs to piece j); `None` outside [0, k+1).
-    fn locate(&self, t: &T) -> Option<(usize, T)> {
-        let ctx = t.ctx();
-        if *t < T::zero_in(&ctx) {
-            return None;
-        }
-        let mut j = 0usize;
-        while j <= self.degree {
-            let next = T::from_i64(j as i64 + 1, &ctx);
-            if *t < next {
-                return Some((j, t.clone() - &T::from_i64(j as i64, &ctx)));
-            }
-            j += 1;
-        }
-        None
-    }
-
     /// The d-th derivative of B_k at t (right-continuous at the knots, zero outside the support).
+    ///
+    /// For an enclosure (a ball) that straddles an integer knot, so that the piece cannot be
+    /// decided, every candidate piece is evaluated on the whole ball and the results are
+    /// joined ([`Field::hull`]): each point of the ball takes its value from one of them,
+    /// and a piece's polynomial evaluated on a ball encloses its values there.
     pub fn eval_derivative(&self, t: &T, d: usize) -> T {
-        match self.locate(t) {
-            Some((j, s)) => self.pieces[j].nth_derivative(d).eval(&s),
-            None => T::zero_in(&t.ctx()),
+        let ctx = t.ctx();
+        // Knots n = 0 … k+1 that t is decided to have reached, and the undecided ones.
+        let mut reached = 0usize;
+        let mut undecided = Vec::new();
+        for n in 0..=self.degree + 1 {
+            match t.decide_lt(&T::from_i64(n as i64, &ctx)) {
+                Some(false) => reached = n + 1,
+                Some(true) => {}
+                None => undecided.push(n),
+            }
         }
+        // Piece j (on [j, j + 1]) holds t when t has reached knot j but not j + 1; "piece"
+        // −1 and k + 1 are the zero polynomial outside the support.
+        let value = |j: usize| -> T {
+            match j.checked_sub(1) {
+                Some(piece) if piece <= self.degree => self.pieces[piece]
+                    .nth_derivative(d)
+                    .eval(&(t.clone() - &T::from_i64(piece as i64, &ctx))),
+                _ => T::zero_in(&ctx),
+            }
+        };
+        // `reached` counts knots passed for certain; each undecided knot may be passed too.
+        let mut result = value(reached);
+        for extra in 1..=undecided.len() {
+            result = T::hull(&result, &value(reached + extra));
+        }
+        result
     }
 
     /// B_k(t).

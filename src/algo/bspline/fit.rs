@@ -18,7 +18,7 @@ use crate::numeric::linalg::{inverse, solve, Matrix};
 use crate::scalar::Field;
 
 /// Why a fit cannot be made.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum FitError {
     /// The degree is below 1.
     #[error("degree {0} is below 1: the Gram matrix of k-th derivatives needs k ≥ 1")]
@@ -49,8 +49,18 @@ pub enum FitError {
         index: usize,
     },
     /// The collocation matrix is not of full row rank.
-    #[error("the collocation matrix B is not of full row rank (repeated times, or too many data on too few basis functions)")]
+    #[error("the collocation matrix B is not of full row rank (repeated times, or too many data on too few basis functions: the Schoenberg–Whitney condition fails)")]
     RankDeficient,
+    /// The solution has no correct digit in the number type used.
+    #[error("the fit is too ill-conditioned for {scalar}: its condition estimate κ₁(G)·κ₁(BG⁻¹Bᵀ) ≈ {condition:.1e} times the unit roundoff {unit:.1e} leaves no correct digit; use more bits (mpfr:<bits>) or rational")]
+    IllConditioned {
+        /// The number type.
+        scalar: String,
+        /// The condition estimate.
+        condition: f64,
+        /// The unit roundoff of the number type.
+        unit: f64,
+    },
     #[error("weight #{index} is negative")]
     /// A negative weight.
     NegativeWeight {
@@ -112,10 +122,18 @@ impl<T: Field> SplineSpace<T> {
         {
             return Err(FitError::OutsideSupport { index });
         }
-        Ok(Matrix::from_fn(times.len(), self.controls, |j, i| {
+        Ok(self.collocation_of(times))
+    }
+
+    /// The collocation matrix without the support check (for times the caller checked on
+    /// their exact values: a time within rounding of the support's end gives the basis's
+    /// continuous value there).
+    fn collocation_of(&self, times: &[T]) -> Matrix<T> {
+        let ctx = times[0].ctx();
+        Matrix::from_fn(times.len(), self.controls, |j, i| {
             self.basis
                 .eval(&(times[j].clone() - &T::from_i64(i as i64, &ctx)))
-        }))
+        })
     }
 
     /// The d-th derivative of x(t) = Σ τᵢ B_k(t − i + 1) at t.
@@ -150,24 +168,59 @@ impl<T: Field> SplineSpace<T> {
 
     /// τ* of Eq. 14.
     pub fn interpolate(&self, times: &[T], values: &[T]) -> Result<Vec<T>, FitError> {
-        let b = self.check(times, values)?;
+        self.interpolate_with_condition(times, values)
+            .map(|(tau, _)| tau)
+    }
+
+    /// τ* of Eq. 14 and an estimate of its condition, κ₁(G)·κ₁(BG⁻¹Bᵀ) from the two
+    /// inverses the method forms: a relative perturbation ε of the data or of the arithmetic
+    /// moves τ* by up to about that many times ε, so in a number type with unit roundoff u
+    /// the result has no correct digit once u·κ approaches 1 ([`FitError::IllConditioned`]
+    /// is the caller's to raise: rationals are exact). Whether B has full row rank is
+    /// decided first, exactly ([`schoenberg_whitney`]), not by a pivot that rounding made
+    /// small or non-zero.
+    pub fn interpolate_with_condition(
+        &self,
+        times: &[T],
+        values: &[T],
+    ) -> Result<(Vec<T>, T), FitError> {
+        self.check(times, values)?;
         if times.len() > self.controls {
             return Err(FitError::TooFewControls {
                 controls: self.controls,
                 data: times.len(),
             });
         }
+        schoenberg_whitney(times, self.degree(), self.controls)?;
+        self.interpolate_checked(times, values)
+    }
+
+    /// [`SplineSpace::interpolate_with_condition`] for data whose support and rank the
+    /// caller decided on their exact values ([`schoenberg_whitney`] on the exact times, as
+    /// lengths and M ≥ N): `times` may be those values rounded, so nothing is decided on
+    /// them again.
+    pub fn interpolate_checked(&self, times: &[T], values: &[T]) -> Result<(Vec<T>, T), FitError> {
+        if times.is_empty() || times.len() != values.len() {
+            return Err(FitError::LengthMismatch {
+                times: times.len(),
+                values: values.len(),
+            });
+        }
+        let b = self.collocation_of(times);
         let ctx = times[0].ctx();
-        let g_inv = inverse(&self.gram(&ctx)).map_err(|_| FitError::RankDeficient)?;
+        let gram = self.gram(&ctx);
+        let g_inv = inverse(&gram).map_err(|_| FitError::RankDeficient)?;
         let g_inv_bt = g_inv.mul(&b.transpose());
         let schur = b.mul(&g_inv_bt);
-        let y = solve(&schur, values).map_err(|_| FitError::RankDeficient)?;
-        Ok(g_inv_bt.mul_vec(&y))
+        let schur_inv = inverse(&schur).map_err(|_| FitError::RankDeficient)?;
+        let y = schur_inv.mul_vec(values);
+        let condition = norm1(&gram) * &norm1(&g_inv) * &norm1(&schur) * &norm1(&schur_inv);
+        Ok((g_inv_bt.mul_vec(&y), condition))
     }
 
     /// τ̂* of Eq. 15 for weights wⱼ ≥ 0.
     pub fn smooth(&self, times: &[T], values: &[T], weights: &[T]) -> Result<Vec<T>, FitError> {
-        let b = self.check(times, values)?;
+        self.check(times, values)?;
         if weights.len() != times.len() {
             return Err(FitError::WeightsLength {
                 weights: weights.len(),
@@ -178,6 +231,25 @@ impl<T: Field> SplineSpace<T> {
         if let Some(index) = weights.iter().position(|w| *w < T::zero_in(&ctx)) {
             return Err(FitError::NegativeWeight { index });
         }
+        self.smooth_checked(times, values, weights)
+    }
+
+    /// [`SplineSpace::smooth`] for data the caller checked on their exact values (times in
+    /// the support, weights ≥ 0, lengths): nothing is decided on `times` again.
+    pub fn smooth_checked(
+        &self,
+        times: &[T],
+        values: &[T],
+        weights: &[T],
+    ) -> Result<Vec<T>, FitError> {
+        if times.is_empty() || times.len() != values.len() || weights.len() != times.len() {
+            return Err(FitError::LengthMismatch {
+                times: times.len(),
+                values: values.len(),
+            });
+        }
+        let ctx = times[0].ctx();
+        let b = self.collocation_of(times);
         let wb = Matrix::from_fn(b.rows(), b.cols(), |j, i| weights[j].clone() * &b[(j, i)]);
         let bt = b.transpose();
         let gram = self.gram(&ctx);
@@ -199,6 +271,55 @@ impl<T: Field> SplineSpace<T> {
             .collect();
         solve(&lhs, &rhs).map_err(|_| FitError::RankDeficient)
     }
+}
+
+/// The 1-norm (largest column sum of magnitudes) of a matrix.
+fn norm1<T: Field>(a: &Matrix<T>) -> T {
+    let ctx = a[(0, 0)].ctx();
+    (0..a.cols())
+        .map(|c| (0..a.rows()).fold(T::zero_in(&ctx), |acc, r| acc + &a[(r, c)].abs()))
+        .fold(T::zero_in(&ctx), |m, x| m.max_with(&x))
+}
+
+/// Whether the N×M collocation matrix of the (distinct) data times has full row rank N,
+/// decided exactly by the Schoenberg–Whitney condition: B-spline collocation matrices are
+/// totally positive, so B has rank N exactly when the sorted times t₁ < … < t_N can be
+/// matched to basis functions i₁ < … < i_N with each tⱼ inside the open support
+/// (iⱼ − 1, iⱼ + k) of its own (Schoenberg & Whitney 1953; de Boor, *A Practical Guide to
+/// Splines*, XIII). The greedy match takes the leftmost basis function each time. The
+/// times are compared as exact rationals (every f64 and MPFR value is one), so a time
+/// within rounding of a support's end is placed on its true side.
+pub fn schoenberg_whitney<T: Field>(
+    times: &[T],
+    degree: usize,
+    controls: usize,
+) -> Result<(), FitError> {
+    use crate::scalar::BigRational;
+    let mut sorted: Vec<BigRational> = times
+        .iter()
+        .map(Field::to_rational)
+        .collect::<Option<_>>()
+        .ok_or(FitError::RankDeficient)?;
+    sorted.sort();
+    if sorted.windows(2).any(|w| w[0] == w[1]) {
+        return Err(FitError::RankDeficient);
+    }
+    let k = BigRational::from_integer((degree as i64).into());
+    let mut previous = 0usize;
+    for t in &sorted {
+        // The smallest i > previous with i − 1 < t < i + k, i.e. i > t − k and i < t + 1.
+        let above = (t.clone() - &k).floor().to_integer();
+        let lowest =
+            num_traits::ToPrimitive::to_i64(&above).map_or(i64::MAX, |v| v.saturating_add(1));
+        let i = lowest.max(previous as i64 + 1);
+        let fits =
+            BigRational::from_integer(i.into()) < t.clone() + BigRational::from_integer(1.into());
+        if !fits || i > controls as i64 {
+            return Err(FitError::RankDeficient);
+        }
+        previous = i as usize;
+    }
+    Ok(())
 }
 
 /// The interpolating τ* from the KKT system of Problem 4, independently of Eq. 14.

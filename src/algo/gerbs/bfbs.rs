@@ -16,7 +16,7 @@
 //! Eqs. (12)–(13) print as Φ and Θ and Eqs. (14)–(18) differentiate: [`phi_printed`],
 //! [`theta_printed`] transcribe them for the claims.
 
-use super::{Blend, GerbsError, Knots};
+use super::{Blend, GerbsError, Knots, Located};
 use crate::curve::taylor::Taylor;
 use crate::numeric::poly::binom;
 use crate::scalar::{powi, Field};
@@ -73,18 +73,18 @@ impl Bfbs {
     fn bernstein_sum<T: Field>(
         &self,
         knots: &Knots<T>,
-        j: usize,
-        t: &T,
+        at: &Located<T>,
         order: usize,
         rising: bool,
     ) -> Taylor<T> {
+        let j = at.interval;
         let (p, q) = (self.exponent(j) as usize, self.exponent(j + 1) as usize);
-        let ctx = t.ctx();
-        let h = knots.at(j + 1).clone() - knots.at(j);
-        let u = (Taylor::variable(t.clone(), order) - &Taylor::constant(knots.at(j).clone()))
-            / &Taylor::constant(h);
-        let one = Taylor::constant(T::one_in(&ctx));
-        let v = one - &u;
+        let ctx = at.t.ctx();
+        let h = Taylor::constant(knots.at(j + 1).clone() - knots.at(j));
+        // u = (t − t_j)/h and v = (t_{j+1} − t)/h from the two distances, so that each keeps
+        // its relative accuracy at its own end of the interval (u^r near t_j, v^s near t_{j+1}).
+        let u = Taylor::variable(at.after_start.clone(), order) / &h;
+        let v = -(Taylor::variable(-at.before_end.clone(), order)) / &h;
         let big = p + q + 1;
         let mut f = Taylor::constant(T::zero_in(&ctx)).with_order(order);
         let terms = if rising { p + 1..=big } else { 0..=p };
@@ -98,11 +98,43 @@ impl Bfbs {
 
 impl<T: Field> Blend<T> for Bfbs {
     fn rising(&self, knots: &Knots<T>, j: usize, t: &T, order: usize) -> Taylor<T> {
-        self.bernstein_sum(knots, j, t, order, true)
+        self.bernstein_sum(knots, &Located::from_t(knots, t, j), order, true)
     }
 
     fn falling(&self, knots: &Knots<T>, j: usize, t: &T, order: usize) -> Taylor<T> {
-        self.bernstein_sum(knots, j, t, order, false)
+        self.bernstein_sum(knots, &Located::from_t(knots, t, j), order, false)
+    }
+
+    fn rising_located(&self, knots: &Knots<T>, at: &Located<T>, order: usize) -> Taylor<T> {
+        self.pair_located(knots, at, order).1
+    }
+
+    fn falling_located(&self, knots: &Knots<T>, at: &Located<T>, order: usize) -> Taylor<T> {
+        self.pair_located(knots, at, order).0
+    }
+
+    /// 1 − F_j and F_j, each series accurate relative to itself: the one that is small at
+    /// this end of the interval (F_j near t_j, its terms carry u^(p+1); 1 − F_j near
+    /// t_{j+1}, v^(q+1)) is summed from its own terms, the other is 1 minus it. Summing the
+    /// large one's terms would cancel in every derivative (the derivatives of the two are
+    /// opposite), leaving only accuracy relative to 1 where the derivative is tiny.
+    fn pair_located(
+        &self,
+        knots: &Knots<T>,
+        at: &Located<T>,
+        order: usize,
+    ) -> (Taylor<T>, Taylor<T>) {
+        let one = Taylor::constant(T::one_in(&at.t.ctx())).with_order(order);
+        // Which end is nearer is a rounding choice (both forms are exact): a ball that
+        // cannot tell takes the first.
+        let near_start = at.after_start.decide_lt(&at.before_end).unwrap_or(true);
+        if near_start {
+            let rising = self.bernstein_sum(knots, at, order, true);
+            (one - &rising, rising)
+        } else {
+            let falling = self.bernstein_sum(knots, at, order, false);
+            (falling.clone(), one - &falling)
+        }
     }
 }
 

@@ -196,6 +196,35 @@ pub trait Blend<T: Field> {
         )
     }
 
+    /// F_j at a located parameter (interval j = `at.interval`). Kinds that can use the
+    /// distances to the interval's ends override it (the BFBS is a polynomial in them);
+    /// by default the distances are not used.
+    fn rising_located(&self, knots: &Knots<T>, at: &Located<T>, order: usize) -> Taylor<T> {
+        self.rising(knots, at.interval, &at.t, order)
+    }
+
+    /// 1 − F_j at a located parameter (see [`Blend::rising_located`]).
+    fn falling_located(&self, knots: &Knots<T>, at: &Located<T>, order: usize) -> Taylor<T> {
+        self.falling(knots, at.interval, &at.t, order)
+    }
+
+    /// Both 1 − F_j and F_j at a located parameter.
+    fn pair_located(
+        &self,
+        knots: &Knots<T>,
+        at: &Located<T>,
+        order: usize,
+    ) -> (Taylor<T>, Taylor<T>) {
+        if self.sweeps() {
+            // A quadrature computes F_j once for both.
+            return self.pair(knots, at.interval, &at.t, order);
+        }
+        (
+            self.falling_located(knots, at, order),
+            self.rising_located(knots, at, order),
+        )
+    }
+
     /// F_j′(t).
     fn slope(&self, knots: &Knots<T>, j: usize, t: &T) -> T {
         self.rising(knots, j, t, 1).derivatives()[1].clone()
@@ -229,24 +258,79 @@ pub fn basis_series<T: Field, B: Blend<T> + ?Sized>(
     order: usize,
     side: Side,
 ) -> Option<Vec<Taylor<T>>> {
-    let n = knots.basis_count();
     let j = knots.interval(t, side)?;
-    let ctx = t.ctx();
+    Some(basis_series_on(knots, blend, t, j, order))
+}
+
+/// A parameter t in knot interval j (1-based, t_j ≤ t ≤ t_{j+1}) with its distances to the
+/// interval's ends. A caller with t exact chooses j on the exact value ([`Knots::interval`])
+/// and forms the distances exactly, rounding each once: rounding t onto a knot then switches
+/// no branch, and a basis function that vanishes at the knot like (t − t_j)^i keeps its
+/// relative accuracy (t − t_j formed from a rounded t would be 0).
+#[derive(Clone, Debug)]
+pub struct Located<T> {
+    /// t itself.
+    pub t: T,
+    /// The knot interval j.
+    pub interval: usize,
+    /// t − t_j.
+    pub after_start: T,
+    /// t_{j+1} − t.
+    pub before_end: T,
+}
+
+impl<T: Field> Located<T> {
+    /// t in interval j, the distances formed from t.
+    pub fn from_t(knots: &Knots<T>, t: &T, j: usize) -> Self {
+        Located {
+            t: t.clone(),
+            interval: j,
+            after_start: t.clone() - knots.at(j),
+            before_end: knots.at(j + 1).clone() - t,
+        }
+    }
+}
+
+/// The series of B_2 … B_{n+1} at t to `order` on the knot interval j (1-based: t_j ≤ t ≤
+/// t_{j+1}, non-empty), which the caller chose — for a parameter given exactly, by
+/// [`Knots::interval`] on the exact value, so that rounding t onto a knot cannot switch
+/// the one-sided branch (the rounded t stays in the closed interval, where the pieces on
+/// interval j are their own smooth continuation).
+pub fn basis_series_on<T: Field, B: Blend<T> + ?Sized>(
+    knots: &Knots<T>,
+    blend: &B,
+    t: &T,
+    j: usize,
+    order: usize,
+) -> Vec<Taylor<T>> {
+    basis_series_located(knots, blend, &Located::from_t(knots, t, j), order)
+}
+
+/// The series of B_2 … B_{n+1} at a located parameter (see [`Located`]).
+pub fn basis_series_located<T: Field, B: Blend<T> + ?Sized>(
+    knots: &Knots<T>,
+    blend: &B,
+    at: &Located<T>,
+    order: usize,
+) -> Vec<Taylor<T>> {
+    let n = knots.basis_count();
+    let j = at.interval;
+    let ctx = at.t.ctx();
     let zero = Taylor::constant(T::zero_in(&ctx)).with_order(order);
     let mut out = vec![zero; n];
     // On (t_j, t_{j+1}): B_j = 1 − F_j falls, B_{j+1} = F_j rises (B_k is index k − 2).
     // Each is computed on its own, so Σ B_k = 1 is a property, not a construction.
     match ((2..=n + 1).contains(&j), (2..=n + 1).contains(&(j + 1))) {
         (true, true) => {
-            let (falling, rising) = blend.pair(knots, j, t, order);
+            let (falling, rising) = blend.pair_located(knots, at, order);
             out[j - 2] = falling;
             out[j - 1] = rising;
         }
-        (true, false) => out[j - 2] = blend.falling(knots, j, t, order),
-        (false, true) => out[j - 1] = blend.rising(knots, j, t, order),
+        (true, false) => out[j - 2] = blend.falling_located(knots, at, order),
+        (false, true) => out[j - 1] = blend.rising_located(knots, at, order),
         (false, false) => {}
     }
-    Some(out)
+    out
 }
 
 /// The derivatives B_k, B_k′, …, B_k^(order) of every basis function at t (k = 2 … n+1).
@@ -258,6 +342,19 @@ pub fn basis_derivatives<T: Field, B: Blend<T> + ?Sized>(
     side: Side,
 ) -> Option<Vec<Vec<T>>> {
     basis_series(knots, blend, t, order, side).map(|s| s.iter().map(|b| b.derivatives()).collect())
+}
+
+/// As [`basis_derivatives`], at a parameter located by the caller ([`Located`]).
+pub fn basis_derivatives_located<T: Field, B: Blend<T> + ?Sized>(
+    knots: &Knots<T>,
+    blend: &B,
+    at: &Located<T>,
+    order: usize,
+) -> Vec<Vec<T>> {
+    basis_series_located(knots, blend, at, order)
+        .iter()
+        .map(|b| b.derivatives())
+        .collect()
 }
 
 #[cfg(test)]

@@ -17,8 +17,9 @@
 // `!(x > 0)` is meant: a NaN parameter must fail the range checks too.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 use super::quadrature::TanhSinh;
-use super::{basis_series, Blend, GerbsError, Knots, Side};
+use super::{basis_series_on, Blend, GerbsError, Knots, Side};
 use crate::curve::taylor::Taylor;
+use crate::scalar::ball::carried;
 use crate::scalar::{Field, Real};
 use rayon::prelude::*;
 use std::cell::RefCell;
@@ -97,25 +98,73 @@ pub fn check_waypoints<T: Field>(w: &[[T; 2]]) -> Result<(), GerbsError> {
     Ok(())
 }
 
-/// Algorithm 1.
-pub fn tangents<T: Real>(w: &[[T; 2]]) -> Result<Tangents<T>, GerbsError> {
+/// The turn signs s_i of Algorithm 1 (+1 left, −1 right; s_1 = −s_2, s_n = −s_{n−1}),
+/// decided exactly: the wedge of each interior triple is formed in rationals from the
+/// values as given (every f64 and MPFR number is a rational), so no rounding of the wedge
+/// can flip a sign. For waypoints that were themselves rounded from exact input, decide on
+/// the exact input and pass the signs in [`PathSpec::turns`].
+pub fn turn_signs<T: Field>(w: &[[T; 2]]) -> Result<Vec<i32>, GerbsError> {
+    check_waypoints(w)?;
+    let exact: Vec<[crate::scalar::BigRational; 2]> = w
+        .iter()
+        .map(|p| {
+            let q = |x: &T| {
+                x.to_rational()
+                    .ok_or_else(|| GerbsError::Waypoints("every waypoint must be finite".into()))
+            };
+            Ok([q(&p[0])?, q(&p[1])?])
+        })
+        .collect::<Result<_, GerbsError>>()?;
+    exact_turn_signs(&exact)
+}
+
+/// [`turn_signs`] on rational waypoints.
+pub fn exact_turn_signs(w: &[[crate::scalar::BigRational; 2]]) -> Result<Vec<i32>, GerbsError> {
     check_waypoints(w)?;
     let n = w.len();
-    let mut m = vec![direction(&w[0], &w[1])];
     let mut s = vec![0];
+    for i in 1..n - 1 {
+        let wedge = turn_wedge(w, i);
+        s.push(
+            if wedge > crate::scalar::BigRational::from_integer(0.into()) {
+                1
+            } else {
+                -1
+            },
+        );
+    }
+    s.push(-s[n - 2]);
+    s[0] = -s[1];
+    Ok(s)
+}
+
+/// Algorithm 1, with the turn signs decided exactly on the waypoints as given
+/// ([`turn_signs`]).
+pub fn tangents<T: Real>(w: &[[T; 2]]) -> Result<Tangents<T>, GerbsError> {
+    let s = turn_signs(w)?;
+    tangents_with_turns(w, s)
+}
+
+/// Algorithm 1 with turn signs `s` decided by the caller (one per waypoint, as
+/// [`exact_turn_signs`] returns them).
+pub fn tangents_with_turns<T: Real>(w: &[[T; 2]], s: Vec<i32>) -> Result<Tangents<T>, GerbsError> {
+    check_waypoints(w)?;
+    let n = w.len();
+    if s.len() != n {
+        return Err(GerbsError::Parameter {
+            field: "turns",
+            message: format!(
+                "expected one turn sign per waypoint ({n}), found {}",
+                s.len()
+            ),
+        });
+    }
+    let mut m = vec![direction(&w[0], &w[1])];
     for i in 1..n - 1 {
         let (a, b) = (direction(&w[i - 1], &w[i]), direction(&w[i], &w[i + 1]));
         m.push(unit([a[0].clone() + &b[0], a[1].clone() + &b[1]]));
-        let wedge = turn_wedge(w, i);
-        s.push(if wedge > T::zero_in(&wedge.ctx()) {
-            1
-        } else {
-            -1
-        });
     }
     m.push(direction(&w[n - 2], &w[n - 1]));
-    s.push(-s[n - 2]);
-    s[0] = -s[1];
     Ok(Tangents { m, s })
 }
 
@@ -197,6 +246,9 @@ pub struct PathSpec<T> {
     pub line_length: Option<T>,
     /// How the arc angles θ₁, θ₂ are chosen (the paper's printed formula or the turn direction).
     pub convention: ArcConvention,
+    /// The turn signs of Algorithm 1, decided by the caller on exact waypoints
+    /// ([`exact_turn_signs`]); `None`: decided exactly on `waypoints` as given.
+    pub turns: Option<Vec<i32>>,
 }
 
 /// The local curves c_1 … c_n of Algorithm 2 (lines at the ends, arcs inside), with the
@@ -207,7 +259,10 @@ pub fn local_curves<T: Real>(
 ) -> Result<(Vec<LocalCurve<T>>, Tangents<T>), GerbsError> {
     let tan = match given {
         Some(t) => t.clone(),
-        None => tangents(&spec.waypoints)?,
+        None => match &spec.turns {
+            Some(s) => tangents_with_turns(&spec.waypoints, s.clone())?,
+            None => tangents(&spec.waypoints)?,
+        },
     };
     let ctx = spec.radius.ctx();
     let zero = T::zero_in(&ctx);
@@ -303,6 +358,9 @@ pub struct GerbsPath<T, B> {
     pub curves: Vec<LocalCurve<T>>,
     /// The tangents and turn signs of Algorithm 1.
     pub tangents: Tangents<T>,
+    /// Whether `knots` are the uniform knots of Algorithm 2 (built by [`GerbsPath::new`]),
+    /// on which [`GerbsPath::sample`] locates its samples exactly.
+    uniform_knots: bool,
 }
 
 impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
@@ -315,6 +373,7 @@ impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
             blend,
             curves,
             tangents,
+            uniform_knots: true,
         })
     }
 
@@ -330,17 +389,28 @@ impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
             blend,
             curves,
             tangents,
+            uniform_knots: false,
         }
     }
 
-    /// p as series in t to `order` at t ∈ [0, 1], one-sided at knots.
+    /// p as series in t to `order` at t ∈ [0, 1], one-sided at knots (the side decided on t
+    /// as given; for a t rounded from an exact value use [`GerbsPath::series_on`]).
     pub fn series(&self, t: &T, order: usize, side: Side) -> [Taylor<T>; 2] {
+        match self.knots.interval(t, side) {
+            Some(j) => self.series_on(t, j, order),
+            None => {
+                let zero = Taylor::constant(T::zero_in(&t.ctx())).with_order(order);
+                [zero.clone(), zero]
+            }
+        }
+    }
+
+    /// p as series in t to `order` on knot interval j (1-based), chosen by the caller.
+    pub fn series_on(&self, t: &T, j: usize, order: usize) -> [Taylor<T>; 2] {
         let ctx = t.ctx();
         let zero = Taylor::constant(T::zero_in(&ctx)).with_order(order);
         let mut p = [zero.clone(), zero];
-        let Some(basis) = basis_series(&self.knots, &self.blend, t, order, side) else {
-            return p;
-        };
+        let basis = basis_series_on(&self.knots, &self.blend, t, j, order);
         let var = Taylor::variable(t.clone(), order);
         for (i, b) in basis.iter().enumerate() {
             if b.c.iter().all(Field::is_zero) {
@@ -361,9 +431,38 @@ impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
         self.curves[k - 2].series(&u)
     }
 
-    /// Point, derivatives and curvature at t.
+    /// Point, derivatives and curvature at t (one-sided at a knot, decided on t as given).
     pub fn at(&self, t: &T, side: Side) -> PathPoint<T> {
-        let [x, y] = self.series(t, 3, side);
+        match self.knots.interval(t, side) {
+            Some(j) => self.at_on(t, j),
+            None => self.point_from(t, self.series(t, 3, side)),
+        }
+    }
+
+    /// Point, derivatives and curvature at knot t_k (1-based), from the side `side`: the
+    /// knot interval is decided on the index, not on a comparison of values.
+    pub fn at_knot(&self, k: usize, side: Side) -> PathPoint<T> {
+        let t = self.knots.at(k).clone();
+        let last = self.knots.as_slice().len();
+        // The non-empty interval that ends (from the left) or starts (from the right) at t_k.
+        let nonempty = |j: usize| self.knots.at(j) < self.knots.at(j + 1);
+        let j = match side {
+            Side::Right => (k..last).find(|&j| nonempty(j)),
+            Side::Left => (1..k).rev().find(|&j| nonempty(j)),
+        };
+        let j = j.or_else(|| self.knots.interval(&t, side));
+        match j {
+            Some(j) => self.at_on(&t, j),
+            None => self.point_from(&t, self.series(&t, 3, side)),
+        }
+    }
+
+    /// Point, derivatives and curvature at t on knot interval j (1-based).
+    pub fn at_on(&self, t: &T, j: usize) -> PathPoint<T> {
+        self.point_from(t, self.series_on(t, j, 3))
+    }
+
+    fn point_from(&self, t: &T, [x, y]: [Taylor<T>; 2]) -> PathPoint<T> {
         let (dx, dy) = (x.derivative_series(), y.derivative_series());
         let (ddx, ddy) = (dx.derivative_series(), dy.derivative_series());
         let speed2 = dx.clone() * &dx + &(dy.clone() * &dy);
@@ -380,14 +479,30 @@ impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
         }
     }
 
-    /// `count` ≥ 2 evenly spaced points of [0, 1] (from the right, the last from the left).
+    /// `count` ≥ 2 evenly spaced points t = i/(count − 1) of [0, 1] (from the right, the last
+    /// from the left). On the uniform knots of Algorithm 2 (t_k = (k − 2)/(n − 1)) the knot
+    /// interval of each sample is decided exactly in integers, j = ⌊i(n − 1)/(count − 1)⌋ + 2,
+    /// so rounding i/(count − 1) onto a knot cannot switch sides; other knot vectors locate
+    /// the rounded value.
     pub fn sample(&self, count: usize) -> Vec<PathPoint<T>> {
         let ctx = self.knots.at(1).ctx();
         let last = count.max(2) - 1;
+        let n = self.curves.len();
+        let uniform = self.uniform_knots;
         (0..=last)
             .map(|i| {
                 let t = T::from_ratio(i as i64, last as i64, &ctx);
-                self.at(&t, if i == last { Side::Left } else { Side::Right })
+                if uniform && n >= 2 {
+                    let j = if i == last {
+                        n
+                    } else {
+                        // i(n−1) fits: i ≤ MAX samples and n ≤ 10⁵ in every caller.
+                        (i as u128 * (n as u128 - 1) / last as u128) as usize + 2
+                    };
+                    self.at_on(&t, j)
+                } else {
+                    self.at(&t, if i == last { Side::Left } else { Side::Right })
+                }
             })
             .collect()
     }
@@ -407,7 +522,7 @@ impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
         let knots = self.knots.as_slice();
         let pieces: Vec<T> = (1..knots.len())
             .into_par_iter()
-            .map(|j| self.interval_length(j, &rule, tol))
+            .map(carried(|j| self.interval_length(j, &rule, tol)))
             .collect();
         let mut total = T::zero_in(&ctx);
         for piece in &pieces {

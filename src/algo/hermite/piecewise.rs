@@ -15,6 +15,7 @@
 use super::{solve_points, HermiteError};
 use crate::curve::approx::{knot, PiecewiseBernstein};
 use crate::curve::Curve;
+use crate::scalar::ball::carried;
 use crate::scalar::Real;
 use rayon::prelude::*;
 
@@ -31,7 +32,7 @@ pub fn interpolate_curve<T: Real, C: Curve<T> + ?Sized>(
     // h^j γ^(j)(t_k) as rows of points, for every joint.
     let jets: Vec<Vec<Vec<T>>> = (0..=segments)
         .into_par_iter()
-        .map(|k| {
+        .map(carried(|k| {
             let mut scale = T::one_in(&ctx);
             let jet = curve.jet(&knot(a, b, segments, k), m);
             jet.into_iter()
@@ -43,18 +44,18 @@ pub fn interpolate_curve<T: Real, C: Curve<T> + ?Sized>(
                     v.iter().map(|x| x.clone() * &scale).collect()
                 })
                 .collect()
-        })
+        }))
         .collect();
     let (zero, one) = (T::zero_in(&ctx), T::one_in(&ctx));
     let pieces = (0..segments)
         .into_par_iter()
-        .map(|k| {
+        .map(carried(|k: usize| {
             let points = solve_points(&jets[k], &jets[k + 1], &zero, &one)?;
             Ok(points
                 .into_iter()
                 .map(|p| [p[0].clone(), p[1].clone(), p[2].clone()])
                 .collect())
-        })
+        }))
         .collect::<Result<Vec<_>, HermiteError>>()?;
     Ok(PiecewiseBernstein {
         a: a.clone(),

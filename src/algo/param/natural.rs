@@ -57,6 +57,22 @@ impl<T: Field> NaturalCubicSpline<T> {
         if let Some(i) = (1..knots.len()).find(|&i| knots[i] <= knots[i - 1]) {
             return Err(SplineError::NotIncreasing { index: i });
         }
+        Self::with_increasing_knots(knots, values)
+    }
+
+    /// As [`NaturalCubicSpline::new`] for knots the caller knows to increase (decided on
+    /// exact values they were rounded from): the order is not compared again, so a ball
+    /// whose knots overlap after rounding still gets its enclosure.
+    pub fn with_increasing_knots(knots: Vec<T>, values: Vec<T>) -> Result<Self, SplineError> {
+        if knots.len() < 2 {
+            return Err(SplineError::TooFewKnots);
+        }
+        if knots.len() != values.len() {
+            return Err(SplineError::LengthMismatch {
+                knots: knots.len(),
+                values: values.len(),
+            });
+        }
         let second = second_derivatives(&knots, &values);
         Ok(NaturalCubicSpline {
             knots,
@@ -85,8 +101,26 @@ impl<T: Field> NaturalCubicSpline<T> {
 
     /// (θ, θ′, θ″)(t); outside [t₀, t_N] the end cubic pieces are extended.
     pub fn eval_all(&self, t: &T) -> [T; 3] {
-        let i = self.interval(t);
-        let ctx = t.ctx();
+        self.eval_on(t, self.interval(t))
+    }
+
+    /// (θ, θ′, θ″)(t) on the piece [tᵢ₋₁, tᵢ] (1 ≤ i ≤ N) the caller chose — for a t given
+    /// exactly, located on its exact value (the spline is C², so a t within rounding of a
+    /// knot gets the same value from either piece, but a ball at a knot could not decide
+    /// which). An out-of-range i is clamped to the first or last piece.
+    pub fn eval_on(&self, t: &T, i: usize) -> [T; 3] {
+        let i = i.clamp(1, self.knots.len() - 1);
+        let (a, b) = (&self.knots[i - 1], &self.knots[i]);
+        self.eval_offsets(&(b.clone() - t), &(t.clone() - a), i)
+    }
+
+    /// (θ, θ′, θ″) on the piece [tᵢ₋₁, tᵢ] at the point whose distances to its ends are
+    /// u = tᵢ − t and v = t − tᵢ₋₁. A caller with t exact computes u and v exactly and rounds
+    /// them once: near a knot they keep their relative accuracy, which t − tᵢ₋₁ formed from a
+    /// rounded t would not (θ″ there is proportional to the distance).
+    pub fn eval_offsets(&self, u: &T, v: &T, i: usize) -> [T; 3] {
+        let i = i.clamp(1, self.knots.len() - 1);
+        let ctx = u.ctx();
         let (a, b) = (&self.knots[i - 1], &self.knots[i]);
         let h = b.clone() - a;
         let (za, zb, ma, mb) = (
@@ -97,19 +131,17 @@ impl<T: Field> NaturalCubicSpline<T> {
         );
         let six = T::from_i64(6, &ctx);
         let two = T::from_i64(2, &ctx);
-        let (u, v) = (b.clone() - t, t.clone() - a); // distances to the ends
-                                                     // θ = ma·u³/(6h) + mb·v³/(6h) + (za/h − ma·h/6)·u + (zb/h − mb·h/6)·v
+        // θ = ma·u³/(6h) + mb·v³/(6h) + (za/h − ma·h/6)·u + (zb/h − mb·h/6)·v
         let ca = za.clone() / &h - &(ma.clone() * &h / &six);
         let cb = zb.clone() / &h - &(mb.clone() * &h / &six);
-        let value = ma.clone() * &u * &u * &u / &(six.clone() * &h)
-            + &(mb.clone() * &v * &v * &v / &(six * &h))
-            + &(ca.clone() * &u)
-            + &(cb.clone() * &v);
-        let slope = -(ma.clone() * &u * &u) / &(two.clone() * &h)
-            + &(mb.clone() * &v * &v / &(two * &h))
-            - &ca
-            + &cb;
-        let curvature = (ma.clone() * &u + &(mb.clone() * &v)) / &h;
+        let value = ma.clone() * u * u * u / &(six.clone() * &h)
+            + &(mb.clone() * v * v * v / &(six * &h))
+            + &(ca.clone() * u)
+            + &(cb.clone() * v);
+        let slope =
+            -(ma.clone() * u * u) / &(two.clone() * &h) + &(mb.clone() * v * v / &(two * &h)) - &ca
+                + &cb;
+        let curvature = (ma.clone() * u + &(mb.clone() * v)) / &h;
         [value, slope, curvature]
     }
 

@@ -12,7 +12,7 @@
 //! Case I is exact in rationals; cases II and III need square roots ([`Real`]).
 
 use super::natural::NaturalCubicSpline;
-use crate::scalar::{Field, Real};
+use crate::scalar::{BigRational, Field, Real};
 
 /// The three cases of Sec. 2.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -61,60 +61,135 @@ fn deltas<T: Field>(z: &[T]) -> Result<Vec<T>, ParamError> {
     }
 }
 
+/// The discrete shape of the ordinates, which selects the case and the points of Eq. 13:
+/// the sign of every difference Δᵢ, decided exactly.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Shape {
+    /// Whether each Δᵢ = zᵢ − zᵢ₋₁ is positive (i = 1 … N).
+    pub rising: Vec<bool>,
+}
+
+impl Shape {
+    /// The shape of rational ordinates (an error for fewer than two points or a repeat).
+    pub fn of_exact(z: &[BigRational]) -> Result<Shape, ParamError> {
+        let zero = BigRational::from_integer(0.into());
+        Ok(Shape {
+            rising: deltas(z)?.iter().map(|d| *d > zero).collect(),
+        })
+    }
+
+    /// The shape of the ordinates as given, decided exactly in rationals (every f64 and
+    /// MPFR number is one), so no rounding of a difference can flip a sign. For ordinates
+    /// that were themselves rounded from exact input, decide on that input
+    /// ([`Shape::of_exact`]) and use [`parametrization_with_shape`].
+    pub fn of<T: Field>(z: &[T]) -> Result<Shape, ParamError> {
+        let exact: Option<Vec<BigRational>> = z.iter().map(Field::to_rational).collect();
+        match exact {
+            Some(q) => Shape::of_exact(&q),
+            // Not finite: the sign of a difference is the value's own.
+            None => Ok(Shape {
+                rising: deltas(z)?.iter().map(positive).collect(),
+            }),
+        }
+    }
+
+    /// Which case the shape is.
+    pub fn case(&self) -> Case {
+        let same: Vec<bool> = self.rising.windows(2).map(|w| w[0] == w[1]).collect();
+        if same.iter().all(|&s| s) {
+            Case::I
+        } else if same.iter().all(|&s| !s) {
+            Case::II
+        } else {
+            Case::III
+        }
+    }
+
+    /// Indices of the endpoints and interior relative extremes, 0 = i₀ < … < i_M = N
+    /// (Eq. 13).
+    pub fn extremes(&self) -> Vec<usize> {
+        let mut idx = vec![0];
+        idx.extend((1..self.rising.len()).filter(|&i| self.rising[i - 1] != self.rising[i]));
+        idx.push(self.rising.len());
+        idx
+    }
+}
+
 fn positive<T: Field>(x: &T) -> bool {
     *x > T::zero_in(&x.ctx())
 }
 
-/// Which case the ordinates fall in.
+/// Which case the ordinates fall in (decided exactly, [`Shape::of`]).
 pub fn classify<T: Field>(z: &[T]) -> Result<Case, ParamError> {
-    let d = deltas(z)?;
-    let same: Vec<bool> = d
-        .windows(2)
-        .map(|w| positive(&w[0]) == positive(&w[1]))
-        .collect();
-    Ok(if same.iter().all(|&s| s) {
-        Case::I
-    } else if same.iter().all(|&s| !s) {
-        Case::II
-    } else {
-        Case::III
-    })
+    Ok(Shape::of(z)?.case())
 }
 
-/// Indices of the endpoints and interior relative extremes, 0 = i₀ < … < i_M = N (Eq. 13).
+/// Indices of the endpoints and interior relative extremes, 0 = i₀ < … < i_M = N (Eq. 13),
+/// decided exactly ([`Shape::of`]).
 pub fn extreme_indices<T: Field>(z: &[T]) -> Result<Vec<usize>, ParamError> {
-    let d = deltas(z)?;
-    let mut idx = vec![0];
-    idx.extend((1..d.len()).filter(|&i| positive(&d[i - 1]) != positive(&d[i])));
-    idx.push(z.len() - 1);
-    Ok(idx)
+    Ok(Shape::of(z)?.extremes())
+}
+
+/// |Δᵢ| with the sign of Δᵢ known: no comparison of the (possibly rounded) difference.
+fn magnitudes<T: Field>(z: &[T], rising: &[bool]) -> Vec<T> {
+    z.windows(2)
+        .zip(rising)
+        .map(|(w, &up)| {
+            if up {
+                w[1].clone() - &w[0]
+            } else {
+                w[0].clone() - &w[1]
+            }
+        })
+        .collect()
 }
 
 /// Case I (Eq. 7), exact in any field: tᵢ = Σ_{j≤i} |Δⱼ| / Σ |Δⱼ|.
 pub fn chord_length_1d<T: Field>(z: &[T]) -> Result<Vec<T>, ParamError> {
-    let d = deltas(z)?;
-    let ctx = z[0].ctx();
-    let total = d.iter().fold(T::zero_in(&ctx), |acc, x| acc + &x.abs());
-    let mut t = vec![T::zero_in(&ctx)];
-    let mut run = T::zero_in(&ctx);
-    for x in &d {
-        run += &x.abs();
-        t.push(run.clone() / &total);
+    let shape = Shape::of(z)?;
+    Ok(chord_length_with(z, &shape.rising))
+}
+
+fn chord_length_with<T: Field>(z: &[T], rising: &[bool]) -> Vec<T> {
+    chord_length_from(&magnitudes(z, rising), &z[0].ctx())
+}
+
+/// Eq. 7 from the magnitudes |Δᵢ|.
+fn chord_length_from<T: Field>(d: &[T], ctx: &T::Ctx) -> Vec<T> {
+    let total = d.iter().fold(T::zero_in(ctx), |acc, x| acc + x);
+    let mut t = vec![T::zero_in(ctx)];
+    let mut run = T::zero_in(ctx);
+    for (i, x) in d.iter().enumerate() {
+        run += x;
+        // The last knot is exactly 1.
+        t.push(if i + 1 == d.len() {
+            T::one_in(ctx)
+        } else {
+            run.clone() / &total
+        });
     }
-    Ok(t)
+    t
 }
 
 /// Case II (Eq. 9) for alternating ordinates.
 pub fn alternating<T: Real>(z: &[T]) -> Result<Vec<T>, ParamError> {
-    let d = deltas(z)?;
-    let ctx = z[0].ctx();
+    let shape = Shape::of(z)?;
+    Ok(alternating_with(z, &shape.rising))
+}
+
+fn alternating_with<T: Real>(z: &[T], rising: &[bool]) -> Vec<T> {
+    alternating_from(&magnitudes(z, rising), &z[0].ctx())
+}
+
+/// Eq. 9 from the magnitudes |Δᵢ|.
+fn alternating_from<T: Real>(d: &[T], ctx: &T::Ctx) -> Vec<T> {
     let n = d.len();
-    let root2 = T::from_i64(2, &ctx).sqrt();
+    let root2 = T::from_i64(2, ctx).sqrt();
     let w: Vec<T> = d
         .iter()
         .enumerate()
         .map(|(i, x)| {
-            let r = x.abs().sqrt();
+            let r = x.sqrt();
             if i == 0 || i == n - 1 {
                 r
             } else {
@@ -122,33 +197,75 @@ pub fn alternating<T: Real>(z: &[T]) -> Result<Vec<T>, ParamError> {
             }
         })
         .collect();
-    let total = w.iter().fold(T::zero_in(&ctx), |acc, x| acc + x);
-    let mut t = vec![T::zero_in(&ctx)];
-    let mut run = T::zero_in(&ctx);
+    let total = w.iter().fold(T::zero_in(ctx), |acc, x| acc + x);
+    let mut t = vec![T::zero_in(ctx)];
+    let mut run = T::zero_in(ctx);
     for (i, x) in w.iter().enumerate() {
         run += x;
         // The last knot is exactly 1 (the running sum may differ from it by rounding).
         t.push(if i == n - 1 {
-            T::one_in(&ctx)
+            T::one_in(ctx)
         } else {
             run.clone() / &total
         });
     }
-    Ok(t)
+    t
 }
 
-/// The minimizing parametrization of scalar ordinates and its case.
+/// The minimizing parametrization of scalar ordinates and its case, the shape decided
+/// exactly on the ordinates as given ([`Shape::of`]).
 pub fn minimizing_parametrization<T: Real>(z: &[T]) -> Result<(Vec<T>, Case), ParamError> {
-    let case = classify(z)?;
+    let shape = Shape::of(z)?;
+    parametrization_with_shape(z, &shape)
+}
+
+/// The minimizing parametrization with the shape (case, extremes) decided by the caller on
+/// the exact ordinates: every discrete choice comes from `shape`, none from comparing the
+/// values of `z`, so ordinates rounded from exact input take the exact input's case.
+pub fn parametrization_with_shape<T: Real>(
+    z: &[T],
+    shape: &Shape,
+) -> Result<(Vec<T>, Case), ParamError> {
+    if z.len() < 2 || shape.rising.len() + 1 != z.len() {
+        return Err(ParamError::TooFewPoints);
+    }
+    parametrization_exact(z, &magnitudes(z, &shape.rising), shape)
+}
+
+/// [`parametrization_with_shape`] with the magnitudes |Δᵢ| given by the caller as well:
+/// formed exactly from exact ordinates and rounded once, a difference of 1e-40 between
+/// values near 1 keeps its relative accuracy (the difference of the rounded ordinates
+/// would be 0).
+pub fn parametrization_exact<T: Real>(
+    z: &[T],
+    magnitudes: &[T],
+    shape: &Shape,
+) -> Result<(Vec<T>, Case), ParamError> {
+    if z.len() < 2 || shape.rising.len() + 1 != z.len() || magnitudes.len() + 1 != z.len() {
+        return Err(ParamError::TooFewPoints);
+    }
+    let case = shape.case();
     let t = match case {
-        Case::I => chord_length_1d(z)?,
-        Case::II => alternating(z)?,
+        Case::I => chord_length_from(magnitudes, &z[0].ctx()),
+        Case::II => alternating_from(magnitudes, &z[0].ctx()),
         Case::III => {
-            let idx = extreme_indices(z)?;
+            let idx = shape.extremes();
             let edited: Vec<T> = idx.iter().map(|&i| z[i].clone()).collect();
-            let t_hat = alternating(&edited)?;
-            // The edited data alternate, so ψ is monotone between consecutive extremes (Eq. 8).
-            let psi = NaturalCubicSpline::new(t_hat.clone(), edited)
+            // The edited data alternate; each step's magnitude is the sum of the
+            // magnitudes it spans (all of one sign between two extremes).
+            let edited_magnitudes: Vec<T> = idx
+                .windows(2)
+                .map(|w| {
+                    magnitudes[w[0]..w[1]]
+                        .iter()
+                        .fold(T::zero_in(&z[0].ctx()), |acc, m| acc + m)
+                })
+                .collect();
+            let edited_rising: Vec<bool> = idx.windows(2).map(|w| shape.rising[w[0]]).collect();
+            let t_hat = alternating_from(&edited_magnitudes, &z[0].ctx());
+            // ψ is monotone between consecutive extremes (Eq. 8), rising where the data do;
+            // its knots t̂ increase because every magnitude is positive (decided exactly).
+            let psi = NaturalCubicSpline::with_increasing_knots(t_hat.clone(), edited)
                 .map_err(|_| ParamError::TooFewPoints)?;
             let ctx = z[0].ctx();
             let mut t = vec![T::zero_in(&ctx); z.len()];
@@ -157,7 +274,7 @@ pub fn minimizing_parametrization<T: Real>(z: &[T]) -> Result<(Vec<T>, Case), Pa
             }
             for k in 1..idx.len() {
                 for j in idx[k - 1] + 1..idx[k] {
-                    t[j] = solve_monotone(&psi, &t_hat[k - 1], &t_hat[k], &z[j]);
+                    t[j] = solve_monotone(&psi, k, &z[j], edited_rising[k - 1]);
                 }
             }
             t
@@ -166,27 +283,39 @@ pub fn minimizing_parametrization<T: Real>(z: &[T]) -> Result<(Vec<T>, Case), Pa
     Ok((t, case))
 }
 
-/// The t in [a, b] with ψ(t) = target, ψ strictly monotone on [a, b] and the target strictly
-/// between ψ(a) and ψ(b); bisection until the bracket is as small as the precision allows.
-fn solve_monotone<T: Real>(psi: &NaturalCubicSpline<T>, a: &T, b: &T, target: &T) -> T {
+/// The t in ψ's piece [a, b] = [t̂_{piece−1}, t̂_piece] with ψ(t) = target, ψ strictly
+/// monotone on [a, b] (rising when
+/// `increasing`) and the target strictly between ψ(a) and ψ(b); bisection until the bracket
+/// is as small as the precision allows. In ball arithmetic the bisection stops where ψ(mid)
+/// and the target can no longer be told apart, and the last bracket — proven to hold the
+/// root — is returned as one ball ([`Field::hull`]).
+fn solve_monotone<T: Real>(
+    psi: &NaturalCubicSpline<T>,
+    piece: usize,
+    target: &T,
+    increasing: bool,
+) -> T {
+    let (a, b) = (&psi.knots()[piece - 1], &psi.knots()[piece]);
     let ctx = a.ctx();
     let two = T::from_i64(2, &ctx);
-    let increasing = psi.eval_all(b)[0] > psi.eval_all(a)[0];
     let (mut lo, mut hi) = (a.clone(), b.clone());
     let limit = T::epsilon(&ctx) * &(b.clone() - a);
     for _ in 0..(4 * T::precision_bits(&ctx) + 64) {
-        if hi.clone() - &lo <= limit {
+        if (hi.clone() - &lo).decide_lt(&limit) != Some(false) {
             break;
         }
         let mid = (lo.clone() + &hi) / &two;
-        let below = psi.eval_all(&mid)[0] < *target;
+        // ψ on its piece [a, b], named, not located by comparing a rounded mid.
+        let Some(below) = psi.eval_on(&mid, piece)[0].decide_lt(target) else {
+            break;
+        };
         if below == increasing {
             lo = mid;
         } else {
             hi = mid;
         }
     }
-    (lo + &hi) / &two
+    T::hull(&lo, &hi)
 }
 
 #[cfg(test)]

@@ -25,6 +25,7 @@ pub use crate::curve::approx::{
 use crate::curve::taylor::Taylor;
 use crate::curve::Curve;
 use crate::numeric::quat::{vec3, Quat};
+use crate::scalar::ball::carried;
 use crate::scalar::{BigRational, Field, Float, Real};
 use rayon::prelude::*;
 
@@ -120,7 +121,9 @@ pub fn segment_data<T: Real, C: Curve<T> + ?Sized>(
     let h = (b.clone() - a) / &T::from_i64(segments as i64, &ctx);
     let jets: Vec<Vec<[T; 3]>> = (0..=segments)
         .into_par_iter()
-        .map(|k| segment_jet(curve, &knot(a, b, segments, k), &h, m))
+        .map(carried(|k| {
+            segment_jet(curve, &knot(a, b, segments, k), &h, m)
+        }))
         .collect();
     (0..segments)
         .map(|k| HermiteData::from_jets(&jets[k], &jets[k + 1]))
@@ -142,7 +145,7 @@ pub fn convert<T: Real, C: Curve<T> + ?Sized>(
     let data = segment_data(curve, a, b, segments, m);
     let mut pieces = data
         .par_iter()
-        .map(|d| interpolate(d, free))
+        .map(carried(|d| interpolate(d, free)))
         .collect::<Result<Vec<_>, _>>()?;
     if roll {
         align_roll(&mut pieces);
@@ -321,7 +324,7 @@ pub fn grid_distances<T: Real, C: Curve<T> + ?Sized>(
         .segments
         .par_iter()
         .enumerate()
-        .map(|(k, seg)| {
+        .map(carried(|(k, seg): (usize, &PhCurve<T>)| {
             if per_segment[k].is_empty() {
                 return Vec::new();
             }
@@ -330,7 +333,7 @@ pub fn grid_distances<T: Real, C: Curve<T> + ?Sized>(
                 .iter()
                 .map(|(i, xi)| (*i, dist.value(xi).sqrt()))
                 .collect()
-        })
+        }))
         .collect();
     let mut out = vec![T::zero_in(&h.ctx()); ts.len()];
     for (i, d) in found.into_iter().flatten() {

@@ -36,7 +36,12 @@ fn eliminate<T: Field>(
         let mut best_abs = a[(col, col)].abs();
         for r in col + 1..n {
             let v = a[(r, col)].abs();
-            if v > best_abs {
+            // The pivot order is a rounding heuristic, not a decision the result rests on:
+            // balls whose magnitudes overlap are ordered by their midpoints, uncounted.
+            let larger = best_abs
+                .decide_lt(&v)
+                .unwrap_or_else(|| v.to_f64() > best_abs.to_f64());
+            if larger {
                 best = r;
                 best_abs = v;
             }

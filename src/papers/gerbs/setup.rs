@@ -63,6 +63,7 @@ pub fn spec<T: Real>(ctx: &T::Ctx, convention: ArcConvention) -> PathSpec<T> {
         theta_o: T::pi(ctx) / &T::from_i64(8, ctx),
         line_length: None,
         convention,
+        turns: None,
     }
 }
 
