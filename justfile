@@ -16,6 +16,11 @@ test:
 fuzz cases="3000" seconds="3600":
     FUZZ_SEED=random FUZZ_CASES={{cases}} FUZZ_SECONDS={{seconds}} cargo test --release --test fuzz -- --nocapture
 
+# The differential soundness test for a long run: every printed digit of every `run`
+# algorithm against the exact or 4x-precision reference, on new random inputs.
+soundness cases="200" seconds="600":
+    SOUNDNESS_SEED=random SOUNDNESS_CASES={{cases}} SOUNDNESS_SECONDS={{seconds}} cargo test --release --test soundness -- --nocapture
+
 # Criterion benches (results under target/criterion).
 bench:
     cargo bench

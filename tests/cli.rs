@@ -33,10 +33,107 @@ fn trajverify(args: &[&str], stdin: &str) -> Run {
         );
     }
     let out = child.wait_with_output().expect("the binary finishes");
-    Run {
+    let run = Run {
         code: out.status.code().unwrap_or(-1),
         stdout: String::from_utf8_lossy(&out.stdout).into_owned(),
         stderr: String::from_utf8_lossy(&out.stderr).into_owned(),
+    };
+    check_printed_balls(args, stdin, &run);
+    run
+}
+
+/// The ball contract, for every ball any test here prints: each {"value", "radius"} read as
+/// exact decimals contains the value a run at 1024 bits prints (within that value's own half
+/// unit), so the enclosure holds as printed, not only around an unprinted midpoint.
+fn check_printed_balls(args: &[&str], stdin: &str, run: &Run) {
+    let Some(at) = args.iter().position(|a| a.starts_with("ball:")) else {
+        return;
+    };
+    if run.code != 0 || args.first() != Some(&"run") {
+        return;
+    }
+    let mut reference_args: Vec<&str> = args.to_vec();
+    reference_args[at] = "mpfr:1024";
+    let reference = Command::new(env!("CARGO_BIN_EXE_trajverify"))
+        .args(&reference_args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .and_then(|mut child| {
+            let _ = child
+                .stdin
+                .take()
+                .map(|mut s| s.write_all(stdin.as_bytes()));
+            child.wait_with_output()
+        })
+        .expect("the reference runs");
+    if !reference.status.success() {
+        return; // e.g. a method whose 1024-bit run is beyond its budget
+    }
+    let tested: Value = serde_json::from_str(&run.stdout).expect("JSON");
+    let exact: Value = serde_json::from_slice(&reference.stdout).expect("JSON");
+    let mut checked = 0;
+    contains(&tested, &exact, "", &mut checked);
+    assert!(
+        checked > 0,
+        "no ball of {args:?} was checked against the 1024-bit run"
+    );
+}
+
+fn exact_decimal(text: &str) -> trajverify::scalar::BigRational {
+    trajverify::scalar::parse::parse_rational(text).unwrap_or_else(|e| panic!("{text}: {e}"))
+}
+
+/// Half a unit of the last digit of a printed decimal (0 for "0").
+fn half_unit(text: &str) -> trajverify::scalar::BigRational {
+    use trajverify::scalar::BigRational;
+    let t = text.trim_start_matches('-');
+    if t == "0" {
+        return BigRational::from_integer(0.into());
+    }
+    let (mantissa, exponent) = t
+        .split_once('e')
+        .map_or((t, 0), |(m, e)| (m, e.parse().unwrap()));
+    let fraction = mantissa.split_once('.').map_or(0, |(_, f)| f.len() as i32);
+    let power: i32 = exponent - fraction;
+    let ten = BigRational::from_integer(10.into());
+    let unit = if power >= 0 {
+        num_traits::pow(ten, power as usize)
+    } else {
+        BigRational::from_integer(1.into()) / num_traits::pow(ten, (-power) as usize)
+    };
+    unit / BigRational::from_integer(2.into())
+}
+
+fn contains(tested: &Value, reference: &Value, path: &str, checked: &mut usize) {
+    use num_traits::Signed;
+    match (tested, reference) {
+        (Value::Object(t), Value::String(r)) if t.contains_key("radius") => {
+            let value = exact_decimal(t["value"].as_str().expect("a value"));
+            let radius = exact_decimal(t["radius"].as_str().expect("a radius"));
+            let r_value = exact_decimal(r);
+            *checked += 1;
+            assert!(
+                (value - &r_value).abs() <= radius + half_unit(r),
+                "{path}: the ball {} ± {} does not contain the 1024-bit value {r}",
+                t["value"],
+                t["radius"]
+            );
+        }
+        (Value::Object(t), Value::Object(r)) => {
+            for (k, v) in t {
+                if let Some(rv) = r.get(k) {
+                    contains(v, rv, &format!("{path}.{k}"), checked);
+                }
+            }
+        }
+        (Value::Array(t), Value::Array(r)) if t.len() == r.len() => {
+            for (i, (a, b)) in t.iter().zip(r).enumerate() {
+                contains(a, b, &format!("{path}[{i}]"), checked);
+            }
+        }
+        _ => {}
     }
 }
 
@@ -949,6 +1046,16 @@ fn ball_prints_the_digits_its_enclosure_proves_and_the_radius() {
     );
     let radius: f64 = p3["radius"].as_str().unwrap().parse().unwrap();
     assert!(radius > 0.0 && radius < 1e-17, "{p3}");
+    // The README's example: 13/15 lies in value ± radius, read exactly as printed.
+    {
+        use num_traits::Signed;
+        let exact = trajverify::scalar::BigRational::new(13.into(), 15.into());
+        let distance = (exact_decimal(value) - exact).abs();
+        assert!(
+            distance <= exact_decimal(p3["radius"].as_str().unwrap()),
+            "{p3}"
+        );
+    }
     // Algorithm 1 (the PH conversion of a segment) runs in balls too.
     let data = r#"{"p_b":[0,0,0],"p_e":[1,1,0],"v_b":[1,0,0],"v_e":[0,1,0],"a_b":[0,0,0],"a_e":[0,0,0],
                    "j_b":[0,0,0],"j_e":[0,0,0],"s_b":[0,0,0],"s_e":[0,0,0]}"#;
@@ -1223,4 +1330,97 @@ fn report_convergence_writes_markdown_svg_and_json_for_a_users_curve() {
     assert!(outside.stderr.contains("--interval"), "{}", outside.stderr);
     assert!(!dir.exists());
     let _ = std::fs::remove_file(&csv);
+}
+
+/// The inputs that broke "every printed digit is true", each now answered right or refused.
+#[test]
+fn regressions_of_the_soundness_review() {
+    let nines = format!("0.{}", "9".repeat(40));
+    // A point 1e-40 below a knot: the exact branch at every precision (B₂″ = 6, B₂‴ = 12,
+    // B₃‴ = −12, as the rational run says), not the knot's one-sided values.
+    let basis = |at: &str, side: &str| {
+        format!(
+            r#"{{"knots": [0,0,1,2,3,3], "kind": "bfbs", "params": {{"i": 1}}, "at": ["{at}"], "derivatives": 3, "side": "{side}"}}"#
+        )
+    };
+    for scalar in ["mpfr:64", "rational", "f64", "ball:64"] {
+        let out = json(&trajverify(
+            &["run", "gerbs-basis", "--scalar", scalar],
+            &basis(&nines, "right"),
+        ));
+        let text = |v: &Value| match v {
+            Value::Object(b) => b["value"].as_str().unwrap().to_string(),
+            other => other.as_str().unwrap().to_string(),
+        };
+        let b2: Vec<f64> = out["values"][0][0]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|v| text(v).split('/').next().unwrap().parse::<f64>().unwrap())
+            .collect();
+        let b3_third = text(&out["values"][0][1][3]);
+        assert!(b3_third.starts_with("-12"), "{scalar}: B₃‴ = {b3_third}");
+        assert!(b2[3] > 11.9, "{scalar}: B₂ = {b2:?}");
+    }
+    // The same 1e-40 above the knot, from the left.
+    let above = format!("1.{}1", "0".repeat(39));
+    let out = json(&trajverify(
+        &["run", "gerbs-basis", "--scalar", "mpfr:64"],
+        &basis(&above, "left"),
+    ));
+    assert!(
+        out["values"][0][1][3].as_str().unwrap().starts_with("12"),
+        "{out}"
+    );
+    // A straight Dubins leg: samples along it, not all at the origin.
+    let out = json(&trajverify(
+        &["run", "dubins", "--scalar", "mpfr:64"],
+        r#"{"waypoints": [[0,0],[100,0],[200,0.5]], "radius": 10, "headings": [0,0,0], "samples": 3}"#,
+    ));
+    let xs: Vec<&str> = out["legs"][0]["samples"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| p[0].as_str().unwrap())
+        .collect();
+    assert!(
+        xs[0] == "0" && xs[1].starts_with("50.0") && xs[2].starts_with("100.0"),
+        "{xs:?}"
+    );
+    // Default headings and a waypoint 1e-40 off the axis: the last sample of leg 1 is at x = 100.
+    let out = json(&trajverify(
+        &["run", "dubins", "--scalar", "mpfr:64"],
+        r#"{"waypoints": [[0,0],[100,"1e-40"],[200,0.5]], "radius": 10}"#,
+    ));
+    let last = out["legs"][0]["samples"]
+        .as_array()
+        .unwrap()
+        .last()
+        .unwrap();
+    assert!(last[0].as_str().unwrap().starts_with("100.0"), "{last}");
+    // A rank-deficient interpolation (Schoenberg–Whitney fails) is refused in f64 as in rationals.
+    let fit = r#"{"degree": 4, "controls": 11, "times": [1.4, 1.6, 1.8, 2.7, 2.9, 4.2, 4.9, 5.4, 8.8, 10.3, 11.3],
+                  "values": [1,2,3,4,5,6,7,8,9,10,11], "weights": null}"#;
+    for scalar in ["f64", "rational", "mpfr:64", "ball:64"] {
+        let run = trajverify(&["run", "spline-fit", "--scalar", scalar], fit);
+        assert_eq!(run.code, 2, "{scalar}: {}", run.stdout);
+        assert!(run.stderr.contains("Schoenberg"), "{}", run.stderr);
+    }
+    // κ₂ on [1, 1 + 1e-40] (an exact fraction): the width is taken exactly.
+    let one_plus = format!("1{}1/1{}", "0".repeat(39), "0".repeat(40));
+    for scalar in ["mpfr:64", "mpfr:128"] {
+        let out = json(&trajverify(
+            &["run", "hermite-condition", "--scalar", scalar],
+            &format!(
+                r#"{{"derivatives": 10, "interval": [1, "{one_plus}"], "matrix": "transform"}}"#
+            ),
+        ));
+        assert!(
+            out["condition_number"]
+                .as_str()
+                .unwrap()
+                .starts_with("1.8246678151"),
+            "{out}"
+        );
+    }
 }

@@ -139,18 +139,22 @@ fn fit_in<T: Field>(data: &FitInput, ctx: &T::Ctx) -> Result<Out<T>, InputError>
     let conv = |q: &BigRational| T::from_rational(q, ctx);
     let space = SplineSpace::<T>::new(data.degree, data.controls, ctx)
         .map_err(|e| InputError(format!("field \"degree\": {e}")))?;
-    let times: Vec<T> = data.times.iter().map(conv).collect();
+    let collocation = SplineSpace::<BigRational>::new(data.degree, data.controls, &())
+        .map_err(|e| InputError(format!("field \"degree\": {e}")))?
+        .collocation_of(&data.times)
+        .map(|q| T::from_rational(q, ctx));
     let weights: Option<Vec<T>> = data.weights.as_ref().map(|w| w.iter().map(conv).collect());
     let dims = data.values[0].len();
     let mut per_coordinate = Vec::with_capacity(dims);
     for c in 0..dims {
         let values: Vec<T> = data.values.iter().map(|v| conv(&v[c])).collect();
         let tau = match &weights {
-            // Support, rank and weights were decided on the exact input (`read_fit`).
+            // Support, rank and weights were decided on the exact input (`read_fit`), and B
+            // is formed exactly and rounded once.
             None => space
-                .interpolate_checked(&times, &values)
+                .interpolate_collocation(&collocation, &values)
                 .and_then(|(tau, condition)| check_conditioning(tau, &condition, ctx)),
-            Some(w) => space.smooth_checked(&times, &values, w),
+            Some(w) => space.smooth_collocation(&collocation, &values, w),
         }
         .map_err(|e| InputError(format!("field \"times\": {e}")))?;
         per_coordinate.push(tau);

@@ -22,13 +22,26 @@
 //! | atan2(y, x) | atan2(m_y, m_x) | (r_x + r_y)/ρ_min, ∞ across the branch cut |
 //!
 //! Comparisons are honest: a < b holds only when the balls are disjoint; when they overlap
-//! the answer is unknown, so `partial_cmp` returns `None` and the event is counted
-//! ([`undecided_comparisons`]). A computation that made a branch on an undecided comparison
-//! may have taken the wrong branch, so the `run` commands refuse its result (the count is a
-//! process-wide total: compare it before and after the computation; with the environment
-//! variable `TRAJVERIFY_BALL_TRACE` set, each undecided comparison prints a backtrace to
-//! stderr, to find the branch). `is_zero` means "exactly zero" (radius 0), as for the other
-//! number types.
+//! the answer is unknown, so `partial_cmp` returns `None` and the event is counted. A
+//! computation that made a branch on an undecided comparison may have taken the wrong branch,
+//! so the `run` commands refuse its result. The count belongs to the computation: [`tally`]
+//! runs a closure and returns how many undecided comparisons *it* made (work it hands to
+//! rayon carries the tally with [`carried`]); outside any tally they add to a process-wide
+//! total ([`undecided_comparisons`]). With the environment variable `TRAJVERIFY_BALL_TRACE`
+//! set, each undecided comparison prints a backtrace to stderr, to find the branch. Where a
+//! branch only chooses between two equal formulas or orders a rounding heuristic (a pivot),
+//! the code asks [`Field::decide_lt`], which does not count; where a piecewise function meets
+//! a ball that straddles a breakpoint, both pieces are evaluated and joined ([`Field::hull`]).
+//! `is_zero` means "exactly zero" (radius 0), as for the other number types; exact zeros
+//! propagate (0·x, x − x of one exact value, sin 0, atan2(0, x > 0) are exactly 0).
+//!
+//! **The printed contract.** A ball is printed ([`Ball::printed`]) as a decimal `value` and a
+//! decimal `radius` such that every point of the ball lies in [value − radius, value +
+//! radius] *as printed*: `value` carries the digits every point of the ball rounds to (the
+//! midpoint to two digits when not even one is proven), and `radius` is measured from that
+//! rounded value — |value − mid| + rad, computed exactly and rounded up to two digits — not
+//! from the unprinted midpoint. The README's example prints 13/15 at 64 bits as
+//! 0.866666666666666667 ± 4.6e-19, which contains it.
 
 use super::certify::format_float_digits;
 use super::{BigRational, Field, Real};

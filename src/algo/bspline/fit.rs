@@ -128,7 +128,7 @@ impl<T: Field> SplineSpace<T> {
     /// The collocation matrix without the support check (for times the caller checked on
     /// their exact values: a time within rounding of the support's end gives the basis's
     /// continuous value there).
-    fn collocation_of(&self, times: &[T]) -> Matrix<T> {
+    pub fn collocation_of(&self, times: &[T]) -> Matrix<T> {
         let ctx = times[0].ctx();
         Matrix::from_fn(times.len(), self.controls, |j, i| {
             self.basis
@@ -206,13 +206,37 @@ impl<T: Field> SplineSpace<T> {
                 values: values.len(),
             });
         }
-        let b = self.collocation_of(times);
-        let ctx = times[0].ctx();
+        self.interpolate_collocation(&self.collocation_of(times), values)
+    }
+
+    /// Eq. 14 from the collocation matrix B itself (N×M, N ≤ M, of full row rank), for a
+    /// caller that formed B exactly (in rationals, from exact times) and rounded it once:
+    /// an entry B_k(tⱼ − i + 1) of a time 1e-40 inside the support's end is then ~1e-80 and
+    /// accurate, where the same entry of the rounded time would be 0.
+    pub fn interpolate_collocation(
+        &self,
+        b: &Matrix<T>,
+        values: &[T],
+    ) -> Result<(Vec<T>, T), FitError> {
+        if b.rows() == 0 || b.rows() != values.len() || b.cols() != self.controls {
+            return Err(FitError::LengthMismatch {
+                times: b.rows(),
+                values: values.len(),
+            });
+        }
+        let ctx = values[0].ctx();
         let gram = self.gram(&ctx);
-        let g_inv = inverse(&gram).map_err(|_| FitError::RankDeficient)?;
+        // B has full row rank (decided exactly), so a singular system here is singular only
+        // at this precision.
+        let singular = |_| FitError::IllConditioned {
+            scalar: T::scalar_name(&ctx),
+            condition: f64::INFINITY,
+            unit: T::unit_roundoff(&ctx).unwrap_or(0.0),
+        };
+        let g_inv = inverse(&gram).map_err(singular)?;
         let g_inv_bt = g_inv.mul(&b.transpose());
         let schur = b.mul(&g_inv_bt);
-        let schur_inv = inverse(&schur).map_err(|_| FitError::RankDeficient)?;
+        let schur_inv = inverse(&schur).map_err(singular)?;
         let y = schur_inv.mul_vec(values);
         let condition = norm1(&gram) * &norm1(&g_inv) * &norm1(&schur) * &norm1(&schur_inv);
         Ok((g_inv_bt.mul_vec(&y), condition))
@@ -248,8 +272,24 @@ impl<T: Field> SplineSpace<T> {
                 values: values.len(),
             });
         }
-        let ctx = times[0].ctx();
-        let b = self.collocation_of(times);
+        self.smooth_collocation(&self.collocation_of(times), values, weights)
+    }
+
+    /// Eq. 15 from the collocation matrix B (formed exactly by the caller, see
+    /// [`SplineSpace::interpolate_collocation`]).
+    pub fn smooth_collocation(
+        &self,
+        b: &Matrix<T>,
+        values: &[T],
+        weights: &[T],
+    ) -> Result<Vec<T>, FitError> {
+        if b.rows() == 0 || b.rows() != values.len() || weights.len() != values.len() {
+            return Err(FitError::LengthMismatch {
+                times: b.rows(),
+                values: values.len(),
+            });
+        }
+        let ctx = values[0].ctx();
         let wb = Matrix::from_fn(b.rows(), b.cols(), |j, i| weights[j].clone() * &b[(j, i)]);
         let bt = b.transpose();
         let gram = self.gram(&ctx);

@@ -131,16 +131,22 @@ impl<T: Field> NaturalCubicSpline<T> {
         );
         let six = T::from_i64(6, &ctx);
         let two = T::from_i64(2, &ctx);
-        // θ = ma·u³/(6h) + mb·v³/(6h) + (za/h − ma·h/6)·u + (zb/h − mb·h/6)·v
-        let ca = za.clone() / &h - &(ma.clone() * &h / &six);
-        let cb = zb.clone() / &h - &(mb.clone() * &h / &six);
-        let value = ma.clone() * u * u * u / &(six.clone() * &h)
-            + &(mb.clone() * v * v * v / &(six * &h))
-            + &(ca.clone() * u)
-            + &(cb.clone() * v);
-        let slope =
-            -(ma.clone() * u * u) / &(two.clone() * &h) + &(mb.clone() * v * v / &(two * &h)) - &ca
-                + &cb;
+        // θ = ma·u³/(6h) + mb·v³/(6h) + (za/h − ma·h/6)·u + (zb/h − mb·h/6)·v, regrouped with
+        // h² − u² = v(h + u) and h = u + v so that no term cancels another when u or v is
+        // tiny (the exact distances then give the value its relative accuracy):
+        // θ = (za·u + zb·v)/h − u·v·(ma·(2u + v) + mb·(u + 2v))/(6h).
+        let value = (za.clone() * u + &(zb.clone() * v)) / &h
+            - &(u.clone()
+                * v
+                * &(ma.clone() * &(two.clone() * u + v)
+                    + &(mb.clone() * &(u.clone() + &(two.clone() * v))))
+                / &(six.clone() * &h));
+        // θ′ = (zb − za)/h + ma·(h² − 3u²)/(6h) + mb·(3v² − h²)/(6h).
+        let three = T::from_i64(3, &ctx);
+        let h2 = h.clone() * &h;
+        let slope = (zb.clone() - za) / &h
+            + &(ma.clone() * &(h2.clone() - &(three.clone() * u * u)) / &(six.clone() * &h))
+            + &(mb.clone() * &(three * v * v - &h2) / &(six * &h));
         let curvature = (ma.clone() * u + &(mb.clone() * v)) / &h;
         [value, slope, curvature]
     }
