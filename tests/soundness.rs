@@ -441,6 +441,10 @@ struct Counts {
     ball_runs: usize,
     ball_refusals: usize,
     no_reference: usize,
+    /// f64 runs, their refusals, and answers with no correct digit in the norm.
+    f64_runs: usize,
+    f64_refusals: usize,
+    f64_without_digit: Vec<String>,
     /// The first refusals, for the report.
     refusal_messages: Vec<String>,
 }
@@ -665,6 +669,53 @@ fn env_number(name: &str, default: f64) -> f64 {
         .unwrap_or(default)
 }
 
+/// Every number of a tested output paired with the reference's (for the normwise check of
+/// f64 results): (tested, reference) as exact rationals.
+fn pairs(tested: &Value, reference: &Value, out: &mut Vec<(BigRational, BigRational)>) {
+    match (tested, reference) {
+        (Value::Object(t), Value::Object(r)) => {
+            for (k, v) in t {
+                if SKIP.contains(&k.as_str()) {
+                    continue;
+                }
+                if let Some(rv) = r.get(k) {
+                    pairs(v, rv, out);
+                }
+            }
+        }
+        (Value::Array(t), Value::Array(r)) if t.len() == r.len() => {
+            for (a, b) in t.iter().zip(r) {
+                pairs(a, b, out);
+            }
+        }
+        (Value::String(a), Value::String(b)) => {
+            if let (Some(x), Some(y)) = (exact_number(a), exact_number(b)) {
+                out.push((x, y));
+            }
+        }
+        _ => {}
+    }
+}
+
+/// Whether an f64 output has at least one correct digit in the norm: max |x − r| < ½ max |r|
+/// over all its numbers (every method refuses an answer without one, on its own
+/// conditioning estimate or at the output).
+fn f64_has_a_digit(tested: &Value, reference: &Value) -> bool {
+    let mut p = Vec::new();
+    pairs(tested, reference, &mut p);
+    let error = p
+        .iter()
+        .map(|(x, r)| (x.clone() - r).abs())
+        .max()
+        .unwrap_or_else(BigRational::zero);
+    let size = p
+        .iter()
+        .map(|(_, r)| r.abs())
+        .max()
+        .unwrap_or_else(BigRational::zero);
+    error * BigRational::from_integer(2.into()) < size || size.is_zero()
+}
+
 /// Run one subject's cases and return its counts.
 fn check_subject(subject: &Subject) -> Counts {
     let mut cases = env_number("SOUNDNESS_CASES", 12.0) as usize;
@@ -698,6 +749,19 @@ fn check_subject(subject: &Subject) -> Counts {
                 continue;
             };
             let reference_scale = scale(&reference);
+            if bits == 64 {
+                match run(subject.algorithm, "f64", &input) {
+                    Ok(out) => {
+                        counts.f64_runs += 1;
+                        if !f64_has_a_digit(&out, &reference) {
+                            counts
+                                .f64_without_digit
+                                .push(format!("{} case {case} f64 {input}", subject.name));
+                        }
+                    }
+                    Err(_) => counts.f64_refusals += 1,
+                }
+            }
             let mut scalars = Vec::new();
             if subject.mpfr {
                 scalars.push(format!("mpfr:{bits}"));
@@ -750,6 +814,15 @@ fn check_subject(subject: &Subject) -> Counts {
         counts.ball_runs,
         start.elapsed().as_secs_f64()
     );
+    println!(
+        "  f64: {} answers, {} refused, {} without a correct digit",
+        counts.f64_runs,
+        counts.f64_refusals,
+        counts.f64_without_digit.len()
+    );
+    for m in counts.f64_without_digit.iter().take(3) {
+        println!("  f64 without a digit: {m}");
+    }
     for m in &counts.refusal_messages {
         println!("  refused: {m}");
     }
