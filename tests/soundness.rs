@@ -12,7 +12,9 @@
 //!   output's scale (the `MaybeZero` rule);
 //! - every ball {"value", "radius"} must contain the reference as printed:
 //!   |value − reference| ≤ radius;
-//! - every word, case and count must equal the reference's.
+//! - every word, case and count must equal the reference's;
+//! - an `f64` answer (at p = 64) must have a correct digit in the norm, max |x − r| < ½ max |r|:
+//!   a method whose f64 result would have none refuses it on its own conditioning estimate.
 //!
 //! A run that refuses (exit 2, or 3) is counted apart, not compared. A wrong digit or a ball
 //! that misses fails the test, with the input to reproduce it. Inputs include points, knots
@@ -839,13 +841,15 @@ fn assert_sound(name: &str) {
         .wrong_digits
         .iter()
         .chain(&counts.misses)
+        .chain(&counts.f64_without_digit)
         .take(10)
         .collect();
     assert!(
         problems.is_empty(),
-        "{name}: {} wrong digits and {} misses, e.g.\n{}",
+        "{name}: {} wrong digits, {} misses, {} f64 answers without a correct digit, e.g.\n{}",
         counts.wrong_digits.len(),
         counts.misses.len(),
+        counts.f64_without_digit.len(),
         problems
             .iter()
             .map(|s| s.as_str())
@@ -1048,6 +1052,14 @@ fn the_comparison_catches_a_wrong_digit_and_a_missing_ball() {
         &cx,
         &mut counts,
     );
+    assert!(f64_has_a_digit(
+        &json!(["0.8", "3"]),
+        &json!(["13/15", "3"])
+    ));
+    assert!(!f64_has_a_digit(
+        &json!(["-1e13", "3"]),
+        &json!(["13/15", "3"])
+    ));
     assert_eq!(counts.wrong_digits.len(), 1, "{:?}", counts.wrong_digits);
     assert_eq!(counts.misses.len(), 1, "{:?}", counts.misses);
     assert_eq!(counts.comparisons, 4);
