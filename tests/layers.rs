@@ -38,9 +38,17 @@ fn allowed(module: &str) -> Option<Vec<&'static str>> {
             "numeric::quat",
         ],
         m if ALGORITHMS.contains(&m) => BUILDING_BLOCKS.to_vec(),
-        "report" => vec!["scalar", "ledger"],
+        // A study built on the algorithms (the PHODCOS and Hermite methods side by side).
+        "algo::convergence" => [BUILDING_BLOCKS, ALGORITHMS].concat(),
+        // Reports render the ledger, and the studies users run.
+        "report" => vec!["scalar", "ledger", "algo::convergence"],
         "papers" => [BUILDING_BLOCKS, ALGORITHMS, &["ledger", "report"]].concat(),
-        "cli" => [BUILDING_BLOCKS, ALGORITHMS, &["ledger", "report", "papers"]].concat(),
+        "cli" => [
+            BUILDING_BLOCKS,
+            ALGORITHMS,
+            &["algo::convergence", "ledger", "report", "papers"],
+        ]
+        .concat(),
         _ => return None,
     })
 }

@@ -130,8 +130,10 @@ Exit status: 0 success, 2 bad input (one line naming the field, nothing on stdou
 #[derive(Subcommand, Debug)]
 pub enum ReportKind {
     /// Table 1 for your curve: the PHODCOS conversion (or piecewise Hermite–Bernstein) error
-    /// against 2ⁿ segments (certified, proven with ball:BITS, and f64), observed and fitted
-    /// orders against the expected one, where f64 stops improving.
+    /// against 2ⁿ segments, proven by branch and bound (with the sampled maximum and f64
+    /// beside it), observed and fitted orders against the expected one, where f64 stops
+    /// improving. A curve that is not finite or whose tangent vanishes on the interval is
+    /// refused, naming t.
     Convergence {
         /// The curve, "[x(t), y(t), z(t)]" (numbers, t, pi, + - * / ^, sin cos tan exp ln sqrt atan).
         #[arg(
@@ -157,8 +159,9 @@ pub enum ReportKind {
         /// Levels n (2ⁿ segments): "a-b" or "n1,n2,…", within 0…14.
         #[arg(long, default_value = "0-8")]
         levels: String,
-        /// mpfr:BITS (certified at BITS and 2·BITS) or ball:BITS (also proven enclosures).
-        #[arg(long, value_name = "SCALAR", value_parser = parse_scalar, default_value = "mpfr:128")]
+        /// ball:BITS (proven errors, with the sampled maximum at BITS and 2·BITS as a
+        /// cross-check) or mpfr:BITS (sampled maxima only: not certified, no proven order).
+        #[arg(long, value_name = "SCALAR", value_parser = parse_scalar, default_value = "ball:128")]
         scalar: ScalarKind,
         /// The directory to write convergence.md, convergence.svg and convergence.json into.
         #[arg(long, value_name = "DIR")]

@@ -160,6 +160,19 @@ fn read_curve(
     };
     let curve = ExprCurve::parse(text).map_err(|e| InputError(format!("field \"curve\": {e}")))?;
     let (a, b) = input::interval(input::field(doc, "interval")?, "interval")?;
+    // Proven before any conversion: finite derivatives up to the 4th and a tangent that
+    // never vanishes on [a, b] (a cusp is named at its t, not as the empty tangent of a
+    // segment's end).
+    match crate::curve::regularity::check(
+        &curve.compile::<crate::scalar::ball::Ball>(&128),
+        (&a, &b),
+        4,
+        128,
+    ) {
+        // Beyond a ball's range: the per-joint checks of each number type decide.
+        Ok(_) | Err(crate::curve::regularity::Irregular::BeyondBallRange { .. }) => {}
+        Err(e) => return fail(format!("field \"curve\": on [{a}, {b}] {e}")),
+    }
     let curve = CurveInput {
         curve,
         text_len: text.len(),

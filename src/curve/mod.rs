@@ -7,6 +7,7 @@
 pub mod approx;
 pub mod enclosure;
 pub mod expr;
+pub mod regularity;
 pub mod spline;
 pub mod taylor;
 
@@ -37,6 +38,18 @@ pub trait Curve<T: Real>: Sync {
 }
 
 impl<T: Real, C: Curve<T> + ?Sized> Curve<T> for &C {
+    fn jet(&self, t: &T, order: usize) -> Vec<[T; 3]> {
+        (**self).jet(t, order)
+    }
+    fn seam_bound(&self, lo: f64, centre: (f64, f64), hi: f64) -> f64 {
+        (**self).seam_bound(lo, centre, hi)
+    }
+    fn breakpoints(&self, lo: f64, hi: f64) -> Vec<f64> {
+        (**self).breakpoints(lo, hi)
+    }
+}
+
+impl<T: Real, C: Curve<T> + ?Sized> Curve<T> for Box<C> {
     fn jet(&self, t: &T, order: usize) -> Vec<[T; 3]> {
         (**self).jet(t, order)
     }

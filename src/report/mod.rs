@@ -5,6 +5,7 @@
 //! figures drawn from values computed in MPFR or by IEEE basic operations only, so the same
 //! bytes come out on every machine and thread count.
 
+pub mod convergence;
 pub mod number;
 pub mod plot;
 

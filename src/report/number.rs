@@ -46,6 +46,9 @@ pub fn marked(printed: &str, units: Option<f64>) -> String {
 /// A bound printed with `digits` significant digits, rounded outward (`Round::Down` for a
 /// lower bound, `Round::Up` for an upper one), so the printed bound is still a bound.
 pub fn bound_text(x: &rug::Float, digits: usize, round: rug::float::Round) -> String {
+    if x.is_zero() {
+        return "0".into();
+    }
     let (negative, mantissa, exp) = x.to_sign_string_exp_round(10, Some(digits), round);
     let e = exp.unwrap_or(0) - 1;
     let (lead, rest) = mantissa.split_at(1.min(mantissa.len()));
