@@ -1,16 +1,48 @@
 //! The claims ledger's types: what a claim is before it is checked ([`ClaimSpec`]), the
 //! result of a check ([`Outcome`]), a checked claim in the schema of `reports/claims.json`
-//! ([`Claim`]) with its [`Verdict`], and the [`Ledger`] that joins outcomes with specs.
+//! ([`Claim`]) with its [`Verdict`] and, when it is not reproduced, its [`Finding`], and the
+//! [`Ledger`] that joins outcomes with specs.
 //!
 //! This module sits below both the paper checks (`papers/`) and the renderers (`report/`):
 //! checks produce these values, renderers read them, and neither imports the other's
 //! internals through it (DESIGN.md, "Layers").
 //!
-//! Verdicts ([`Verdict`], README "Reading the ledger"): `reproduced`, `reproduced-rounding`
-//! (last printed digit), `metric` (agrees under the metric the paper's method uses),
-//! `typo` (evidently garbled print, with the reading used), `undetermined` (the paper does not
-//! give enough data), `discrepancy` (material: the paper's own method contradicts the printed
-//! value) and `failed` (something that must hold does not).
+//! # The verdict policy
+//!
+//! One policy for every claim (the README's "Reading the ledger" gives an example of each;
+//! `tests/claims_snapshot.rs` checks the rules a test can decide):
+//!
+//! 1. **Provenance.** A claim computed on data or parameters the paper does not give —
+//!    invented waypoints, strokes, landing or corner data, parameters other than the paper's —
+//!    reproduces nothing of the paper: it is `illustrated`, and its evidence names each
+//!    substitution.
+//! 2. **By construction.** A check that holds by construction (a boundary condition the
+//!    method imposes, an identity at the one point where both sides vanish) reproduces
+//!    nothing: the claim tests the statement where it could fail, or is not a claim.
+//! 3. **Typo or discrepancy.** An evident garble — the print differs from a consistent reading
+//!    by one lost or swapped symbol (a sign, a conjugate mark, a pair of parentheses, an index
+//!    offset, a digit) — with one consistent reading on which no number the paper computes
+//!    depends, is `typo`. A statement the paper's own method contradicts otherwise (a printed
+//!    value, a formula that is wrong beyond one symbol, a claim about its results) is
+//!    `discrepancy`.
+//! 4. **Printed values.** Within half a unit of the last printed digit is `reproduced`,
+//!    within one unit `reproduced-rounding`. A count has no last digit: it is equal
+//!    (`reproduced`) or not (`discrepancy`).
+//! 5. **Two readings.** A sentence that admits two readings is checked under both: both hold,
+//!    `reproduced`; neither, `discrepancy`; exactly one, `undetermined` (the evidence gives
+//!    both). `undetermined` also marks a statement the paper gives too little to decide.
+//! 6. **Metric forensics.** A printed value that is not the true one is `metric` only when a
+//!    member of a family of alternative metrics, declared before computing (for a sampled
+//!    maximum: every count of equally spaced samples per segment in a declared range, and the
+//!    grids of the authors' code and of common tools), reproduces it; the evidence names the
+//!    member, how many rows it explains and how large the family is.
+//! 7. **Severity.** Every claim not reproduced carries a [`Finding`]: what the paper printed,
+//!    what is computed, how they differ (at most ten significant digits each), and its
+//!    [`Severity`], `material` when it changes a conclusion the paper draws or a formula a
+//!    reader would implement, `minor` otherwise, with the reason. Summaries list material
+//!    findings first.
+//! 8. **True evidence.** Evidence quotes the paper completely, and a criterion is the
+//!    paper's, fixed before the computation, never tuned toward a printed number.
 
 use serde::Serialize;
 
@@ -37,8 +69,14 @@ pub enum Verdict {
     /// extraction); the evidence gives the reading used and why it is the evident one.
     #[serde(rename = "typo")]
     Typo,
-    /// The paper does not give enough data to decide; the evidence says what was assumed and
-    /// what each reading gives.
+    /// Computed on data or parameters the paper does not give (invented waypoints, strokes,
+    /// landing data; parameters other than the paper's): it shows the method's behaviour on
+    /// substituted data and reproduces nothing of the paper; the evidence names what was
+    /// substituted.
+    #[serde(rename = "illustrated")]
+    Illustrated,
+    /// The paper does not give enough data to decide, or a sentence has two readings of which
+    /// exactly one holds; the evidence says what each reading gives.
     #[serde(rename = "undetermined")]
     Undetermined,
     /// Material: the paper's own method, computed to certified precision, contradicts the
@@ -52,11 +90,12 @@ pub enum Verdict {
 
 impl Verdict {
     /// Every verdict, in severity order.
-    pub const ALL: [Verdict; 7] = [
+    pub const ALL: [Verdict; 8] = [
         Verdict::Reproduced,
         Verdict::ReproducedRounding,
         Verdict::Metric,
         Verdict::Typo,
+        Verdict::Illustrated,
         Verdict::Undetermined,
         Verdict::Discrepancy,
         Verdict::Failed,
@@ -69,6 +108,7 @@ impl Verdict {
             Verdict::ReproducedRounding => "reproduced-rounding",
             Verdict::Metric => "metric",
             Verdict::Typo => "typo",
+            Verdict::Illustrated => "illustrated",
             Verdict::Undetermined => "undetermined",
             Verdict::Discrepancy => "discrepancy",
             Verdict::Failed => "failed",
@@ -141,6 +181,10 @@ pub struct Claim {
     pub assurance: Assurance,
     /// The verdict.
     pub verdict: Verdict,
+    /// For a claim not reproduced: what the paper printed, what is computed, how they differ,
+    /// and whether it is material or minor.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub finding: Option<Finding>,
     /// The evidence for the verdict.
     pub evidence: String,
 }
@@ -193,6 +237,43 @@ impl Assurance {
     }
 }
 
+/// How much a finding matters (every claim not reproduced carries one).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, PartialOrd, Ord)]
+#[serde(rename_all = "lowercase")]
+pub enum Severity {
+    /// It changes a conclusion the paper draws, or a formula a reader would implement.
+    Material,
+    /// It does not.
+    Minor,
+}
+
+impl Severity {
+    /// The name used in claims.json and the reports.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Severity::Material => "material",
+            Severity::Minor => "minor",
+        }
+    }
+}
+
+/// A claim not reproduced, as its summary line states it: what the paper printed, what the
+/// computation gives, how they differ (each in at most ten significant digits), and how much
+/// it matters.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct Finding {
+    /// What the paper printed or states.
+    pub paper: String,
+    /// What the computation gives.
+    pub computed: String,
+    /// How they differ.
+    pub difference: String,
+    /// Material or minor.
+    pub severity: Severity,
+    /// Why that severity.
+    pub severity_reason: String,
+}
+
 /// The result of one check, before it is joined with its spec.
 #[derive(Clone, Debug)]
 pub struct Outcome {
@@ -204,6 +285,8 @@ pub struct Outcome {
     pub verdict: Verdict,
     /// The evidence for the verdict.
     pub evidence: String,
+    /// For a claim not reproduced: its finding.
+    pub finding: Option<Finding>,
 }
 
 impl Outcome {
@@ -219,7 +302,32 @@ impl Outcome {
             scalar: scalar.into(),
             verdict,
             evidence: evidence.into(),
+            finding: None,
         }
+    }
+
+    /// The same outcome with another verdict (a policy clause applied after the check).
+    pub fn with_verdict(mut self, verdict: Verdict) -> Self {
+        self.verdict = verdict;
+        self
+    }
+
+    /// The same outcome with its finding: what the paper printed, what is computed, how they
+    /// differ, and the severity with its reason.
+    pub fn finding(
+        mut self,
+        (paper, computed, difference): (&str, &str, &str),
+        severity: Severity,
+        reason: &str,
+    ) -> Self {
+        self.finding = Some(Finding {
+            paper: paper.into(),
+            computed: computed.into(),
+            difference: difference.into(),
+            severity,
+            severity_reason: reason.into(),
+        });
+        self
     }
 }
 
@@ -272,8 +380,51 @@ impl Ledger {
             assurance: Assurance::of_scalar(&outcome.scalar),
             scalar: outcome.scalar,
             verdict,
+            finding: outcome.finding,
             evidence,
         });
+    }
+
+    /// The verdict recorded for `id` so far, if any.
+    pub fn verdict_of(&self, id: &str) -> Option<Verdict> {
+        self.claims.iter().find(|c| c.id == id).map(|c| c.verdict)
+    }
+
+    /// Apply the verdict policy to a claim already recorded: a new verdict, if the policy's
+    /// clause changes it, and its finding (what the paper prints, how the computed value —
+    /// the claim's reproduced text — differs, the severity and why). An unknown id is a
+    /// `failed` claim of its own, never a panic.
+    pub fn amend(
+        &mut self,
+        id: &str,
+        verdict: Option<Verdict>,
+        (paper, difference): (&str, &str),
+        severity: Severity,
+        reason: &str,
+    ) {
+        match self.claims.iter_mut().find(|c| c.id == id) {
+            Some(claim) => {
+                if let Some(v) = verdict {
+                    claim.verdict = v;
+                }
+                claim.finding = Some(Finding {
+                    paper: paper.into(),
+                    computed: claim.reproduced.clone(),
+                    difference: difference.into(),
+                    severity,
+                    severity_reason: reason.into(),
+                });
+            }
+            None => self.record(
+                id,
+                Outcome::new(
+                    "",
+                    "",
+                    Verdict::Failed,
+                    format!("internal: amended before it was recorded: {reason}"),
+                ),
+            ),
+        }
     }
 
     /// The claims in spec-table order; a spec never recorded becomes a `failed` claim.
@@ -290,6 +441,7 @@ impl Ledger {
                     scalar: String::new(),
                     assurance: Assurance::Floating,
                     verdict: Verdict::Failed,
+                    finding: None,
                     evidence: "internal: the check was never run".into(),
                 });
             }

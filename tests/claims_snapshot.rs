@@ -17,6 +17,7 @@ fn snapshot_paper(short: &str) {
         .collect();
     assert!(failed.is_empty(), "failed claims: {failed:?}");
     assert_eq!(output.claims.len(), paper.specs.len());
+    verdict_policy(&output.claims);
     let text: String = output
         .claims
         .iter()
@@ -34,6 +35,52 @@ fn snapshot_paper(short: &str) {
     settings.set_snapshot_path(concat!(env!("CARGO_MANIFEST_DIR"), "/snapshots"));
     settings.set_prepend_module_to_snapshot(false);
     settings.bind(|| insta::assert_snapshot!(format!("claims_{}", paper.id), text));
+}
+
+/// The rules of the verdict policy (`ledger` module doc) a test can decide.
+fn verdict_policy(claims: &[trajverify::ledger::Claim]) {
+    for c in claims {
+        match (&c.verdict, &c.finding) {
+            // Clause 7: a reproduced claim has no finding; every other verdict has one, with a
+            // severity and its reason.
+            (Verdict::Reproduced, Some(_)) => panic!("{}: reproduced with a finding", c.id),
+            (Verdict::Reproduced, None) => {}
+            (_, None) => panic!("{}: {} without a finding", c.id, c.verdict.as_str()),
+            (_, Some(f)) => {
+                assert!(
+                    !f.paper.is_empty() && !f.difference.is_empty(),
+                    "{}: empty finding",
+                    c.id
+                );
+                assert!(
+                    !f.severity_reason.is_empty(),
+                    "{}: a severity without a reason",
+                    c.id
+                );
+            }
+        }
+        // Clause 4: "reproduced-rounding" needs printed digits to round (a count has none).
+        if c.verdict == Verdict::ReproducedRounding {
+            assert!(
+                c.published.is_some(),
+                "{}: rounding without a printed value",
+                c.id
+            );
+        }
+        // Clause 1: an illustration says what it substituted.
+        if c.verdict == Verdict::Illustrated {
+            let says = c.finding.as_ref().is_some_and(|f| {
+                ["our own", "of our own", "invented", "substitut", "ours"]
+                    .iter()
+                    .any(|w| f.difference.contains(w))
+            });
+            assert!(
+                says,
+                "{}: illustrated without naming the substitution",
+                c.id
+            );
+        }
+    }
 }
 
 #[test]

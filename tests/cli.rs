@@ -520,6 +520,7 @@ fn verify_writes_the_ledger_and_reports() {
             "reproduced-rounding",
             "metric",
             "typo",
+            "illustrated",
             "undetermined",
             "discrepancy",
             "failed"

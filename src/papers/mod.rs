@@ -14,6 +14,7 @@
 //! `algo::ph`, paper 001); the papers' short ids in claim ids (`phodcos.…`) are unchanged.
 
 pub mod bspline;
+pub mod coverage;
 pub mod gerbs;
 pub mod hermite;
 pub mod param;
@@ -21,6 +22,19 @@ pub mod ph;
 mod sample;
 
 pub use crate::ledger::{Claim, ClaimSpec, Ledger, Outcome, Paper, PaperOutput, Verdict};
+
+/// `outcome` with its finding (ledger policy, clause 7): what the paper prints, what is
+/// computed (the outcome's reproduced text), how they differ, the severity and why.
+pub fn found(
+    outcome: Outcome,
+    paper: &str,
+    difference: &str,
+    severity: crate::ledger::Severity,
+    reason: &str,
+) -> Outcome {
+    let computed = outcome.reproduced.clone();
+    outcome.finding((paper, &computed, difference), severity, reason)
+}
 
 /// The opening of a paper's Markdown report: title, id, claim prefix, how to regenerate it.
 pub fn report_heading(id: &str, short: &str, title: &str) -> String {

@@ -89,34 +89,59 @@ pub fn summary_section(claims: &[Claim]) -> String {
         assurance.join(", ")
     );
     let line = |c: &Claim| {
-        format!(
-            "- **{}** `{}` ({}): {}\n",
-            c.verdict.as_str(),
-            c.id,
-            c.location,
-            c.reproduced
+        number::shorten(
+            &match &c.finding {
+                Some(f) => format!(
+                    "- **{}** `{}` ({}): paper: {}; computed: {}; {}\n",
+                    c.verdict.as_str(),
+                    c.id,
+                    c.location,
+                    f.paper,
+                    f.computed,
+                    f.difference
+                ),
+                None => format!(
+                    "- **{}** `{}` ({}): {}\n",
+                    c.verdict.as_str(),
+                    c.id,
+                    c.location,
+                    c.reproduced
+                ),
+            },
+            10,
         )
     };
-    let material: Vec<&Claim> = claims.iter().filter(|c| c.verdict.is_material()).collect();
-    let mut other: Vec<&Claim> = claims
+    let severity = |c: &Claim| {
+        c.finding
+            .as_ref()
+            .map(|f| f.severity)
+            .unwrap_or(if c.verdict == Verdict::Failed {
+                crate::ledger::Severity::Material
+            } else {
+                crate::ledger::Severity::Minor
+            })
+    };
+    let findings: Vec<&Claim> = claims
         .iter()
-        .filter(|c| !c.verdict.is_material() && c.verdict != Verdict::Reproduced)
+        .filter(|c| c.verdict != Verdict::Reproduced)
         .collect();
-    other.sort_by_key(|c| std::cmp::Reverse(c.verdict));
+    let (mut material, mut minor): (Vec<&Claim>, Vec<&Claim>) = findings
+        .into_iter()
+        .partition(|c| severity(c) == crate::ledger::Severity::Material);
+    material.sort_by_key(|c| std::cmp::Reverse(c.verdict));
+    minor.sort_by_key(|c| std::cmp::Reverse(c.verdict));
     if material.is_empty() {
         out.push_str("Material findings: none.\n\n");
     } else {
-        out.push_str("Material findings (the paper's own method contradicts what it prints, or a property fails):\n\n");
-        let mut material = material;
-        material.sort_by_key(|c| std::cmp::Reverse(c.verdict));
+        out.push_str("Material findings (they change a conclusion the paper draws, or a formula a reader would implement):\n\n");
         out.extend(material.into_iter().map(line));
         out.push('\n');
     }
-    if !other.is_empty() {
+    if !minor.is_empty() {
         out.push_str(
-            "Other findings (rounding, metric, garbled print, data the paper does not give):\n\n",
+            "Minor findings (rounding, metric, garbled print, data the paper does not give):\n\n",
         );
-        out.extend(other.into_iter().map(line));
+        out.extend(minor.into_iter().map(line));
         out.push('\n');
     }
     out
@@ -143,54 +168,26 @@ pub fn table(headers: &[&str], rows: &[Vec<String>]) -> String {
     out
 }
 
-/// A paper's output: its `heading`, the summary of its claims, the report `body`, the "Not
-/// checked" section and the claims table, with its figures.
+/// A paper's output: its `heading`, the summary of its claims, the report `body`, the
+/// coverage section (what the paper states that no claim checks, from its coverage map) and
+/// the claims table, with its figures.
 pub fn paper_output(
     heading: String,
     body: String,
-    not_checked: &[(&str, &str)],
+    coverage: String,
     claims: Vec<Claim>,
     figures: Vec<(String, String)>,
 ) -> PaperOutput {
     let mut markdown = heading;
     markdown.push_str(&summary_section(&claims));
     markdown.push_str(&body);
-    markdown.push_str(&not_checked_section(not_checked));
+    markdown.push_str(&coverage);
     markdown.push_str(&claims_section(&claims));
     PaperOutput {
         claims,
         markdown,
         figures,
     }
-}
-
-/// The section of a paper report that lists what is *not* checked: each figure, table or
-/// section of the paper with a quantitative statement that no claim covers, and why.
-pub fn not_checked_section(items: &[(&str, &str)]) -> String {
-    let mut md = String::from(
-        "## Not checked
-
-",
-    );
-    if items.is_empty() {
-        md.push_str("Every figure, table and section with a quantitative statement is covered by a claim or drawn above.
-
-");
-        return md;
-    }
-    md.push_str(
-        "Parts of the paper with a quantitative statement that no claim covers, and why:
-
-",
-    );
-    for (place, reason) in items {
-        md.push_str(&format!(
-            "- **{place}**: {reason}
-"
-        ));
-    }
-    md.push('\n');
-    md
 }
 
 /// The ledger section of a paper report: every claim with its verdict and evidence.
@@ -202,10 +199,13 @@ pub fn claims_section(claims: &[Claim]) -> String {
                 format!("`{}`", c.id),
                 c.location.clone(),
                 c.published.clone().unwrap_or_else(|| "—".into()),
-                c.reproduced.clone(),
+                number::shorten(&c.reproduced, 10),
                 c.scalar.clone(),
                 c.assurance.as_str().to_string(),
-                format!("**{}**", c.verdict.as_str()),
+                match &c.finding {
+                    Some(f) => format!("**{}** ({})", c.verdict.as_str(), f.severity.as_str()),
+                    None => format!("**{}**", c.verdict.as_str()),
+                },
             ]
         })
         .collect();
@@ -224,12 +224,22 @@ pub fn claims_section(claims: &[Claim]) -> String {
     ));
     out.push_str("\n### Evidence\n\n");
     for c in claims {
-        out.push_str(&format!(
-            "- `{}` ({}) — {}: {}\n",
-            c.id,
-            c.verdict.as_str(),
-            c.statement,
-            c.evidence
+        let severity = c.finding.as_ref().map_or(String::new(), |f| {
+            format!(
+                " Severity: {} — {}.",
+                f.severity.as_str(),
+                f.severity_reason
+            )
+        });
+        out.push_str(&number::shorten(
+            &format!(
+                "- `{}` ({}) — {}: {}{severity}\n",
+                c.id,
+                c.verdict.as_str(),
+                c.statement,
+                c.evidence
+            ),
+            10,
         ));
     }
     out

@@ -55,9 +55,84 @@ pub fn bound_text(x: &rug::Float, digits: usize, round: rug::float::Round) -> St
     format!("{}{lead}.{rest}e{e}", if negative { "-" } else { "" })
 }
 
+/// `text` with every decimal number of more than `max` significant digits rounded to `max`
+/// ("2.6432542729944189731668883147678153029" → "2.643254273"): prose, summaries and
+/// evidence in reports show at most ten; `claims.json` keeps every certified digit. Numbers
+/// inside identifiers (`n8192`, `t1`) and fractions are left alone.
+pub fn shorten(text: &str, max: u32) -> String {
+    let chars: Vec<char> = text.chars().collect();
+    let mut out = String::with_capacity(text.len());
+    let mut i = 0;
+    while i < chars.len() {
+        let starts_number = chars[i].is_ascii_digit()
+            && (i == 0
+                || !(chars[i - 1].is_alphanumeric() || chars[i - 1] == '_' || chars[i - 1] == '.'));
+        if !starts_number {
+            out.push(chars[i]);
+            i += 1;
+            continue;
+        }
+        let start = i;
+        while i < chars.len() && (chars[i].is_ascii_digit() || chars[i] == '.') {
+            i += 1;
+        }
+        // An exponent: e, an optional sign, digits.
+        let mut end = i;
+        if end < chars.len() && (chars[end] == 'e' || chars[end] == 'E') {
+            let mut j = end + 1;
+            if j < chars.len() && (chars[j] == '-' || chars[j] == '+') {
+                j += 1;
+            }
+            if j < chars.len() && chars[j].is_ascii_digit() {
+                while j < chars.len() && chars[j].is_ascii_digit() {
+                    j += 1;
+                }
+                end = j;
+            }
+        }
+        let token: String = chars[start..end].iter().collect();
+        let mantissa = token.split(['e', 'E']).next().unwrap_or("");
+        let significant = mantissa
+            .chars()
+            .filter(char::is_ascii_digit)
+            .skip_while(|&c| c == '0')
+            .count();
+        let fraction_follows = end < chars.len() && chars[end] == '/';
+        let rounded =
+            (significant as u32 > max && !fraction_follows && mantissa.matches('.').count() <= 1)
+                .then(|| Float::parse(&token).ok())
+                .flatten()
+                .map(|p| {
+                    format_float_digits(
+                        &Float::with_val((significant as u32 * 4 + 16).max(64), p),
+                        max,
+                    )
+                });
+        out.push_str(rounded.as_deref().unwrap_or(&token));
+        i = end;
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn long_numbers_in_prose_are_rounded_and_identifiers_kept() {
+        assert_eq!(
+            shorten("B′ = 2.6432542729944189731668883147678153029 at n8192, 3/19 = 0.157894736842105263", 10),
+            "B′ = 2.643254273 at n8192, 3/19 = 0.1578947368"
+        );
+        assert_eq!(
+            shorten("error 1.897841500679692294263964960759e-7", 10),
+            "error 1.897841501e-7"
+        );
+        assert_eq!(
+            shorten("12345678901234567890/3 and 1.5", 10),
+            "12345678901234567890/3 and 1.5"
+        );
+    }
     use crate::scalar::certify::certify;
 
     #[test]

@@ -86,7 +86,7 @@ pub fn gram_all(k_max: usize) -> (Outcome, Vec<Vec<Q>>) {
 /// Random data meeting the Schoenberg–Whitney condition that makes B of full row rank (the
 /// hypothesis of Eq. 14): N distinct basis indices i₁ < … < i_N and tⱼ inside (iⱼ, iⱼ + 1),
 /// where basis function iⱼ is non-zero. Values are random rationals.
-fn random_data(rng: &mut SplitMix64, controls: usize, n: usize) -> (Vec<Q>, Vec<Q>) {
+pub(super) fn random_data(rng: &mut SplitMix64, controls: usize, n: usize) -> (Vec<Q>, Vec<Q>) {
     let mut indices: Vec<i64> = Vec::new();
     while indices.len() < n {
         let i = rng.int(0, controls as i64 - 1);
@@ -104,7 +104,7 @@ fn random_data(rng: &mut SplitMix64, controls: usize, n: usize) -> (Vec<Q>, Vec<
     )
 }
 
-fn quad(g: &crate::numeric::linalg::Matrix<Q>, x: &[Q]) -> Q {
+pub(super) fn quad(g: &crate::numeric::linalg::Matrix<Q>, x: &[Q]) -> Q {
     x.iter()
         .zip(g.mul_vec(x))
         .fold(q(0, 1), |acc, (a, b)| acc + a.clone() * b)

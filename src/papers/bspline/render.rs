@@ -1,6 +1,6 @@
 //! The Markdown report of paper 002, written from the checks' [`Results`](super::Results).
 
-use super::{figures, fitting, Results, ID, NOT_CHECKED, SHORT, TITLE};
+use super::{figures, fitting, Results, ID, SHORT, TITLE};
 use crate::ledger::{Claim, PaperOutput};
 use crate::report::{paper_output, plot, table};
 use crate::scalar::certify::format_float_digits;
@@ -40,7 +40,13 @@ pub fn report(r: &Results, claims: Vec<Claim>) -> PaperOutput {
         }
         None => md.push_str("The reconstruction failed.\n\n"),
     }
-    paper_output(heading, md, NOT_CHECKED, claims, figures)
+    paper_output(
+        heading,
+        md,
+        crate::papers::coverage::render::not_checked_section(SHORT),
+        claims,
+        figures,
+    )
 }
 
 fn table1(r: &Results) -> String {

@@ -65,10 +65,6 @@ pub fn paper() -> Paper {
     }
 }
 
-/// Parts of the paper with a quantitative statement that no claim covers, and why (shown in
-/// the report's "Not checked" section).
-const NOT_CHECKED: &[(&str, &str)] = &[];
-
 /// What the checks of paper 003 computed, for the report.
 struct Results {
     /// Smoothness at the knots, BFBS then ERBS.
@@ -105,6 +101,7 @@ pub fn verify() -> PaperOutput {
         erbs_points,
         legs,
     };
+    policy(&mut ledger);
     render::report(&results, ledger.finish())
 }
 
@@ -131,4 +128,64 @@ fn basis_checks(ledger: &mut Ledger) -> (Vec<basis::SmoothRow>, Vec<Vec<String>>
     let (centre, centre_rows) = basis::centre_reading();
     ledger.record("gerbs.eq4.centre", centre);
     (rows, centre_rows)
+}
+
+/// The verdict policy (`ledger` module doc) applied to the claims it changes or qualifies.
+fn policy(ledger: &mut Ledger) {
+    use crate::ledger::Severity::{Material, Minor};
+    ledger.amend(
+        "gerbs.fig2.parameters",
+        None,
+        ("α = 0, σ = 0.2 give a C^∞ ERBS", "with α = 0 the basis is only C⁰ at every knot, and σ = 0.2 leaves a derivative unbounded at each centre"),
+        Material,
+        "the paper's smoothness conclusion for its own parameters fails",
+    );
+    // Typo (clause 3): a lost pair of parentheses, one consistent reading (the cited ERBS).
+    ledger.amend(
+        "gerbs.eq4.centre",
+        Some(super::Verdict::Typo),
+        ("|t − (1−λ_k)t_k + λ_k t_{k+1}|", "the parentheses around (1−λ)t_k + λt_{k+1} are lost: as printed the centre leaves the interval"),
+        Material,
+        "Eq. (4) is the kernel a reader implements; as printed it gives an asymmetric basis",
+    );
+    ledger.amend(
+        "gerbs.alg2.tangent",
+        None,
+        (
+            "the arcs run with the tangent m_i",
+            "Eqs. (21)–(22) sweep every arc clockwise: left turns run backwards",
+        ),
+        Material,
+        "a reader implementing Eqs. (21)–(22) gets a path that reverses at every left turn",
+    );
+    ledger.amend(
+        "gerbs.sec4.order_smoothness",
+        None,
+        (
+            "a lower beta order gives a smoother path",
+            "the path is C^i: a higher order gives a smoother path",
+        ),
+        Material,
+        "the sentence reverses the design rule a reader would follow",
+    );
+    // Provenance (clause 1): the paper's waypoints are not printed; ours are used, and the
+    // ERBS parameters α = σ = 1 stand for the α = 0, σ = 0.2 of Figs. 2–3 (with which the
+    // basis is only C⁰, gerbs.fig2.parameters).
+    ledger.amend(
+        "gerbs.fig6.bfbs_vs_erbs",
+        Some(super::Verdict::Illustrated),
+        (
+            "BFBS and ERBS paths compared (Figs. 5–6)",
+            "on waypoints of our own and ERBS parameters α = σ = 1, not the paper's α = 0, σ = 0.2",
+        ),
+        Minor,
+        "the figures' data are not in the paper",
+    );
+    ledger.amend(
+        "gerbs.fig7.dubins",
+        Some(super::Verdict::Illustrated),
+        ("the ERBS path follows the Dubins path and keeps curvature continuous", "on waypoints of our own with R = 80 and α = σ = 1 (the paper gives neither): the ERBS curvature is continuous but peaks far above the Dubins 1/R (see the reproduced value)"),
+        Material,
+        "a vehicle whose turn radius is R could not fly the ERBS path, against the paper's conclusion",
+    );
 }

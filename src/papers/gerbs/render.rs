@@ -1,7 +1,7 @@
 //! The Markdown report of paper 003, written from the checks' [`Results`](super::Results).
 
 use super::setup::{self, ErbsSet};
-use super::{figures, Results, ID, NOT_CHECKED, SHORT, TITLE};
+use super::{figures, Results, ID, SHORT, TITLE};
 use crate::algo::gerbs::path::ArcConvention;
 use crate::ledger::{Claim, PaperOutput};
 use crate::report::{paper_output, table};
@@ -44,7 +44,13 @@ pub fn report(r: &Results, claims: Vec<Claim>) -> PaperOutput {
     for (n, caption) in CAPTIONS {
         md.push_str(&format!("![{caption}]({})\n\n", figure_name(n)));
     }
-    paper_output(heading, md, NOT_CHECKED, claims, figures(r))
+    paper_output(
+        heading,
+        md,
+        crate::papers::coverage::render::not_checked_section(SHORT),
+        claims,
+        figures(r),
+    )
 }
 
 /// The figures in file-name order.

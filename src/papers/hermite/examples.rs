@@ -70,6 +70,10 @@ pub struct TurnMetrics {
     pub max_radial_deviation: f64,
     /// max distance from the terminal point divided by the start's distance from it.
     pub farthest_from_end: f64,
+    /// How far the curve moves away from the terminal point along some stretch: the largest
+    /// rise of its distance to it above the smallest distance reached before, over the
+    /// start's distance.
+    pub recedes: f64,
     pub turning_degrees: f64,
     /// The signed (net) turning of the tangent, in degrees: 90 for a quarter turn that does not
     /// wind back.
@@ -243,6 +247,15 @@ fn turn_metrics_for(data: TurnData) -> Option<Vec<TurnMetrics>> {
                     .fold(0.0, f64::max),
                 farthest_from_end: pts.iter().map(|&p| dist(p, end)).fold(0.0, f64::max)
                     / start_dist,
+                recedes: pts
+                    .iter()
+                    .scan(f64::INFINITY, |closest, &p| {
+                        let d = dist(p, end);
+                        *closest = closest.min(d);
+                        Some(d - *closest)
+                    })
+                    .fold(0.0, f64::max)
+                    / start_dist,
                 turning_degrees,
                 net_turning_degrees,
                 max_speed: vel.iter().map(|&v| dist(v, (0.0, 0.0))).fold(0.0, f64::max),
@@ -318,18 +331,19 @@ pub fn turn_claims(m: &[TurnMetrics]) -> [Outcome; 3] {
             2,
             // The end tangents are fixed, so the net turning is 90° plus whole revolutions: a
             // loop is a net turning other than 90° (any threshold below 360° is the same test).
-            &|t| (t.net_turning_degrees - 90.0).abs() > 180.0,
+            &|t| (t.net_turning_degrees - 90.0).abs() > 180.0 && t.recedes > 0.01,
             &|t| {
                 format!(
-                    "net tangent turning {}° ({}), farthest {}× the start's distance from the terminal point",
+                    "net tangent turning {}° ({}); moves away from the terminal point by {}× the start's distance",
                     fmt4(t.net_turning_degrees),
                     if (t.net_turning_degrees - 90.0).abs() > 180.0 { "a loop" } else { "no loop" },
-                    fmt4(t.farthest_from_end)
+                    fmt4(t.recedes)
                 )
             },
-            "the curve makes a loop: its tangent turns through a full extra revolution (net turning ≠ 90°). The sentence is cut off in \
-             the text (\"loops away from\" ends the paragraph), so what it loops away from is not given; the earlier criterion, getting \
-             farther from the terminal point than the start, holds under neither reading (both values are shown)",
+            "the sentence, which the figure captions interrupt in the text, reads \"Finally, the dotted line shows the effect of an \
+             increased duration, the connecting curve loops away from the terminal point.\" Criterion, fixed before computing: the \
+             curve makes a loop (its tangent turns through a full extra revolution: net turning ≠ 90°) and, along it, moves away from \
+             the terminal point (its distance to it rises by more than 1 % of the start's distance above the closest it had come)",
         ),
     ]
 }

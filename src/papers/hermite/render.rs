@@ -1,8 +1,6 @@
 //! The Markdown report of paper 000, written from the checks' [`Results`](super::Results).
 
-use super::{
-    conditioning, examples, figures, Results, FIG2_FAST, FIG2_SLOW, ID, NOT_CHECKED, SHORT, TITLE,
-};
+use super::{conditioning, examples, figures, Results, FIG2_FAST, FIG2_SLOW, ID, SHORT, TITLE};
 use crate::ledger::{Claim, PaperOutput};
 use crate::report::{paper_output, plot, table};
 use crate::scalar::certify::format_float_digits;
@@ -37,7 +35,13 @@ pub fn report(r: &Results, claims: Vec<Claim>) -> PaperOutput {
         figure_name(5),
         plot::render_or_note(&figures::fig5_panels(&r.kappa), (1, 1), (900, 560)),
     ));
-    paper_output(heading, md, NOT_CHECKED, claims, figures)
+    paper_output(
+        heading,
+        md,
+        crate::papers::coverage::render::not_checked_section(SHORT),
+        claims,
+        figures,
+    )
 }
 
 fn fig2(r: &Results) -> String {

@@ -201,3 +201,72 @@ pub fn eq4_basis_and_endpoints() -> Outcome {
         ),
     )
 }
+
+/// The Fig. 4 caption (initial position, velocity *and acceleration*) against the text
+/// (initial position and velocity), with the terminal data of both: position and a landing
+/// velocity. Eqs. 16–18 impose m derivatives at *both* ends, 2(m + 1) conditions: the text's
+/// data (m = 1 at each end, 4 conditions) are such a problem; the caption's (3 conditions at
+/// the start, 2 at the end) are not for any m. One word of the caption is out of step with the
+/// text and the method: a typo by policy clause 3 (no number depends on it).
+pub fn fig4_caption_vs_text() -> Outcome {
+    let (caption_start, text_start, end) = (3usize, 2usize, 2usize);
+    let solvable = |start: usize| start == end && (start + end) % 2 == 0;
+    // The text's problem, solved exactly on one coordinate to show it is one of the method's.
+    let text_problem = HermiteData::new(vec![q(0), q(70)], vec![q(3000), q(60)], q(0), q(60))
+        .and_then(|d| d.solve())
+        .is_ok();
+    let verdict = if solvable(text_start) && !solvable(caption_start) && text_problem {
+        Verdict::Typo
+    } else {
+        Verdict::Undetermined
+    };
+    let computed = format!(
+        "text: {text_start} start + {end} end conditions, a problem of Eqs. 16–18 with m = 1 (solved: {text_problem}); caption: \
+         {caption_start} + {end}, which Eqs. 16–18 (m derivatives at both ends) cannot pose"
+    );
+    Outcome::new(
+        computed.clone(),
+        "rational",
+        verdict,
+        "the caption says the trajectory connects the vehicle's initial position, velocity and acceleration; the text says \"the \
+         initial condition is set as the vehicle's current position and velocity\" and fixes the terminal position and velocity. \
+         Eqs. 16–17 take the same number m of derivatives at each end, so only the text's reading is a problem of the paper's \
+         method; the paper gives no numbers for Fig. 4, so nothing depends on the word",
+    )
+    .finding(
+        ("initial position, velocity, and acceleration (caption) | position and velocity (text)", &computed, "the caption names one derivative more than the text and the method use"),
+        crate::ledger::Severity::Minor,
+        "Fig. 4 carries no numbers, and the method as stated fixes the reading",
+    )
+}
+
+/// Sec. 2.2 indexes "a vector of length n" by j = 0…n−1 while its elements are x_0…x_n and
+/// (A1) reaches Δⁿx_0: a vector x_0…x_n has n + 1 entries, and its forward differences
+/// Δʲx_0, j = 0…n, fill the (n+1)×(n+1) matrix (A1). The words are off by one against the
+/// paper's own symbols (policy clause 3: an index offset, one consistent reading).
+pub fn sec22_indexing() -> Outcome {
+    let mut consistent = true;
+    for n in 1..=12 {
+        let a1 = crate::numeric::poly::differences::forward_difference_matrix::<Q>(n, &());
+        // x = (0, …, 0, 1) has Δⁿx_0 = 1: the last row of (A1) reaches Δⁿ.
+        consistent &= a1.rows() == n + 1 && a1[(n, n)] == q(1);
+    }
+    let verdict = if consistent {
+        Verdict::Typo
+    } else {
+        Verdict::Discrepancy
+    };
+    let computed = "for n = 1…12, (A1) is (n+1)×(n+1) on x_0…x_n and its last row is Δⁿx_0: the vector has length n + 1, j = 0…n";
+    Outcome::new(
+        computed,
+        "rational",
+        verdict,
+        "the forward-difference matrix of (A1) built for n = 1…12 and applied to the unit vector e_n; the text says the vector has \
+         length n and j runs over 0…n−1 while it writes the elements x_0…x_n and (A1) up to Δⁿx_0",
+    )
+    .finding(
+        ("a vector of length n, j = 0…n−1, with elements x_0…x_n", computed, "length and range are one short of the paper's own symbols"),
+        crate::ledger::Severity::Minor,
+        "the equations and (A1) use n + 1 entries consistently; only the prose is off by one",
+    )
+}

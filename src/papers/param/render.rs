@@ -6,7 +6,7 @@ use super::one_d::{printed_units, TableOne};
 use super::overshoot::{axis_range, OvershootRow, FIG9_AXIS};
 use super::plane::PlaneSection;
 use super::robot::{two_digit_units, RobotSection, NAMES};
-use super::{figures, num, Results, ID, NOT_CHECKED, SHORT, TITLE};
+use super::{figures, num, Results, ID, SHORT, TITLE};
 use crate::ledger::{Claim, PaperOutput};
 use crate::report::number::{marked, sig as fmt};
 use crate::report::{paper_output, table};
@@ -40,7 +40,13 @@ pub fn report(r: &Results, claims: Vec<Claim>) -> PaperOutput {
     }
     md.push_str(&robot(&r.robot));
     md.push_str(&fig9(&r.fig9, &r.robot, &mut figures));
-    paper_output(heading, md, NOT_CHECKED, claims, figures)
+    paper_output(
+        heading,
+        md,
+        crate::papers::coverage::render::not_checked_section(SHORT),
+        claims,
+        figures,
+    )
 }
 
 fn h1(rows: &[H1Row]) -> String {

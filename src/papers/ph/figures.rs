@@ -314,18 +314,7 @@ pub fn nrho_figure1(n: &nrho::Nrho) -> String {
 pub fn nrho_figure4(n: &nrho::Nrho) -> String {
     let pw = &n.rotating;
     let pts = converted_points(pw, 8);
-    let h = pw.step();
-    let (mut sigma, mut omega) = (Vec::new(), Vec::new());
-    for (k, seg) in pw.segments.iter().enumerate() {
-        for i in 0..8 {
-            let xi = i as f64 / 8.0;
-            let jet = seg.preimage_jet(&xi, 1);
-            let (_, w) = frame_and_omega(&jet[0], &jet[1]);
-            let t = pw.knot(k) + h * xi;
-            sigma.push((t, jet[0].norm2() / h));
-            omega.push((t, vec3::norm(&w) / h));
-        }
-    }
+    let (sigma, omega) = nrho::speed_and_turn_rate(pw, 8);
     let mut panels: Vec<Panel> = [
         (0usize, 2usize, "B: front (x–z)"),
         (1, 2, "C: side (y–z)"),

@@ -1,12 +1,15 @@
 //! Paper 001: Arrizabalaga, Vega, Šír, Manchester, Ryll, *PHODCOS: Pythagorean
 //! Hodograph-based Differentiable Coordinate System*.
 //!
-//! `coefficients`: the printed coefficient tables against their exact derivation;
-//! `table1`: Theorem 1 and Table 1 to 8192 segments, certified; `theorems`: Algorithm 1,
-//! Theorems 2–4, the roll correction, Eqs. (13), (18), (22b); `nrho`: Sec. 6A. The checks
+//! `preliminaries`: Sec. 4 (quaternions, Lemmas 1–2, Eqs. 8–12, 27); `coefficients`: the
+//! printed coefficient tables against their exact derivation; `table1`: Theorem 1 and Table 1
+//! to 8192 segments, certified, and `proven` the same rows enclosed; `theorem1`: Eq. (20) and
+//! Theorem 1 for every τ; `algorithm2`: the printed loop; `theorems`: Algorithm 1, Theorems
+//! 2–4, the roll correction, Eqs. (13), (18), (22b); `nrho`: Sec. 6A and Fig. 4. The checks
 //! return their results (`Results`); `render` writes the report from them and `figures`
 //! draws the figures.
 
+mod algorithm2;
 mod coefficients;
 mod figures;
 mod nrho;
@@ -14,9 +17,11 @@ mod preliminaries;
 mod proven;
 mod render;
 mod table1;
+mod theorem1;
 mod theorems;
 
-use super::{ClaimSpec, Ledger, Outcome, Paper, PaperOutput};
+use super::{found, ClaimSpec, Ledger, Outcome, Paper, PaperOutput, Verdict};
+use crate::ledger::Severity::{Material, Minor};
 
 /// The paper's id (file name in `../shared/papers`).
 pub const ID: &str = "001_ddf1926ff43f1bf6";
@@ -67,6 +72,12 @@ pub const SPECS: &[ClaimSpec] = &[
         "Sec. 4B, Eqs. (10a)–(10d); Sec. 5C",
         "the control points p_i = p_0 + Σ_(j<i) h_j/(2n+1) give the curve whose hodograph is A i A*; p_e − p_b = Σ h_i/17",
         None
+    ),
+    spec!(
+        "phodcos.eq10c.second_equality",
+        "Sec. 4B, Eq. (10c)",
+        "p(ξ) = Σ p_i B_i^(2n+1)(ξ) = p₀ + Σ h_i B_i^(2n)(ξ)/(2n + 1)",
+        Some("p₀ + Σ h_i B_i^{2n}(ξ)/(2n+1)")
     ),
     spec!(
         "phodcos.eq11_12.frame",
@@ -332,6 +343,48 @@ pub const SPECS: &[ClaimSpec] = &[
         "the perilune passes occur about four times per lunar orbit (9:2 resonance)",
         None
     ),
+    spec!(
+        "phodcos.sec4a.quaternion_rules",
+        "Sec. 4A, unnumbered displays",
+        "i² = j² = k² = ijk = −1, ij = −ji = k, jk = −kj = i, ki = −ik = j, and |A| = √(AA*) = √(A*A) = √(a² + a_x² + a_y² + a_z²)",
+        None
+    ),
+    spec!(
+        "phodcos.eq27.bernstein_preimage",
+        "App. C, Eq. (27)",
+        "A(ξ) = ξ⁸A₈ + 8(1 − ξ)ξ⁷A₇ + 28(1 − ξ)²ξ⁶A₆ + … + 8(1 − ξ)⁷ξA₁ + (1 − ξ)⁸A₀, the Bernstein form (10a) of degree 8",
+        Some("1, 8, 28, 56, 70, 56, 28, 8, 1")
+    ),
+    spec!(
+        "phodcos.eq13b.formula",
+        "Sec. 4B, Eq. (13b)",
+        "the curvature is κ = ‖p′ × p″‖/‖p′‖³",
+        None
+    ),
+    spec!(
+        "phodcos.eq20.local_data",
+        "Sec. 5D, Eqs. (19)–(20)",
+        "for a step h the segment k, γ(Ξ) = γ_k(hξ) with ξ ∈ [0, 1], expands as Eq. (20), and the data are interpolated at γ_k(0) = γ(0) and γ_k(1) = γ(h)",
+        Some("γ(Ξ) = γ_k(hξ)")
+    ),
+    spec!(
+        "phodcos.thm1.all_tau",
+        "Theorem 1",
+        "E converges to 0 for h → 0 only if τ₁ = τ₂ = τ₃ = τ₅ = τ₆ = τ₇ = 0: each of τ₂, τ₃, τ₅, τ₆, τ₇ alone prevents convergence",
+        None
+    ),
+    spec!(
+        "phodcos.alg2.loop",
+        "Algorithm 2, Sec. 5F",
+        "from n_s = 2, adding one segment while the conversion error is at least ε, returns a path within ε of the curve (Eq. 2) with the minimum number of segments",
+        None
+    ),
+    spec!(
+        "phodcos.fig4.four_transitions",
+        "Sec. 6A, Fig. 4 D/E",
+        "four highly nonlinear transitions per orbital period, clearly reflected in the parametric speed σ and the angular velocity ω",
+        Some("four")
+    ),
 ];
 
 /// The paper: its specs and its checks.
@@ -345,15 +398,6 @@ pub fn paper() -> Paper {
     }
 }
 
-/// Parts of the paper with a quantitative statement that no claim covers, and why (shown in
-/// the report's "Not checked" section).
-const NOT_CHECKED: &[(&str, &str)] = &[
-    (
-        "Sec. 6B, Fig. 5 (ascent of a lunar lander)",
-        "a trajectory optimization (a prediction-based controller over the gimbaled-rocket model of Eq. 24 in PHODCOS coordinates) whose solver, horizon, weights, bounds and five start positions the paper does not give; its results are shown only as a picture, with no number to compare",
-    ),
-];
-
 /// What the checks of paper 001 computed, for the report.
 struct Results {
     /// (equation, outcome) of the coefficient tables, in report order.
@@ -364,8 +408,10 @@ struct Results {
     /// Eq. (13) differences per segment count, and the length of the test curve.
     geometry: (Vec<theorems::GeometryRow>, f64),
     nrho: nrho::Nrho,
-    /// The three NRHO findings, one line each.
-    nrho_findings: [String; 3],
+    /// The four NRHO findings, one line each.
+    nrho_findings: [String; 4],
+    /// Algorithm 2's printed loop for each tolerance.
+    loop_runs: Vec<algorithm2::LoopRun>,
 }
 
 /// Run every check of paper 001 and build its report.
@@ -377,11 +423,92 @@ pub fn verify() -> PaperOutput {
 
 /// Every check, in report order, each outcome recorded in `ledger`.
 fn checks(ledger: &mut Ledger) -> Results {
-    ledger.record("phodcos.remark1.star_vector_part", preliminaries::remark1());
+    let coefficients = preliminary_checks(ledger);
+    ledger.record("phodcos.eq27.bernstein_preimage", preliminaries::eq27());
+    ledger.record(
+        "phodcos.eq18.a4",
+        found(
+            theorems::eq18(),
+            "A_4 from Lemma 2 applied to c_p",
+            "Lemma 2 must be applied to (490/21879)(p_e − p_b) − c_p (Eq. 17a); as printed the end point is missed",
+            Material,
+            "Eq. (18) is the step of Algorithm 1 a reader implements",
+        ),
+    );
+    let (interp, ph) = theorems::algorithm1();
+    ledger.record("phodcos.alg1.interpolates", interp);
+    ledger.record("phodcos.alg1.ph_condition", ph);
+
+    let table1 = table1::section(ledger);
+    ledger.record(
+        "phodcos.eq20.local_data",
+        found(
+            theorem1::eq20_local_data(),
+            "γ(Ξ) = γ_k(hξ)",
+            "the sides are swapped: Eq. (20) and γ_k(1) = γ(h) need γ_k(ξ) = γ(hξ)",
+            Minor,
+            "Eq. (20), the formula the proof uses, is right",
+        ),
+    );
+    ledger.record("phodcos.thm1.all_tau", theorem1::all_tau());
+    let loop_runs = algorithm2::runs();
+    ledger.record("phodcos.alg2.loop", algorithm2::outcome(&loop_runs));
+
+    let (jumps, geo, length) = theorem_checks(ledger);
+    let (nrho, nrho_findings) = nrho_checks(ledger);
+    Results {
+        coefficients,
+        table1,
+        jumps,
+        geometry: (geo, length),
+        nrho,
+        nrho_findings,
+        loop_runs,
+    }
+}
+
+/// Sec. 4: the quaternion preliminaries, Eqs. (8)–(12), and the coefficient equations
+/// (15)–(17), (26), (28); returns the coefficient outcomes for the report's table.
+fn preliminary_checks(ledger: &mut Ledger) -> Vec<(&'static str, Outcome)> {
+    ledger.record(
+        "phodcos.remark1.star_vector_part",
+        found(
+            preliminaries::remark1(),
+            "A ⋆ B is the vector part of A i B",
+            "the conjugate of Eq. (4) is lost: vec(A i B*) is A ⋆ B",
+            Minor,
+            "Eq. (4), which a reader implements, is right",
+        ),
+    );
+    ledger.record(
+        "phodcos.sec4a.quaternion_rules",
+        preliminaries::quaternion_rules(),
+    );
     ledger.record("phodcos.lemma1.linear", preliminaries::lemma1());
     ledger.record("phodcos.lemma2.quadratic", preliminaries::lemma2());
-    ledger.record("phodcos.eq8.components", preliminaries::eq8());
+    // Typo (policy clause 3): one sign, with one consistent reading (Eq. 9's product);
+    // material, since a reader implementing Eq. (8) loses the PH property.
+    ledger.record(
+        "phodcos.eq8.components",
+        found(
+            preliminaries::eq8().with_verdict(Verdict::Typo),
+            "y′ = 2uq − 2vp",
+            "one sign: y′ = 2uq + 2vp is the j component of A i A*",
+            Material,
+            "a reader implementing Eq. (8) as printed gets curves that are not PH",
+        ),
+    );
     ledger.record("phodcos.eq10.control_points", preliminaries::eq10());
+    ledger.record(
+        "phodcos.eq10c.second_equality",
+        found(
+            preliminaries::eq10c_second_equality(),
+            "p(ξ) = p₀ + Σ h_i B_i^{2n}(ξ)/(2n+1)",
+            "the right side is of degree 2n and gives p₁ at ξ = 0; integrating gives p₀ + Σ h_i Σ_(j>i) B_j^(2n+1)(ξ)/(2n+1)",
+            Material,
+            "a reader evaluating the path by the printed form gets a wrong curve; Eq. (10d), which the algorithm uses, is right",
+        ),
+    );
     ledger.record("phodcos.eq11_12.frame", preliminaries::eq11_12());
     ledger.record(
         "phodcos.sec5c.theta4_redundant",
@@ -402,26 +529,34 @@ fn checks(ledger: &mut Ledger) -> Results {
         ("Eq. (17c)", "phodcos.eq17c.c_p", cp),
         ("Eq. (26)", "phodcos.eq26.c_p_products", cp26),
     ];
-    let coefficients = coefficients
+    coefficients
         .into_iter()
         .map(|(name, id, outcome)| {
             ledger.record(id, outcome.clone());
             (name, outcome)
         })
-        .collect();
-    ledger.record("phodcos.eq18.a4", theorems::eq18());
-    let (interp, ph) = theorems::algorithm1();
-    ledger.record("phodcos.alg1.interpolates", interp);
-    ledger.record("phodcos.alg1.ph_condition", ph);
+        .collect()
+}
 
-    let table1 = table1::section(ledger);
-
+/// Theorems 2–4, the continuity of Sec. 5E, Eq. (22b) and the geometry of Eq. (13).
+fn theorem_checks(ledger: &mut Ledger) -> (Vec<theorems::Jumps>, Vec<theorems::GeometryRow>, f64) {
     let [planar, rigid, reflect, reverse, printed] = theorems::theorems();
     ledger.record("phodcos.thm2.planarity", planar);
     ledger.record("phodcos.thm3.invariance", rigid);
     ledger.record("phodcos.thm3.reflection", reflect);
     ledger.record("phodcos.thm4.reversion", reverse);
-    ledger.record("phodcos.thm4.reversed_data_as_printed", printed);
+    // Typo (policy clause 3): the signs of the odd derivatives are lost, with one consistent
+    // reading (phodcos.thm4.reversion holds with them).
+    ledger.record(
+        "phodcos.thm4.reversed_data_as_printed",
+        found(
+            printed.with_verdict(Verdict::Typo),
+            "v̄_b = v_e, ā_b = a_e, … (no signs)",
+            "the odd derivatives of reversed data change sign; with the signs Theorem 4 holds",
+            Material,
+            "a reader reversing data by the printed rule gets a different curve",
+        ),
+    );
 
     let jumps: Vec<theorems::Jumps> = [2usize, 8]
         .iter()
@@ -431,28 +566,59 @@ fn checks(ledger: &mut Ledger) -> Results {
         "phodcos.sec5e.continuity",
         theorems::continuity_outcome(&jumps),
     );
-    ledger.record("phodcos.eq22b.left_product", theorems::left_product());
+    ledger.record(
+        "phodcos.eq22b.left_product",
+        found(
+            theorems::left_product(),
+            "A_i ← A_α A_i",
+            "the roll correction must multiply on the right, A_i A_α; on the left it moves the curve",
+            Material,
+            "Eq. (22b) is the roll correction a reader implements",
+        ),
+    );
 
-    ledger.record("phodcos.eq13c.torsion", theorems::torsion_formula());
+    ledger.record(
+        "phodcos.eq13c.torsion",
+        found(
+            theorems::torsion_formula(),
+            "τ = [p′×p″]·p‴ / ‖p‴‖²",
+            "the denominator must be ‖p′×p″‖²: the printed formula is wrong for every curve",
+            Material,
+            "the torsion of Eq. (13c) is a formula a reader would implement",
+        ),
+    );
+    ledger.record("phodcos.eq13b.formula", theorems::curvature_formula());
     let (geo, length, geo_out) = theorems::geometry();
     ledger.record("phodcos.eq13.geometry", geo_out);
 
+    (jumps, geo, length)
+}
+
+/// Sec. 6A: the NRHO conversion, its continuity, the resonance and Fig. 4's transitions.
+fn nrho_checks(ledger: &mut Ledger) -> (nrho::Nrho, [String; 4]) {
     let nrho = nrho::compute();
     let [conv, cont, res] = nrho::outcomes(&nrho);
+    let transitions = nrho::transitions(&nrho);
     let nrho_findings = [
         conv.reproduced.clone(),
         cont.reproduced.clone(),
         res.reproduced.clone(),
+        transitions.reproduced.clone(),
     ];
     ledger.record("phodcos.sec6a.nrho_conversion", conv);
     ledger.record("phodcos.sec6a.nrho_continuity", cont);
     ledger.record("phodcos.sec6a.resonance", res);
-    Results {
-        coefficients,
-        table1,
-        jumps,
-        geometry: (geo, length),
-        nrho,
-        nrho_findings,
-    }
+    let transitions = if transitions.verdict == Verdict::Reproduced {
+        transitions
+    } else {
+        found(
+            transitions,
+            "four transitions per orbital period in σ and ω",
+            "holds per lunar orbit, not within one NRHO period",
+            Minor,
+            "the 9:2 resonance the paragraph states is unaffected; only the span of \"orbital period\" is unclear",
+        )
+    };
+    ledger.record("phodcos.fig4.four_transitions", transitions);
+    (nrho, nrho_findings)
 }

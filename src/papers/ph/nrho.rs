@@ -182,6 +182,85 @@ pub fn compute() -> Nrho {
     }
 }
 
+/// σ(t) = |A|²/h and ‖ω(t)‖ (Eqs. 8d, 12) of a conversion, sampled at `per_segment` equally
+/// spaced ξ of every segment, in the curve's parameter t.
+pub type Sampled = Vec<(f64, f64)>;
+
+pub fn speed_and_turn_rate(pw: &PiecewisePh<f64>, per_segment: usize) -> (Sampled, Sampled) {
+    let h = pw.step();
+    let (mut sigma, mut omega) = (Vec::new(), Vec::new());
+    for (k, seg) in pw.segments.iter().enumerate() {
+        for i in 0..per_segment {
+            let xi = i as f64 / per_segment as f64;
+            let jet = seg.preimage_jet(&xi, 1);
+            let (_, w) = crate::algo::ph::frame_and_omega(&jet[0], &jet[1]);
+            let t = pw.knot(k) + h * xi;
+            sigma.push((t, jet[0].norm2() / h));
+            omega.push((t, crate::numeric::quat::vec3::norm(&w) / h));
+        }
+    }
+    (sigma, omega)
+}
+
+/// Local maxima above half the largest value of a periodic sampled function: the measure of
+/// a "transition" (and of a perilune pass in the speed), fixed before counting.
+fn peaks(values: &[f64]) -> usize {
+    let top = values.iter().cloned().fold(0.0, f64::max);
+    let m = values.len();
+    (0..m)
+        .filter(|&i| {
+            values[i] > 0.5 * top
+                && values[i] >= values[(i + m - 1) % m]
+                && values[i] > values[(i + 1) % m]
+        })
+        .count()
+}
+
+/// Sidereal and synodic months in days.
+const MONTHS: (f64, f64) = (27.321662, 29.530589);
+
+/// Fig. 4 D/E, "four highly nonlinear transitions per orbital period … clearly reflected in
+/// the parametric speed σ and the angular velocity ω": transitions counted in σ and ‖ω‖ of
+/// the rotating-frame conversion over the data's one NRHO period, under both readings of
+/// "orbital period" (the lunar orbit of the sentence before; the NRHO's own period).
+pub fn transitions(n: &Nrho) -> Outcome {
+    let (sigma, omega) = speed_and_turn_rate(&n.rotating, 8);
+    let values = |s: &Sampled| s.iter().map(|p| p.1).collect::<Vec<f64>>();
+    let (in_sigma, in_omega) = (peaks(&values(&sigma)), peaks(&values(&omega)));
+    let days = n.period * TU_S / 86400.0;
+    let per_month = |count: usize| {
+        (
+            count as f64 * MONTHS.0 / days,
+            count as f64 * MONTHS.1 / days,
+        )
+    };
+    let (s_sid, s_syn) = per_month(in_sigma);
+    let (w_sid, w_syn) = per_month(in_omega);
+    let lunar = [s_sid, s_syn, w_sid, w_syn]
+        .iter()
+        .all(|x| x.round() == 4.0);
+    let own = in_sigma == 4 && in_omega == 4;
+    let verdict = match (lunar, own) {
+        (true, true) => Verdict::Reproduced,
+        (false, false) => Verdict::Discrepancy,
+        _ => Verdict::Undetermined,
+    };
+    Outcome::new(
+        format!(
+            "per NRHO period ({days:.3} d): {in_sigma} transition(s) in σ, {in_omega} in ‖ω‖; per lunar orbit: {s_sid:.2} \
+             (sidereal), {s_syn:.2} (synodic) in σ and {w_sid:.2}, {w_syn:.2} in ‖ω‖"
+        ),
+        "f64",
+        verdict,
+        "the rotating-frame conversion (256 segments) sampled at 8 points per segment over the data's one period; a transition \
+         is a local maximum above half the largest value (declared before counting, the measure of phodcos.sec6a.resonance). \
+         Reading 1, \"orbital period\" as the lunar orbit of the sentence before (\"approximately four times for each lunar \
+         orbit\"): the count per NRHO period times the NRHO periods per sidereal and per synodic month must round to 4. \
+         Reading 2, the NRHO's own orbital period (the span panels D and E plot, if they plot the data's one period): the \
+         count itself must be 4. Policy clause 5: exactly one reading holding is undetermined",
+    )
+}
+
 pub fn outcomes(n: &Nrho) -> [Outcome; 3] {
     let er = n.error_rotating.certified();
     let ei = n.error_inertial.certified();
@@ -209,9 +288,8 @@ pub fn outcomes(n: &Nrho) -> [Outcome; 3] {
         "the rotating-frame conversion with the roll correction at 256 bits; criterion: every jump below 1e-40 (P3: p, R, ω at least C²)",
     );
     let days = n.period * TU_S / 86400.0;
-    let (synodic, sidereal) = (29.530589, 27.321662);
-    // Perilune passes per revolution: local maxima of the parametric speed above half its
-    // largest value, over one period (periodic wrap-around).
+    let (sidereal, synodic) = MONTHS;
+    // Perilune passes per revolution: peaks of the spline's own speed over one period.
     let sigma: Vec<f64> = (0..SEGMENTS * 8)
         .map(|i| {
             let t = n.period * i as f64 / (SEGMENTS * 8) as f64;
@@ -219,15 +297,7 @@ pub fn outcomes(n: &Nrho) -> [Outcome; 3] {
             (d[1][0].powi(2) + d[1][1].powi(2) + d[1][2].powi(2)).sqrt()
         })
         .collect();
-    let top = sigma.iter().cloned().fold(0.0, f64::max);
-    let m = sigma.len();
-    let passes = (0..m)
-        .filter(|&i| {
-            sigma[i] > 0.5 * top
-                && sigma[i] >= sigma[(i + m - 1) % m]
-                && sigma[i] > sigma[(i + 1) % m]
-        })
-        .count();
+    let passes = peaks(&sigma);
     let per_synodic = passes as f64 * synodic / days;
     let per_sidereal = passes as f64 * sidereal / days;
     let res = Outcome::new(

@@ -336,3 +336,159 @@ pub fn theta4_redundant() -> Outcome {
          shifted by −θ₄, the τ unchanged). Criterion 1e-70",
     )
 }
+
+/// Sec. 4A: the product rules of the basis (i² = j² = k² = ijk = −1, ij = −ji = k,
+/// jk = −kj = i, ki = −ik = j) and |A| = √(AA*) = √(A*A) = √(a² + a_x² + a_y² + a_z²), with
+/// the multiplicativity |AB| = |A||B| the frame of Eq. (11) relies on. Exact: the basis
+/// products on `Quat<Q>`, and the squared identities on random rational quaternions (no
+/// square root is needed: AA* and A*A are compared with the sum of squares).
+pub fn quaternion_rules() -> Outcome {
+    let unit = |k: usize| {
+        let mut c = [q(0), q(0), q(0), q(0)];
+        c[k] = q(1);
+        Quat::from_components(c)
+    };
+    let (one, i, j, k) = (unit(0), unit(1), unit(2), unit(3));
+    let minus = |x: &Quat<Q>| x.scale(&q(-1));
+    let rules = [
+        ("i²", i.mul(&i), minus(&one)),
+        ("j²", j.mul(&j), minus(&one)),
+        ("k²", k.mul(&k), minus(&one)),
+        ("ijk", i.mul(&j).mul(&k), minus(&one)),
+        ("ij", i.mul(&j), k.clone()),
+        ("ji", j.mul(&i), minus(&k)),
+        ("jk", j.mul(&k), i.clone()),
+        ("kj", k.mul(&j), minus(&i)),
+        ("ki", k.mul(&i), j.clone()),
+        ("ik", i.mul(&k), minus(&j)),
+    ];
+    let failing: Vec<&str> = rules
+        .iter()
+        .filter(|(_, got, want)| got != want)
+        .map(|(name, _, _)| *name)
+        .collect();
+    let mut rng = SplitMix64::new(0x5e4a);
+    let trials = 50;
+    let mut identities = 0;
+    for _ in 0..trials {
+        let (a, b) = (quaternion(&mut rng), quaternion(&mut rng));
+        let squares = a.components().iter().fold(q(0), |s, c| s + c.clone() * c);
+        let real = |x: Quat<Q>| x.x.is_zero() && x.y.is_zero() && x.z.is_zero() && x.w == squares;
+        let product = a.mul(&b).norm2() == a.norm2() * b.norm2();
+        identities += usize::from(real(a.mul(&a.conj())) && real(a.conj().mul(&a)) && product);
+    }
+    Outcome::new(
+        format!(
+            "all ten basis products as printed ({}); AA* = A*A = a² + a_x² + a_y² + a_z² and |AB|² = |A|²|B|² in {identities} of \
+             {trials} random pairs",
+            if failing.is_empty() { "none fails".to_string() } else { format!("failing: {}", failing.join(", ")) }
+        ),
+        "rational",
+        Verdict::holds(failing.is_empty() && identities == trials),
+        "the basis products computed by the quaternion product the library uses everywhere (numeric::quat), compared with the \
+         printed table entry by entry; the absolute value compared squared, exactly, on 50 random rational pairs",
+    )
+}
+
+/// Eq. (27) as printed: the preimage of degree 8 in Bernstein form, term by term — the
+/// coefficient, the powers of (1 − ξ) and ξ, and the control point each multiplies.
+const EQ27_PRINTED: [(i64, u32, u32, usize); 9] = [
+    (1, 0, 8, 8),
+    (8, 1, 7, 7),
+    (28, 2, 6, 6),
+    (56, 3, 5, 5),
+    (70, 4, 4, 4),
+    (56, 5, 3, 3),
+    (28, 6, 2, 2),
+    (8, 7, 1, 1),
+    (1, 8, 0, 0),
+];
+
+/// Eq. (27): the printed expansion is Σ C(8, i)(1 − ξ)^(8−i) ξ^i A_i, the Bernstein form
+/// (10a) with n = 8 that the library evaluates by de Casteljau. Checked term by term against
+/// C(8, i) and by value, exactly, at nine rational ξ for random rational control points.
+pub fn eq27() -> Outcome {
+    let terms_ok = EQ27_PRINTED.iter().all(|&(c, one_minus, power, index)| {
+        c == crate::numeric::poly::binom(8, index)
+            && power as usize == index
+            && one_minus as usize == 8 - index
+    });
+    let mut rng = SplitMix64::new(0x2727);
+    let preimage: Vec<Quat<Q>> = (0..9).map(|_| quaternion(&mut rng)).collect();
+    let curve = PhCurve::new(preimage.clone(), [q(0), q(0), q(0)]);
+    let mut agree = 0;
+    let points = 9;
+    for s in 0..points {
+        let xi = Q::new((s as i64 - 1).into(), 6.into());
+        let mut printed = Quat::zero(&());
+        for &(c, one_minus, power, index) in &EQ27_PRINTED {
+            let weight = q(c) * pow(&(q(1) - xi.clone()), one_minus) * pow(&xi, power);
+            printed.add_scaled(&weight, &preimage[index]);
+        }
+        agree += usize::from(curve.preimage_jet(&xi, 0)[0] == printed);
+    }
+    Outcome::new(
+        format!(
+            "coefficients 1, 8, 28, 56, 70, 56, 28, 8, 1 are C(8, i) with powers (1 − ξ)^(8−i) ξ^i: {terms_ok}; equal to de \
+             Casteljau's value at {agree} of {points} points"
+        ),
+        "rational",
+        Verdict::holds(terms_ok && agree == points),
+        "the nine printed terms compared with the Bernstein basis of degree 8, and the printed sum evaluated exactly at \
+         ξ = −1/6, 0, 1/6, …, 7/6 (outside [0, 1] too: a polynomial identity) against the library's evaluation of (10a)",
+    )
+}
+
+fn pow(x: &Q, n: u32) -> Q {
+    (0..n).fold(q(1), |p, _| p * x)
+}
+
+/// B^n_i(ξ) exactly.
+fn bernstein(n: usize, i: usize, xi: &Q) -> Q {
+    q(crate::numeric::poly::binom(n, i))
+        * pow(&(q(1) - xi.clone()), (n - i) as u32)
+        * pow(xi, i as u32)
+}
+
+/// Eq. (10c)'s second equality, p(ξ) = p₀ + Σ h_i B_i^{2n}(ξ)/(2n + 1), against the curve of
+/// its first (the control points of Eq. 10d): exactly, for random rational preimages of
+/// degree n = 8, at ξ = 0, 1/2, 1. The right side is a polynomial of degree 2n, not 2n + 1,
+/// and at ξ = 0 it gives p₀ + h₀/(2n + 1) = p₁.
+pub fn eq10c_second_equality() -> Outcome {
+    let mut rng = SplitMix64::new(0x10c);
+    let trials = 10;
+    let (mut equal, mut gives_p1) = (0, 0);
+    for _ in 0..trials {
+        let preimage: Vec<Quat<Q>> = (0..9).map(|_| quaternion(&mut rng)).collect();
+        let curve = PhCurve::new(preimage, [q(1), q(2), q(3)]);
+        let (h, points) = (curve.hodograph(), curve.control_points());
+        let degree = h.len() - 1;
+        let printed = |xi: &Q| {
+            let mut p = points[0].clone();
+            for (i, hi) in h.iter().enumerate() {
+                vec3::axpy(
+                    &mut p,
+                    &(bernstein(degree, i, xi) / q(degree as i64 + 1)),
+                    hi,
+                );
+            }
+            p
+        };
+        let samples = [q(0), Q::new(1.into(), 2.into()), q(1)];
+        equal += usize::from(samples.iter().all(|xi| printed(xi) == curve.point(xi)));
+        gives_p1 += usize::from(printed(&q(0)) == points[1]);
+    }
+    Outcome::new(
+        format!(
+            "the printed right side equals p(ξ) at ξ = 0, 1/2, 1 in {equal} of {trials} random curves; at ξ = 0 it gives p₁ in \
+             {gives_p1} of {trials}"
+        ),
+        "rational",
+        if equal == trials { Verdict::Reproduced } else { Verdict::Discrepancy },
+        "random rational preimages of degree 8 (hodograph of degree 16, curve of degree 17), p₀ = (1, 2, 3); the curve evaluated \
+         by de Casteljau on the control points of Eq. (10d) (checked by phodcos.eq10.control_points) against the second equality \
+         of Eq. (10c) as printed. Integrating the hodograph gives p₀ + Σ_i h_i Σ_(j>i) B_j^(2n+1)(ξ)/(2n + 1): the printed form \
+         drops the integration (a sum of B^(2n), not of B^(2n+1) tails), and with an integral sign restored the factor \
+         1/(2n + 1) would be one too many (p₀ + ∫₀^ξ h is the curve): more than one lost symbol (policy clause 3)",
+    )
+}

@@ -28,24 +28,26 @@ pub struct ProvenRow {
 
 /// Proven enclosures for 2ⁿ segments, n in `levels`.
 pub fn proven_rows(levels: &[u32]) -> Vec<ProvenRow> {
+    levels
+        .iter()
+        .map(|&n| ProvenRow {
+            segments: 1usize << n,
+            enclosure: proven_at(1usize << n, TARGET),
+        })
+        .collect()
+}
+
+/// The proven enclosure of the test curve's conversion error with `segments` segments,
+/// searched to relative width `target` (`None` if the conversion in balls failed).
+pub fn proven_at(segments: usize, target: f64) -> Option<ErrorEnclosure> {
     let c = curve().compile::<Ball>(&BITS);
     let (a, b) = (Ball::from_i64(0, &BITS), Ball::from_i64(1, &BITS));
     let free = FreeParameters::zero(4, &BITS);
-    levels
-        .iter()
-        .map(|&n| {
-            let segments = 1usize << n;
-            // Without the roll correction: it turns each preimage by Q(α), which leaves the
-            // curve p, and so E, unchanged.
-            let enclosure = convert(&c, &a, &b, segments, 4, &free, false)
-                .ok()
-                .map(|pw| proven_error(&c, &pw, TARGET, MAX_BOXES));
-            ProvenRow {
-                segments,
-                enclosure,
-            }
-        })
-        .collect()
+    // Without the roll correction: it turns each preimage by Q(α), which leaves the curve p,
+    // and so E, unchanged.
+    convert(&c, &a, &b, segments, 4, &free, false)
+        .ok()
+        .map(|pw| proven_error(&c, &pw, target, MAX_BOXES))
 }
 
 /// [lower, upper] printed outward with 8 significant digits.

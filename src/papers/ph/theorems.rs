@@ -570,3 +570,54 @@ fn romberg_length<C: Curve<Float>>(c: &C, bits: u32) -> Float {
     }
     r[levels][levels].clone()
 }
+
+/// Eq. (13b): κ = ‖p′ × p″‖/‖p′‖³, against the definition κ = ‖dT/ds‖ = ‖dT/dξ‖/‖p′‖ with
+/// the unit tangent T = p′/‖p′‖ differentiated by Taylor AD (independent of the formula), on
+/// the twisted cubic (ξ, ξ², ξ³) at ξ = 0, 1/2, 1, 2 and the helix (cos ξ, sin ξ, ξ), whose
+/// curvature is 1/2 everywhere.
+pub fn curvature_formula() -> Outcome {
+    let f = |v: i64| Float::with_val(BITS, v);
+    let cubic = |x: &Taylor<Float>| [x.clone(), x.clone() * x, x.clone() * x * x];
+    let helix = |x: &Taylor<Float>| {
+        let (s, c) = x.sin_cos_series();
+        [c, s, x.clone()]
+    };
+    let mut worst = Float::with_val(BITS, 0);
+    let mut helix_off = Float::with_val(BITS, 0);
+    let points = [(0, 1), (1, 2), (1, 1), (2, 1)];
+    for (curve_index, path) in [
+        &cubic as &dyn Fn(&Taylor<Float>) -> [Taylor<Float>; 3],
+        &helix,
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        for &(num, den) in &points {
+            let x = Taylor::variable(f(num) / den, 3);
+            let p = path(&x);
+            let d1 = vec3::map(&p, |c| c.derivative_series());
+            let d2 = vec3::map(&d1, |c| c.derivative_series());
+            let speed = vec3::norm(&d1);
+            let cubed = Float::with_val(BITS, speed.value().square_ref()) * speed.value();
+            let formula = vec3::norm(&vec3::cross(&d1, &d2)).value().clone() / cubed;
+            let tangent = vec3::scale(&d1, &(Taylor::from_i64(1, &BITS) / &speed));
+            let dt = vec3::map(&tangent, |c| c.derivative_series());
+            let definition = vec3::norm(&dt).value().clone() / speed.value();
+            worst = worst.max(&(formula.clone() - &definition).abs());
+            if curve_index == 1 {
+                helix_off = helix_off.max(&(formula - Float::with_val(BITS, 0.5)).abs());
+            }
+        }
+    }
+    let (worst, helix_off) = (worst.to_f64(), helix_off.to_f64());
+    Outcome::new(
+        format!(
+            "largest difference from ‖dT/dξ‖/‖p′‖: {worst:.1e} (twisted cubic and helix, four points each); helix: within {helix_off:.1e} of 1/2"
+        ),
+        format!("mpfr:{BITS}"),
+        Verdict::holds(worst < 1e-60 && helix_off < 1e-60),
+        "Eq. (13b) evaluated from the jets of (ξ, ξ², ξ³) at ξ = 0, 1/2, 1, 2 and of (cos ξ, sin ξ, ξ) at the same points, \
+         against the curvature's definition, the rate of turn of the unit tangent per unit length, by Taylor AD; criterion: \
+         agreement to 1e-60 at 256 bits",
+    )
+}
