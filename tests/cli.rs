@@ -495,6 +495,15 @@ fn budgets_and_non_finite_results_are_refused_naming_the_field() {
 }
 
 #[test]
+fn verify_of_some_papers_never_replaces_the_whole_ledger() {
+    // Without --out, one paper's claims would overwrite reports/claims.json (141 → 25 claims).
+    let run = trajverify(&["verify", "--paper", "hermite"], "");
+    assert_eq!(run.code, 2, "{}", run.stdout);
+    assert!(run.stderr.contains("needs --out"), "{}", run.stderr);
+    assert_eq!(run.stderr.lines().count(), 1, "{}", run.stderr);
+}
+
+#[test]
 fn verify_writes_the_ledger_and_reports() {
     let dir = std::env::temp_dir().join(format!("trajverify-cli-{}", std::process::id()));
     let run = trajverify(

@@ -44,9 +44,10 @@ pub enum Command {
         /// Only these papers (id such as 000_d51e5cedfa8471cf, or short name such as hermite).
         #[arg(long = "paper", value_name = "ID")]
         papers: Vec<String>,
-        /// Where to write the ledger, reports and figures.
-        #[arg(long, value_name = "DIR", default_value = "reports")]
-        out: PathBuf,
+        /// Where to write the ledger, reports and figures [default: reports, for all papers;
+        /// required with --paper, so that one paper's ledger never replaces the whole one].
+        #[arg(long, value_name = "DIR")]
+        out: Option<PathBuf>,
     },
     /// Write a report (Markdown, SVG, JSON) of a method applied to your own input.
     Report {
@@ -301,7 +302,19 @@ impl Failure {
 pub fn execute(cli: Cli) -> Result<String, Failure> {
     match cli.command {
         Command::List { papers } => list(&select(&papers)?),
-        Command::Verify { papers, out } => verify(&select(&papers)?, &out),
+        Command::Verify { papers, out } => {
+            let selected = select(&papers)?;
+            let out = match (out, papers.is_empty()) {
+                (Some(dir), _) => dir,
+                (None, true) => PathBuf::from("reports"),
+                (None, false) => {
+                    return Err(Failure::Usage(
+                        "option --paper: needs --out <dir>; writing some papers into reports/ would replace the ledger of all five (reports/claims.json)".into(),
+                    ))
+                }
+            };
+            verify(&selected, &out)
+        }
         Command::Report {
             kind:
                 ReportKind::Convergence {

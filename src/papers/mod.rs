@@ -38,7 +38,7 @@ pub fn found(
 
 /// The opening of a paper's Markdown report: title, id, claim prefix, how to regenerate it.
 pub fn report_heading(id: &str, short: &str, title: &str) -> String {
-    format!("# {title}\n\nPaper id `{id}`; claim ids start with `{short}.`. Regenerate with `trajverify verify --paper {short}`.\n\n")
+    format!("# {title}\n\nPaper id `{id}`; claim ids start with `{short}.`. Regenerate with `trajverify verify` (every paper, into `reports/`), or this paper alone with `trajverify verify --paper {short} --out <dir>`.\n\n")
 }
 
 /// The file name of figure `n` of paper `id`, written next to its report.

@@ -168,3 +168,76 @@ pub fn order_and_support() -> Outcome {
         ),
     )
 }
+
+/// Sec. II-A: "all derivatives of c_k(t)B_k(t) is zero when t ∈ {t_{k−1}, t_{k+1}}". Two
+/// readings: for the ERBS the section defines, every derivative of B_k vanishes at the ends of
+/// its support (gerbs.erbs.smoothness), so any smooth local curve qualifies; for the BFBS
+/// with i_k = 2 that the paper's path uses, the derivatives of B_k vanish there only up to
+/// order 2, so (c_k B_k)‴ = c_k·B_k‴ ≠ 0 wherever c_k ≠ 0. Checked exactly at every knot of
+/// Fig. 1's vector, from inside each support.
+pub fn derivatives_vanish() -> Outcome {
+    let knots = fig1_knots::<Q>(&());
+    let Ok(bfbs) = Bfbs::new(vec![2; knots.basis_count()]) else {
+        return Outcome::new("", "rational", Verdict::Failed, "BFBS exponents");
+    };
+    let zero = q(0, 1);
+    let mut vanishing_orders = Vec::new();
+    let slice = knots.as_slice().to_vec();
+    for (idx, t) in slice.iter().enumerate() {
+        for side in [Side::Left, Side::Right] {
+            let Some(d) = basis_derivatives(&knots, &bfbs, t, 4, side) else {
+                continue;
+            };
+            // A basis function whose support ends (or starts) here: value 0, not the zero series.
+            for b in d
+                .iter()
+                .filter(|b| b[0] == zero && b.iter().any(|x| *x != zero))
+            {
+                let flat = b.iter().take_while(|x| **x == zero).count() - 1;
+                vanishing_orders.push((idx + 1, flat));
+            }
+        }
+    }
+    let orders: std::collections::BTreeSet<usize> = vanishing_orders.iter().map(|v| v.1).collect();
+    let only_to_two = !vanishing_orders.is_empty() && orders.iter().all(|&o| o == 2);
+    Outcome::new(
+        format!(
+            "BFBS, i_k = 2: at the ends of each support (t_k ± 1, {} one-sided checks on Fig. 1's knots) B_k, B_k′, B_k″ vanish and B_k‴ does not; for the ERBS every derivative vanishes",
+            vanishing_orders.len()
+        ),
+        "rational",
+        if only_to_two { Verdict::Undetermined } else { Verdict::Failed },
+        "one-sided Taylor series of every BFBS basis function at each knot of Fig. 1's vector, exactly, from the side inside its \
+         support; the highest order through which all derivatives are zero is 2 at every end (= i_k). Leibniz: the derivatives of \
+         c_k B_k through order 2 vanish for any smooth c_k, the third equals c_k·B_k‴, non-zero for a line or an arc that does not \
+         pass through the origin. The sentence stands in the ERBS section, where it holds for every order (gerbs.erbs.smoothness); \
+         for the BFBS path of Secs. III–IV it holds through order 2, which is what curvature continuity needs. Two readings, one \
+         holds: clause 5",
+    )
+}
+
+/// Sec. III: "a strictly increasing knot vector {t_j} with interior multiplicity of zero,
+/// where t_1 = t_2 = 0 … t_{n+1} = t_{n+2} = 1": the knot vector of the printed rule, exactly.
+pub fn knot_vector_words() -> Outcome {
+    let mut strictly = true;
+    let mut interior_simple = true;
+    for n in 2..=12usize {
+        let Ok(k) = Knots::<Q>::uniform(n, &()) else {
+            return Outcome::new("", "rational", Verdict::Failed, "knot vector");
+        };
+        let t = k.as_slice();
+        strictly &= t.windows(2).all(|w| w[0] < w[1]);
+        interior_simple &= t[1..t.len() - 1].windows(2).all(|w| w[0] < w[1]);
+    }
+    Outcome::new(
+        format!(
+            "n = 2…12: strictly increasing: {strictly}; t_2 < t_3 < … < t_(n+1) (no repeated interior knot): {interior_simple}; t_1 = t_2 and t_(n+1) = t_(n+2) as printed"
+        ),
+        "rational",
+        if !strictly && interior_simple { Verdict::Typo } else { Verdict::Failed },
+        "the knot vectors of the printed rule (gerbs.sec3.knots), exactly: the end knots repeat, as the same sentence says, so the \
+         vector is increasing, not strictly; the interior knots are simple ('interior multiplicity of zero' read as no repeated \
+         interior knot). One word ('strictly') against the sentence's own knots, one consistent reading, no number depends on it: \
+         clause 3",
+    )
+}

@@ -46,6 +46,7 @@ pub const SPECS: &[ClaimSpec] = &[
     ClaimSpec { id: "marin.fig3_5.second_derivatives", location: "Sec. 3, Figs. 3–5", statement: "the minimizing parametrizations substantially reduce the second derivatives of both components compared with chord length", published: None },
     ClaimSpec { id: "marin.sec2.third_derivative_jumps", location: "Sec. 2, after Corollary 3, bullet (ii)", statement: "for higher-dimensional data the minimizing parametrization reduces the jump in the third derivative at breakpoints not coinciding with relative extreme values", published: None },
     ClaimSpec { id: "marin.sec2.overshoots_reduced", location: "Sec. 2, after Corollary 3, bullet (i)", statement: "for higher-dimensional data the minimizing parametrization reduces position overshoots (compared with chord length)", published: None },
+    ClaimSpec { id: "marin.eq34.quadrature_factor", location: "Sec. 3, before Eq. 34", statement: "replacing M by its diagonal has the same effect as rectangular quadrature with centred differences for the second derivatives", published: None },
     ClaimSpec { id: "marin.table2.overshoots_no_problem", location: "Sec. 3, on Table II", statement: "position overshoots are not a problem in any of the parametrizations of this data", published: None },
     ClaimSpec { id: "marin.fig2.plane_curves", location: "Sec. 3, Fig. 2", statement: "the resulting plane curves are nearly identical for the three parametrizations", published: None },
     ClaimSpec { id: "marin.fig45.validity_of_34", location: "Sec. 3, Figs. 4–5", statement: "the validity of using the approximate objective (34) in place of the exact one (31) is illustrated by comparing Figs. 4 and 5", published: None },
@@ -109,6 +110,10 @@ pub fn verify() -> PaperOutput {
         overshoot::reduced(&plane.parametrizations, &robot.approx),
     );
     ledger.record(
+        "marin.eq34.quadrature_factor",
+        objective_claims::quadrature_factor(),
+    );
+    ledger.record(
         "marin.table2.overshoots_no_problem",
         overshoot::table2_no_problem(&plane.parametrizations),
     );
@@ -165,6 +170,7 @@ const AMENDMENTS: &[Amendment] = &[
     ("marin.fig9.oscillations", Some(Verdict::Undetermined), "overshoots are eliminated with t^AP", "read as spurious oscillations, they are; read as excursions beyond the data, they are not (marin.fig9.overshoots)", FIG9),
     ("marin.sec2.overshoots_reduced", None, "the minimizing parametrization reduces overshoots", "one reading holds on the robot data, not on Table II (see the evidence)", "a remark, not a result of the paper"),
     ("marin.fig45.validity_of_34", None, "Figs. 4 and 5 illustrate that (34) may replace (31)", "some panels differ by more than the declared 1 % of their range (see the reproduced value)", "an illustration; the paper compares the two objectives by Table III (marin.table3.*)"),
+    ("marin.eq34.quadrature_factor", None, "M̂ has the same effect as rectangular quadrature with centred differences", "Eq. 34's G is 3/2 times that objective for every h: the same minimizer, not the same value", "a constant factor changes no parametrization the paper computes"),
     // Provenance (clause 1): the corner data are ours.
     ("marin.fig6.corner", Some(Verdict::Illustrated), "oscillations near a widely spaced corner (Fig. 6)", "on corner data of our own: the paper prints none", "an illustration on invented data"),
 ];

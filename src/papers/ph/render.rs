@@ -99,13 +99,7 @@ fn table1_section(t: &table1::Section) -> String {
                     6,
                 ),
                 fmt(t.f64_column[i].1, 5),
-                t.baseline[i]
-                    .error
-                    .certified()
-                    .text
-                    .chars()
-                    .take(12)
-                    .collect(),
+                crate::report::number::certified(&t.baseline[i].error.certified(), 6),
                 marked(
                     printed.2,
                     row.ratio
@@ -140,7 +134,7 @@ fn table1_section(t: &table1::Section) -> String {
         ],
         &body,
     ));
-    md.push_str("\nThe authors' grid maximum lies below the true maximum, as any maximum over samples does, but it does not explain the printed values: no row that differs from the true maximum agrees with the grid maximum. The C² baseline converges with the same order 6, with a larger error.\n\n");
+    md.push_str("\nThe authors' grid maximum lies below the true maximum, as any maximum over samples does, but it does not explain the printed values: no row that differs from the true maximum agrees with the grid maximum. A row marked `metric` is explained by another member of the family of sampling grids declared before computing (policy clause 6; the ledger's evidence names the member and the family's size). The C² baseline converges with the same order 6, with a larger error.\n\n");
     md
 }
 
