@@ -26,6 +26,7 @@ fn spec<T: Real>(ctx: &T::Ctx) -> PathSpec<T> {
         line_length: None,
         convention: ArcConvention::TurnDirection,
         turns: None,
+        end_curves: Default::default(),
     }
 }
 

@@ -331,6 +331,17 @@ impl Outcome {
     }
 }
 
+/// One row of a paper's policy table: the claim, the verdict the policy gives it (`None`:
+/// the check's own), what the paper prints, how the computation differs, the severity and why.
+pub type Amendment = (
+    &'static str,
+    Option<Verdict>,
+    &'static str,
+    &'static str,
+    Severity,
+    &'static str,
+);
+
 /// Collects the outcomes of one paper's checks against its spec table.
 pub struct Ledger {
     paper: &'static str,
@@ -383,6 +394,21 @@ impl Ledger {
             finding: outcome.finding,
             evidence,
         });
+    }
+
+    /// Apply a paper's policy table: each claim whose check did not reproduce (or whose
+    /// verdict the table changes) gets its finding; a reproduced claim is left alone, so a
+    /// finding never outlives the discrepancy it describes (clause 7).
+    pub fn apply(&mut self, amendments: &[Amendment]) {
+        for &(id, verdict, paper, difference, severity, reason) in amendments {
+            if verdict.is_some()
+                || self
+                    .verdict_of(id)
+                    .is_some_and(|v| v != Verdict::Reproduced)
+            {
+                self.amend(id, verdict, (paper, difference), severity, reason);
+            }
+        }
     }
 
     /// The verdict recorded for `id` so far, if any.

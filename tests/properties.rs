@@ -374,6 +374,7 @@ mod gerbs {
             line_length: None,
             convention: ArcConvention::TurnDirection,
             turns: None,
+            end_curves: Default::default(),
         }
     }
 

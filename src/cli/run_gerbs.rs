@@ -641,6 +641,7 @@ impl RealJob for PathJob {
             convention: self.convention,
             // Decided on the exact waypoints, not on their rounding.
             turns: Some(exact_turn_signs(&self.waypoints).map_err(gerbs_error)?),
+            end_curves: Default::default(),
         };
         match &self.params {
             BasisParams::Bfbs(i) => {

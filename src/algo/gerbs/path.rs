@@ -177,6 +177,18 @@ pub enum ArcConvention {
     TurnDirection,
 }
 
+/// The local curves at the first and last waypoints. Sec. III, Eqs. (23)–(24), Fig. 4 and
+/// Sec. IV put straight lines there; Algorithm 2 as printed (steps 4–5) builds an arc at every
+/// waypoint, with Algorithm 1's end signs s_1 = −s_2 and s_n = −s_{n−1}.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum EndCurves {
+    /// Straight lines of length l (the text and the figures; the default).
+    #[default]
+    Lines,
+    /// Arcs like the interior ones (Algorithm 2 as printed).
+    Arcs,
+}
+
 /// One local curve, parametrized by u ∈ [0, 1].
 #[derive(Clone, Debug, PartialEq)]
 pub enum LocalCurve<T> {
@@ -249,9 +261,11 @@ pub struct PathSpec<T> {
     /// The turn signs of Algorithm 1, decided by the caller on exact waypoints
     /// ([`exact_turn_signs`]); `None`: decided exactly on `waypoints` as given.
     pub turns: Option<Vec<i32>>,
+    /// Lines or arcs at the first and last waypoints ([`EndCurves`]).
+    pub end_curves: EndCurves,
 }
 
-/// The local curves c_1 … c_n of Algorithm 2 (lines at the ends, arcs inside), with the
+/// The local curves c_1 … c_n of Algorithm 2 (lines or arcs at the ends, [`EndCurves`]; arcs inside), with the
 /// tangents of Algorithm 1 (or the given ones).
 pub fn local_curves<T: Real>(
     spec: &PathSpec<T>,
@@ -295,12 +309,13 @@ pub fn local_curves<T: Real>(
     for (i, w) in spec.waypoints.iter().enumerate() {
         let m = &tan.m[i];
         let step = [length.clone() * &m[0], length.clone() * &m[1]];
-        if i == 0 {
+        let line_here = spec.end_curves == EndCurves::Lines;
+        if i == 0 && line_here {
             curves.push(LocalCurve::Line {
                 origin: w.clone(),
                 step,
             });
-        } else if i == n - 1 {
+        } else if i == n - 1 && line_here {
             curves.push(LocalCurve::Line {
                 origin: [w[0].clone() - &step[0], w[1].clone() - &step[1]],
                 step,

@@ -11,9 +11,11 @@ mod render;
 mod setup;
 mod statements;
 
-use super::{ClaimSpec, Ledger, Paper, PaperOutput};
+use super::{ClaimSpec, Ledger, Paper, PaperOutput, Verdict};
 use crate::algo::gerbs::dubins::DubinsPath;
 use crate::algo::gerbs::path::PathPoint;
+use crate::ledger::Amendment;
+use crate::ledger::Severity::{Material, Minor};
 
 /// The paper's id (file name in `../shared/papers`).
 pub const ID: &str = "003_96e0e92e8c1da747";
@@ -43,6 +45,12 @@ pub const SPECS: &[ClaimSpec] = &[
     spec!("gerbs.bfbs.smoothness", "Sec. II-B", "the BFBS is C^m with m = min i_k"),
     spec!("gerbs.erbs.smoothness", "Sec. II-A", "for α > 0 the ERBS basis is C^∞ (all one-sided derivatives vanish at the knots)"),
     spec!("gerbs.sec2.derivatives_vanish", "Sec. II-A", "all derivatives of c_k(t)B_k(t) are zero at t_{k−1} and t_{k+1} for lines, arcs and Bézier curves"),
+    spec!("gerbs.sec2.cdr_rule", "Sec. II-A; Sec. IV", "a B-spline of degree d is C^{d−r} at a knot of multiplicity r; an order-two B-spline would not give a smooth path"),
+    spec!("gerbs.sec3.lines_c0", "Sec. I", "a path of straight lines between the waypoints is only C⁰"),
+    spec!("gerbs.eq1_25.index_range", "Eqs. (1), (25); Algorithm 2", "p(t) = Σ_{i=1}^n c_i(t)B_i(t) over the knots t_1…t_{n+2}"),
+    spec!("gerbs.alg1.returns_s", "Algorithm 1, step 14; Algorithm 2, step 1", "Algorithm 1 returns m; Algorithm 2 takes (W, m, s)"),
+    spec!("gerbs.alg2.end_curves", "Algorithm 2, steps 4–5; Sec. III, Eqs. (23)–(24); Fig. 4", "the first and last local curves are straight lines, the others arcs (Algorithm 2 builds the local curves)"),
+    spec!("gerbs.fig3.curvature_reduced", "Sec. IV, on Figs. 2–3", "the intrinsic parameters are chosen to give a smooth transition at the peaks, which reduces the required curvature"),
     spec!("gerbs.fig2.parameters", "Fig. 2 caption, Sec. IV", "the ERBS of Fig. 2 (α = 0, β = 3, γ = 1, σ = 0.2, λ = 0.5) generates a C^∞ curve"),
     spec!("gerbs.eq4.centre", "Eq. (4)", "the centre term of Ψ_k, |t − (1−λ_k)t_k + λ_k t_{k+1}|, as in the cited ERBS definition"),
     spec!("gerbs.sec3.knots", "Sec. III, before Algorithm 1", "t_1 = t_2 = 0, t_j = t_{j−1} + 1/(n−1), t_{n+1} = t_{n+2} = 1: a consistent knot vector (Fig. 1's for n = 5)"),
@@ -89,6 +97,12 @@ pub fn verify() -> PaperOutput {
     let (interp, tangent, curvature, algorithm2) = paths::algorithm2();
     ledger.record("gerbs.alg2.interpolates", interp);
     ledger.record("gerbs.alg2.tangent", tangent);
+    ledger.record("gerbs.alg1.returns_s", paths::algorithm1_returns_s());
+    ledger.record("gerbs.alg2.end_curves", paths::end_curves());
+    ledger.record(
+        "gerbs.fig3.curvature_reduced",
+        paths::curvature_by_parameters(),
+    );
     ledger.record("gerbs.alg2.curvature_continuous", curvature);
     let (cmp, bfbs_points, erbs_points) = paths::bfbs_vs_erbs();
     ledger.record("gerbs.fig6.bfbs_vs_erbs", cmp);
@@ -126,6 +140,9 @@ fn basis_checks(ledger: &mut Ledger) -> (Vec<basis::SmoothRow>, Vec<Vec<String>>
         "gerbs.sec2.derivatives_vanish",
         statements::derivatives_vanish(),
     );
+    ledger.record("gerbs.sec2.cdr_rule", statements::continuity_rule());
+    ledger.record("gerbs.sec3.lines_c0", statements::polyline_c0());
+    ledger.record("gerbs.eq1_25.index_range", statements::index_range());
     let (partition, at_knot) = basis::partition();
     ledger.record("gerbs.partition_of_unity", partition);
     ledger.record("gerbs.interpolates_at_knot", at_knot);
@@ -140,76 +157,27 @@ fn basis_checks(ledger: &mut Ledger) -> (Vec<basis::SmoothRow>, Vec<Vec<String>>
     (rows, centre_rows)
 }
 
+/// The findings of paper 003: (claim, new verdict if the policy changes it, what the paper
+/// prints, how the computation differs, severity, why). Typos follow clause 3, the
+/// illustrations clause 1 (the paper's waypoints are not printed; ours are used, and the ERBS
+/// parameters α = σ = 1 stand for the α = 0, σ = 0.2 of Figs. 2–3, with which the basis is only
+/// C⁰, gerbs.fig2.parameters).
+const AMENDMENTS: &[Amendment] = &[
+    ("gerbs.fig2.parameters", None, "α = 0, σ = 0.2 give a C^∞ ERBS", "with α = 0 the basis is only C⁰ at every knot, and σ = 0.2 leaves a derivative unbounded at each centre", Material, "the paper's smoothness conclusion for its own parameters fails"),
+    ("gerbs.eq4.centre", Some(Verdict::Typo), "|t − (1−λ_k)t_k + λ_k t_{k+1}|", "the parentheses around (1−λ)t_k + λt_{k+1} are lost: as printed the centre leaves the interval", Material, "Eq. (4) is the kernel a reader implements; as printed it gives an asymmetric basis"),
+    ("gerbs.alg2.tangent", None, "the arcs run with the tangent m_i", "Eqs. (21)–(22) sweep every arc clockwise: left turns run backwards", Material, "a reader implementing Eqs. (21)–(22) gets a path that reverses at every left turn"),
+    ("gerbs.sec4.order_smoothness", None, "a lower beta order gives a smoother path", "the path is C^i: a higher order gives a smoother path", Material, "the sentence reverses the design rule a reader would follow"),
+    ("gerbs.sec2.derivatives_vanish", None, "all derivatives of c_k B_k vanish at t_{k±1}", "true for the ERBS; for the BFBS path (i_k = 2) only through order 2, the third is c_k·B_k‴ ≠ 0", Minor, "curvature continuity needs order 2 only, which holds"),
+    ("gerbs.sec3.knot_vector_words", None, "a strictly increasing knot vector … where t_1 = t_2 = 0", "the end knots repeat, so the vector is increasing, not strictly; the interior knots are simple", Minor, "the printed knots themselves are consistent (gerbs.sec3.knots)"),
+    ("gerbs.eq1_25.index_range", None, "p(t) = Σ_{i=1}^n c_i(t)B_i(t), knots t_1…t_{n+2}", "the knots define B_2…B_{n+1}, Algorithm 2's range; B_1 would need t_0", Minor, "Algorithm 2, which a reader implements, uses the consistent range"),
+    ("gerbs.alg1.returns_s", None, "Algorithm 1 returns m", "it must return (m, s): Algorithm 2 takes s, and without it every right turn bends the wrong way", Minor, "s is computed in Algorithm 1 and its use in Algorithm 2 is printed"),
+    ("gerbs.alg2.end_curves", None, "straight lines at the first and last waypoints (text, Fig. 4)", "Algorithm 2 as printed builds arcs there, and the path then misses the first and last waypoints by 2R sin(θ_o/2)", Material, "a reader implementing Algorithm 2 as printed gets a path that does not start and end at its waypoints"),
+    ("gerbs.fig3.curvature_reduced", None, "parameters chosen to reduce the required curvature (Figs. 2–3)", "on waypoints of our own: the paper gives no waypoints and no reference curvature", Minor, "an illustration; the paper draws no quantitative conclusion from it"),
+    ("gerbs.fig6.bfbs_vs_erbs", Some(Verdict::Illustrated), "BFBS and ERBS paths compared (Figs. 5–6)", "on waypoints of our own and ERBS parameters α = σ = 1, not the paper's α = 0, σ = 0.2", Minor, "the figures' data are not in the paper"),
+    ("gerbs.fig7.dubins", Some(Verdict::Illustrated), "the ERBS path follows the Dubins path and keeps curvature continuous", "on waypoints of our own with R = 80 and α = σ = 1 (the paper gives neither): the ERBS curvature is continuous but peaks far above the Dubins 1/R (see the reproduced value)", Material, "a vehicle whose turn radius is R could not fly the ERBS path, against the paper's conclusion"),
+];
+
 /// The verdict policy (`ledger` module doc) applied to the claims it changes or qualifies.
 fn policy(ledger: &mut Ledger) {
-    use crate::ledger::Severity::{Material, Minor};
-    ledger.amend(
-        "gerbs.fig2.parameters",
-        None,
-        ("α = 0, σ = 0.2 give a C^∞ ERBS", "with α = 0 the basis is only C⁰ at every knot, and σ = 0.2 leaves a derivative unbounded at each centre"),
-        Material,
-        "the paper's smoothness conclusion for its own parameters fails",
-    );
-    // Typo (clause 3): a lost pair of parentheses, one consistent reading (the cited ERBS).
-    ledger.amend(
-        "gerbs.eq4.centre",
-        Some(super::Verdict::Typo),
-        ("|t − (1−λ_k)t_k + λ_k t_{k+1}|", "the parentheses around (1−λ)t_k + λt_{k+1} are lost: as printed the centre leaves the interval"),
-        Material,
-        "Eq. (4) is the kernel a reader implements; as printed it gives an asymmetric basis",
-    );
-    ledger.amend(
-        "gerbs.alg2.tangent",
-        None,
-        (
-            "the arcs run with the tangent m_i",
-            "Eqs. (21)–(22) sweep every arc clockwise: left turns run backwards",
-        ),
-        Material,
-        "a reader implementing Eqs. (21)–(22) gets a path that reverses at every left turn",
-    );
-    ledger.amend(
-        "gerbs.sec4.order_smoothness",
-        None,
-        (
-            "a lower beta order gives a smoother path",
-            "the path is C^i: a higher order gives a smoother path",
-        ),
-        Material,
-        "the sentence reverses the design rule a reader would follow",
-    );
-    ledger.amend(
-        "gerbs.sec2.derivatives_vanish",
-        None,
-        ("all derivatives of c_k B_k vanish at t_{k±1}", "true for the ERBS; for the BFBS path (i_k = 2) only through order 2, the third is c_k·B_k‴ ≠ 0"),
-        Minor,
-        "curvature continuity needs order 2 only, which holds",
-    );
-    ledger.amend(
-        "gerbs.sec3.knot_vector_words",
-        None,
-        ("a strictly increasing knot vector … where t_1 = t_2 = 0", "the end knots repeat, so the vector is increasing, not strictly; the interior knots are simple"),
-        Minor,
-        "the printed knots themselves are consistent (gerbs.sec3.knots)",
-    );
-    // Provenance (clause 1): the paper's waypoints are not printed; ours are used, and the
-    // ERBS parameters α = σ = 1 stand for the α = 0, σ = 0.2 of Figs. 2–3 (with which the
-    // basis is only C⁰, gerbs.fig2.parameters).
-    ledger.amend(
-        "gerbs.fig6.bfbs_vs_erbs",
-        Some(super::Verdict::Illustrated),
-        (
-            "BFBS and ERBS paths compared (Figs. 5–6)",
-            "on waypoints of our own and ERBS parameters α = σ = 1, not the paper's α = 0, σ = 0.2",
-        ),
-        Minor,
-        "the figures' data are not in the paper",
-    );
-    ledger.amend(
-        "gerbs.fig7.dubins",
-        Some(super::Verdict::Illustrated),
-        ("the ERBS path follows the Dubins path and keeps curvature continuous", "on waypoints of our own with R = 80 and α = σ = 1 (the paper gives neither): the ERBS curvature is continuous but peaks far above the Dubins 1/R (see the reproduced value)"),
-        Material,
-        "a vehicle whose turn radius is R could not fly the ERBS path, against the paper's conclusion",
-    );
+    ledger.apply(AMENDMENTS);
 }

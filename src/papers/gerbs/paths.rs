@@ -11,7 +11,7 @@ use crate::scalar::certify::certify;
 use crate::scalar::Float;
 
 /// Per-waypoint quantities at the knots of one path, at one precision.
-struct KnotData {
+pub(super) struct KnotData {
     interp: Float,
     along: Vec<Float>,
     kappa_jump: Float,
@@ -19,7 +19,7 @@ struct KnotData {
 }
 
 #[allow(clippy::needless_range_loop)] // i indexes waypoints, tangents and knots together
-fn knot_data<B: Blend<Float>>(path: &GerbsPath<Float, B>, bits: u32) -> KnotData {
+pub(super) fn knot_data<B: Blend<Float>>(path: &GerbsPath<Float, B>, bits: u32) -> KnotData {
     let w = super::setup::waypoints::<Float>(&bits);
     let n = w.len();
     let mut interp = Float::with_val(bits, 0);
@@ -366,5 +366,132 @@ pub fn locality() -> Outcome {
         "f64",
         Verdict::holds(kout == 0.0 && klo > 0.25 && khi < 0.75),
         "1001 parameter values, BFBS i = 2; B_4 (the basis of c_3) vanishes identically outside [t_3, t_5], so the sums agree exactly there",
+    )
+}
+
+/// Algorithm 1 step 14 returns m only, while Algorithm 2 takes (W, m, s): s is computed
+/// (steps 9–13) and then lost. That Algorithm 2 needs it: the BFBS path with the arcs swept in
+/// the turn direction, once with Algorithm 1's s and once with every s = +1 (what a reader
+/// without s might pass); the sign of the path's curvature at each interior waypoint against
+/// the turn, at 256 bits.
+pub fn algorithm1_returns_s() -> Outcome {
+    let conv = ArcConvention::TurnDirection;
+    let with_s = bfbs_path::<Float>(&HI, conv);
+    let s = with_s.tangents.s.clone();
+    let mut spec_without = spec::<Float>(&HI, conv);
+    spec_without.turns = Some(vec![1; s.len()]);
+    let Ok(without) = GerbsPath::new(&spec_without, with_s.blend.clone()) else {
+        return Outcome::new(
+            "",
+            "mpfr:256",
+            Verdict::Failed,
+            "the path without s could not be built",
+        );
+    };
+    // Interior waypoint i is knot t_{i+2}; the turn there is s_i (+1 left, −1 right).
+    let wrong_way = |path: &GerbsPath<Float, _>| -> Vec<String> {
+        (1..s.len() - 1)
+            .filter(|&i| {
+                let kappa = path.at_knot(i + 2, Side::Right).curvature;
+                (s[i] > 0 && !kappa.is_sign_positive()) || (s[i] < 0 && !kappa.is_sign_negative())
+            })
+            .map(|i| format!("W{} (s = {:+})", i + 1, s[i]))
+            .collect()
+    };
+    let (with, without) = (wrong_way(&with_s), wrong_way(&without));
+    let right_turns = s[1..s.len() - 1].iter().filter(|&&v| v < 0).count();
+    Outcome::new(
+        format!(
+            "with Algorithm 1's s = {s:?} the path bends the way it turns at every interior waypoint ({} wrong); with every s = +1 it bends against the turn at {}",
+            with.len(),
+            if without.is_empty() { "no waypoint".to_string() } else { without.join(", ") }
+        ),
+        "mpfr:256",
+        if with.is_empty() && right_turns > 0 && without.len() == right_turns { Verdict::Typo } else { Verdict::Failed },
+        "Algorithm 2 builds each arc from s_i (generate_local_arc(R, θ_o, W_i, m_i, s_i)); Algorithm 1 computes s (steps 9–13) but \
+         returns only m (step 14), while GENERATE_GERBS_PATH takes (W, m, s). The documented waypoints (setup::WAYPOINTS), BFBS \
+         i = 2, arcs swept in the turn direction; the signed curvature at each interior knot from exact Taylor series at 256 bits. \
+         Without its s every right turn (s = −1) bends left, away from the path to the next waypoint: the return statement lost \
+         s — one symbol, one consistent reading (return (m, s)), no number depends on it: clause 3",
+    )
+}
+
+/// Algorithm 2 (steps 4–5) builds an arc at every waypoint, the first and last included (with
+/// Algorithm 1's end signs s_1 = −s_2, s_n = −s_{n−1}), while Sec. III, Eqs. (23)–(24), Fig. 4
+/// and Sec. IV put straight lines at the ends. Both paths on the documented waypoints, BFBS
+/// i = 2, arcs in the turn direction, each local curve on its support's parameter
+/// u = (t − t_{k−1})/(t_{k+1} − t_{k−1}): at the end knots (t_1 = t_2, t_{n+1} = t_{n+2}) the
+/// path is the end curve at u = 0 and u = 1, where a line of Eqs. (23)–(24) is at its
+/// waypoint and an arc is θ_o away from it. At 256 bits.
+pub fn end_curves() -> Outcome {
+    use crate::algo::gerbs::path::EndCurves;
+    let conv = ArcConvention::TurnDirection;
+    let lines = bfbs_path::<Float>(&HI, conv);
+    let mut arcs_spec = spec::<Float>(&HI, conv);
+    arcs_spec.end_curves = EndCurves::Arcs;
+    let Ok(arcs) = GerbsPath::new(&arcs_spec, lines.blend.clone()) else {
+        return Outcome::new(
+            "",
+            "mpfr:256",
+            Verdict::Failed,
+            "the path with end arcs could not be built",
+        );
+    };
+    let (il, ia) = (knot_data(&lines, HI).interp, knot_data(&arcs, HI).interp);
+    // The chord from an arc's end to its middle: 2R sin(θ_o/2), θ_o = π/8.
+    let chord = Float::with_val(HI, 2 * RADIUS)
+        * (Float::with_val(HI, rug::float::Constant::Pi) / Float::with_val(HI, 16)).sin();
+    let tiny = Float::with_val(HI, 1e-60);
+    let misses_by_chord = (ia.clone() - &chord).abs() < tiny;
+    Outcome::new(
+        format!(
+            "with lines at the ends (the text) the path interpolates every waypoint (largest distance {}); with arcs there (Algorithm 2 as printed) it misses the first and last waypoints by {} = 2R sin(θ_o/2)",
+            fmt_e(&il),
+            crate::scalar::certify::format_float_digits(&ia, 6)
+        ),
+        "mpfr:256",
+        if il < tiny && misses_by_chord { Verdict::Discrepancy } else { Verdict::Failed },
+        "the documented waypoints (setup::WAYPOINTS), R = 80, θ_o = π/8, BFBS i = 2, arcs swept in the turn direction; once with \
+         lines of length l = 2Rθ_o at the ends (l is not given in the paper), once with arcs there as Algorithm 2's loop over \
+         i ∈ [1, n] builds them; each local curve on its support's parameter (Algorithm 2 step 12 does not print the map; this \
+         is the one with which the text's lines interpolate). At the end knots only the end curve is active, at u = 0 or 1: the \
+         line's waypoint, but an arc's end, θ_o of arc (a chord of 2R sin(θ_o/2)) from the waypoint at its middle. Interpolation \
+         from exact Taylor series at the knots at 256 bits",
+    )
+}
+
+/// Sec. IV on Figs. 2–3: "the intrinsic parameters are chosen to give a smooth transition at
+/// the peaks which reduces the required curvature". The paper prints no waypoints, so this
+/// can only illustrate: the sampled peak |κ| of the ERBS path on the documented waypoints with
+/// Fig. 2's parameters (α = 0, σ = 0.2), with α = 1, σ = 0.2, and with α = σ = 1, beside the
+/// BFBS path (f64, 4001 samples: a sampled maximum, not certified).
+pub fn curvature_by_parameters() -> Outcome {
+    let conv = ArcConvention::TurnDirection;
+    let peak = |s: Vec<PathPoint<f64>>| {
+        s.iter()
+            .map(|p| p.curvature.abs())
+            .filter(|k| k.is_finite())
+            .fold(0.0, f64::max)
+    };
+    let mut rows = Vec::new();
+    for set in [ErbsSet::Fig2Literal, ErbsSet::Fig2Alpha1, ErbsSet::Smooth] {
+        rows.push(format!(
+            "ERBS {}: {:.4e}",
+            set.label(),
+            peak(erbs_path::<f64>(&(), set, conv).sample(4001))
+        ));
+    }
+    rows.push(format!(
+        "BFBS i = 2: {:.4e}",
+        peak(bfbs_path::<f64>(&(), conv).sample(4001))
+    ));
+    Outcome::new(
+        format!("sampled peak |κ| (1/R = {:.4e}): {}", 1.0 / RADIUS as f64, rows.join("; ")),
+        "f64",
+        Verdict::Illustrated,
+        "the documented waypoints (setup::WAYPOINTS), R = 80, θ_o = π/8, arcs swept in the turn direction; each path sampled at \
+         4001 equally spaced t and the largest finite |κ| taken (with α = 0 the basis is only C⁰ at the knots, \
+         gerbs.fig2.parameters). The paper gives neither the waypoints of Figs. 2–3 nor what the curvature is reduced against: \
+         clause 1",
     )
 }

@@ -64,6 +64,7 @@ pub fn spec<T: Real>(ctx: &T::Ctx, convention: ArcConvention) -> PathSpec<T> {
         line_length: None,
         convention,
         turns: None,
+        end_curves: Default::default(),
     }
 }
 

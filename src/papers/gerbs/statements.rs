@@ -241,3 +241,169 @@ pub fn knot_vector_words() -> Outcome {
          clause 3",
     )
 }
+
+/// The B-spline basis of degree `d` on `knots` by the Cox–de Boor recursion, exactly: for
+/// each basis function, its polynomial on every knot interval [t_j, t_{j+1}) (0/0 = 0).
+fn de_boor_pieces(knots: &[Q], d: usize) -> Vec<Vec<Poly<Q>>> {
+    let intervals = knots.len() - 1;
+    let mut basis: Vec<Vec<Poly<Q>>> = (0..intervals)
+        .map(|i| {
+            (0..intervals)
+                .map(|j| {
+                    if i == j && knots[j] < knots[j + 1] {
+                        Poly::constant(q(1, 1))
+                    } else {
+                        Poly::zero()
+                    }
+                })
+                .collect()
+        })
+        .collect();
+    for p in 1..=d {
+        let ratio = |num: Poly<Q>, den: Q| {
+            if den == q(0, 1) {
+                Poly::zero()
+            } else {
+                num.scale(&(q(1, 1) / den))
+            }
+        };
+        basis = (0..intervals - p)
+            .map(|i| {
+                let rise = ratio(
+                    Poly::linear(-knots[i].clone(), q(1, 1)),
+                    knots[i + p].clone() - &knots[i],
+                );
+                let fall = ratio(
+                    Poly::linear(knots[i + p + 1].clone(), q(-1, 1)),
+                    knots[i + p + 1].clone() - &knots[i + 1],
+                );
+                (0..intervals)
+                    .map(|j| rise.mul(&basis[i][j]).add(&fall.mul(&basis[i + 1][j])))
+                    .collect()
+            })
+            .collect();
+    }
+    basis
+}
+
+/// Sec. II-A: "for a B-spline of degree d with knot multiplicity r at a knot t_k the
+/// continuity … will be C^{d−r}", and Sec. IV's "order two … would not produce a smooth path
+/// in the B-spline case". Every basis function's one-sided derivatives at an interior knot of
+/// multiplicity r, exactly, for d = 1…5 and r = 1…d.
+pub fn continuity_rule() -> Outcome {
+    let mut failures = Vec::new();
+    let mut cases = 0;
+    for d in 1..=5usize {
+        for r in 1..=d {
+            cases += 1;
+            // Clamped ends, interior knots 1 (simple), 2 (multiplicity r), 3 (simple).
+            let mut knots: Vec<Q> = vec![q(0, 1); d + 1];
+            knots.push(q(1, 1));
+            knots.extend(std::iter::repeat_n(q(2, 1), r));
+            knots.push(q(3, 1));
+            knots.extend(std::iter::repeat_n(q(4, 1), d + 1));
+            let left = knots.iter().rposition(|t| *t < q(2, 1)).unwrap_or(0); // interval ending at 2
+            let right = knots.iter().position(|t| *t == q(2, 1)).unwrap_or(0) + r - 1; // interval starting at 2
+            let smooth = de_boor_pieces(&knots, d)
+                .iter()
+                .map(|b| {
+                    (0..=d)
+                        .take_while(|&o| {
+                            b[left].nth_derivative(o).eval(&q(2, 1))
+                                == b[right].nth_derivative(o).eval(&q(2, 1))
+                        })
+                        .count()
+                })
+                .min()
+                .unwrap_or(0);
+            // smooth = number of orders that agree: C^(smooth − 1).
+            if smooth != d - r + 1 {
+                failures.push(format!("d = {d}, r = {r}: C^{}", smooth as i64 - 1));
+            }
+        }
+    }
+    Outcome::new(
+        format!(
+            "C^(d−r) at a knot of multiplicity r for every degree d = 1…5 and r = 1…d ({} of {cases} cases; failures: {failures:?}); order two (d = 1) gives C⁰ at simple knots",
+            cases - failures.len()
+        ),
+        "rational",
+        Verdict::holds(failures.is_empty()),
+        "clamped knot vectors with interior knots 1, 2 (multiplicity r) and 3; every B-spline basis function built by the Cox–de \
+         Boor recursion as exact polynomials on each knot interval; its derivatives of orders 0…d compared from the left and the \
+         right of t = 2; the basis is C^m there when orders 0…m agree for every function",
+    )
+}
+
+/// Sec. I: "connecting straight lines between the waypoints … generates a curve that is only
+/// C⁰": at each interior waypoint where the path turns, the incoming and outgoing directions
+/// differ, so no parametrization makes the path C¹ with a non-zero speed (G¹ fails). Exact on
+/// 50 random rational waypoint sets.
+pub fn polyline_c0() -> Outcome {
+    let mut rng = super::super::sample::SplitMix64::new(1);
+    let (mut interior, mut kinks) = (0usize, 0usize);
+    for _ in 0..50 {
+        let w: Vec<[Q; 2]> = (0..6).map(|_| [rng.rational(), rng.rational()]).collect();
+        for i in 1..w.len() - 1 {
+            let a = [
+                w[i][0].clone() - &w[i - 1][0],
+                w[i][1].clone() - &w[i - 1][1],
+            ];
+            let b = [
+                w[i + 1][0].clone() - &w[i][0],
+                w[i + 1][1].clone() - &w[i][1],
+            ];
+            let cross = a[0].clone() * &b[1] - a[1].clone() * &b[0];
+            let dot = a[0].clone() * &b[0] + a[1].clone() * &b[1];
+            interior += 1;
+            // Same direction only when parallel (cross = 0) with the same sense (dot > 0).
+            kinks += usize::from(cross != q(0, 1) || dot <= q(0, 1));
+        }
+    }
+    Outcome::new(
+        format!("{kinks} of {interior} interior waypoints (50 random sets of 6) have a tangent direction jump: the polyline is C⁰, not G¹"),
+        "rational",
+        Verdict::holds(interior > 0 && kinks == interior),
+        "incoming and outgoing segment directions compared exactly (cross and dot products of the rational differences); a \
+         direction jump makes the unit tangent discontinuous in every parametrization, so the path is C⁰ only",
+    )
+}
+
+/// Eqs. (1) and (25) sum i = 1…n over the knots t_1…t_{n+2}, each B_i supported on
+/// [t_{i−1}, t_{i+1}]; Algorithm 2 loops k = 2…n+1. Exactly on the knots of the printed rule:
+/// which B_k have both support knots, and the sum of the basis functions Eq. (1) would keep.
+pub fn index_range() -> Outcome {
+    let mut problems = Vec::new();
+    for n in 3..=8usize {
+        let Ok(knots) = Knots::<Q>::uniform(n, &()) else {
+            return Outcome::new("", "rational", Verdict::Failed, "knot vector");
+        };
+        // Knots are t_1 … t_{n+2}: B_k needs t_{k−1} and t_{k+1}.
+        let defined: Vec<usize> = (1..=n + 2).filter(|&k| k >= 2 && k < n + 2).collect();
+        let Ok(bfbs) = Bfbs::new(vec![2; n]) else {
+            return Outcome::new("", "rational", Verdict::Failed, "exponents");
+        };
+        // Inside the last interval (t_n, t_{n+1}): the library's B_2 … B_{n+1} sum to 1;
+        // Eq. (1)'s B_1 … B_n drop B_{n+1}.
+        let t = (knots.at(n).clone() + knots.at(n + 1)) / q(2, 1);
+        let Some(values) = basis_derivatives(&knots, &bfbs, &t, 0, Side::Right) else {
+            return Outcome::new("", "rational", Verdict::Failed, "basis");
+        };
+        let all: Q = values.iter().fold(q(0, 1), |s, b| s + &b[0]);
+        let printed: Q = values[..values.len() - 1]
+            .iter()
+            .fold(q(0, 1), |s, b| s + &b[0]);
+        if defined != (2..=n + 1).collect::<Vec<_>>() || all != q(1, 1) || printed == q(1, 1) {
+            problems.push(n);
+        }
+    }
+    Outcome::new(
+        "for n = 3…8 the knots t_1…t_{n+2} define B_2…B_{n+1} (Algorithm 2's k range), not Eq. (1)'s B_1…B_n (B_1 needs t_0); on (t_n, t_{n+1}) B_2…B_{n+1} sum to 1 and B_1…B_n do not".to_string()
+            + if problems.is_empty() { "" } else { " — except some n" },
+        "rational",
+        if problems.is_empty() { Verdict::Typo } else { Verdict::Failed },
+        "the knot vectors of the printed rule, exactly; the basis values at the midpoint of (t_n, t_{n+1}) from the library's BFBS \
+         (i = 2), whose indexing is Algorithm 2's. Eqs. (1)/(25)'s range is shifted by one against the knot vector they name \
+         and against Algorithm 2: an index offset with one consistent reading (k = 2…n+1), on which no number depends: clause 3",
+    )
+}

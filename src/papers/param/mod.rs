@@ -15,8 +15,11 @@ mod overshoot;
 mod plane;
 mod render;
 mod robot;
+mod sentences;
 
 use super::{ClaimSpec, Ledger, Paper, PaperOutput, Verdict};
+use crate::ledger::Amendment;
+use crate::ledger::Severity::Minor;
 use crate::scalar::parse::parse_rational;
 use crate::scalar::BigRational;
 
@@ -47,6 +50,10 @@ pub const SPECS: &[ClaimSpec] = &[
     ClaimSpec { id: "marin.sec2.third_derivative_jumps", location: "Sec. 2, after Corollary 3, bullet (ii)", statement: "for higher-dimensional data the minimizing parametrization reduces the jump in the third derivative at breakpoints not coinciding with relative extreme values", published: None },
     ClaimSpec { id: "marin.sec2.overshoots_reduced", location: "Sec. 2, after Corollary 3, bullet (i)", statement: "for higher-dimensional data the minimizing parametrization reduces position overshoots (compared with chord length)", published: None },
     ClaimSpec { id: "marin.eq34.quadrature_factor", location: "Sec. 3, before Eq. 34", statement: "replacing M by its diagonal has the same effect as rectangular quadrature with centred differences for the second derivatives", published: None },
+    ClaimSpec { id: "marin.abstract.objective_weights", location: "Abstract", statement: "parametrizations are chosen by minimizing Σ_l ∫(d²θ^l/dt²)² dt (the weights 1/α_l² not written)", published: None },
+    ClaimSpec { id: "marin.eq30.always_improves", location: "Sec. 3, after Eq. 30; Sec. 4", statement: "gradient projection from chord length always results in an improved parametrization, provided π_B(∇G|h⁽⁰⁾) ≠ 0", published: None },
+    ClaimSpec { id: "marin.sec2.oscillations_centred", location: "Sec. 2 bullet (iii); Sec. 3", statement: "with the minimizing parametrization, oscillations in the second derivative are more centred about zero", published: None },
+    ClaimSpec { id: "marin.case3.observations", location: "Sec. 2, case III, observations (i)–(ii)", statement: "z_j lies strictly between consecutive extremes; ψ interpolates the edited data and is strictly monotone between them, so Eq. 17 is uniquely solvable", published: None },
     ClaimSpec { id: "marin.table2.overshoots_no_problem", location: "Sec. 3, on Table II", statement: "position overshoots are not a problem in any of the parametrizations of this data", published: None },
     ClaimSpec { id: "marin.fig2.plane_curves", location: "Sec. 3, Fig. 2", statement: "the resulting plane curves are nearly identical for the three parametrizations", published: None },
     ClaimSpec { id: "marin.fig45.validity_of_34", location: "Sec. 3, Figs. 4–5", statement: "the validity of using the approximate objective (34) in place of the exact one (31) is illustrated by comparing Figs. 4 and 5", published: None },
@@ -114,6 +121,16 @@ pub fn verify() -> PaperOutput {
         objective_claims::quadrature_factor(),
     );
     ledger.record(
+        "marin.abstract.objective_weights",
+        sentences::objective_weights(),
+    );
+    ledger.record("marin.eq30.always_improves", sentences::always_improves());
+    ledger.record("marin.case3.observations", sentences::case3_observations());
+    ledger.record(
+        "marin.sec2.oscillations_centred",
+        sentences::oscillations_centred(&plane.parametrizations, &plane.data),
+    );
+    ledger.record(
         "marin.table2.overshoots_no_problem",
         overshoot::table2_no_problem(&plane.parametrizations),
     );
@@ -140,59 +157,39 @@ pub fn verify() -> PaperOutput {
     render::report(&results, ledger.finish())
 }
 
-/// The findings of paper 004, all minor: (claim, new verdict if the policy changes it, what
-/// the paper prints, how the computation differs, why it is minor).
-type Amendment = (
-    &'static str,
-    Option<Verdict>,
-    &'static str,
-    &'static str,
-    &'static str,
-);
+// The findings of paper 004, all minor: (claim, new verdict if the policy changes it, what
+// the paper prints, how the computation differs, severity, why).
 
 const LAST_DIGIT: &str = "rounding of the last digit";
 const LOOSE: &str = "a loose stopping tolerance: the printed knots are a near-minimizer, the objective only slightly above its minimum (evidence)";
 const FIG9: &str = "Fig. 9 illustrates; the optimality results do not depend on it";
 
 const AMENDMENTS: &[Amendment] = &[
-    ("marin.table3.chord", None, "Table III, t^C1", "one entry differs in its last printed digit", LAST_DIGIT),
-    ("marin.table3.exact", None, "Table III, t^EX", "the printed knots are not the certified minimizer (see the computed value)", LOOSE),
-    ("marin.table3.approx", None, "Table III, t^AP", "the printed knots are not the certified minimizer (see the computed value)", LOOSE),
-    ("marin.table6.chord_6d", None, "Table VI, t^CL", "one entry differs in its last printed digit", LAST_DIGIT),
-    ("marin.table6.chord_wc", None, "Table VI, t^WC", "not the chord length of Table V's positions (see the computed value)", "the column is a baseline; the paper's conclusions rest on t^AP"),
-    ("marin.table6.approx", None, "Table VI, t^AP", "some entries differ in their last printed digit", LAST_DIGIT),
-    ("marin.table7.max_acceleration", None, "Table VII", "one printed value differs beyond its two digits (see the reproduced value)", "the reductions the paper draws from the table hold"),
+    ("marin.table3.chord", None, "Table III, t^C1", "one entry differs in its last printed digit", Minor, LAST_DIGIT),
+    ("marin.table3.exact", None, "Table III, t^EX", "the printed knots are not the certified minimizer (see the computed value)", Minor, LOOSE),
+    ("marin.table3.approx", None, "Table III, t^AP", "the printed knots are not the certified minimizer (see the computed value)", Minor, LOOSE),
+    ("marin.table6.chord_6d", None, "Table VI, t^CL", "one entry differs in its last printed digit", Minor, LAST_DIGIT),
+    ("marin.table6.chord_wc", None, "Table VI, t^WC", "not the chord length of Table V's positions (see the computed value)", Minor, "the column is a baseline; the paper's conclusions rest on t^AP"),
+    ("marin.table6.approx", None, "Table VI, t^AP", "some entries differ in their last printed digit", Minor, LAST_DIGIT),
+    ("marin.table7.max_acceleration", None, "Table VII", "one printed value differs beyond its two digits (see the reproduced value)", Minor, "the reductions the paper draws from the table hold"),
     // Counts have no last digit (clause 4).
-    ("marin.table7.reduction", Some(Verdict::Discrepancy), "five of the six axes", "4 of 6 axes on the printed Table VII and on ours", "the reduction holds on most axes; the count is off by one"),
+    ("marin.table7.reduction", Some(Verdict::Discrepancy), "five of the six axes", "4 of 6 axes on the printed Table VII and on ours", Minor, "the reduction holds on most axes; the count is off by one"),
     // One sentence, two readings (clause 5): "overshoots … are eliminated with t^AP" read as
     // excursions beyond the data (fails) and as spurious oscillations (holds): undetermined.
-    ("marin.fig9.overshoots", Some(Verdict::Undetermined), "overshoots are eliminated with t^AP", "read as excursions beyond the data, they are not (see the reproduced value); read as spurious oscillations they are (marin.fig9.oscillations)", FIG9),
-    ("marin.fig9.oscillations", Some(Verdict::Undetermined), "overshoots are eliminated with t^AP", "read as spurious oscillations, they are; read as excursions beyond the data, they are not (marin.fig9.overshoots)", FIG9),
-    ("marin.sec2.overshoots_reduced", None, "the minimizing parametrization reduces overshoots", "one reading holds on the robot data, not on Table II (see the evidence)", "a remark, not a result of the paper"),
-    ("marin.fig45.validity_of_34", None, "Figs. 4 and 5 illustrate that (34) may replace (31)", "some panels differ by more than the declared 1 % of their range (see the reproduced value)", "an illustration; the paper compares the two objectives by Table III (marin.table3.*)"),
-    ("marin.eq34.quadrature_factor", None, "M̂ has the same effect as rectangular quadrature with centred differences", "Eq. 34's G is 3/2 times that objective for every h: the same minimizer, not the same value", "a constant factor changes no parametrization the paper computes"),
+    ("marin.fig9.overshoots", Some(Verdict::Undetermined), "overshoots are eliminated with t^AP", "read as excursions beyond the data, they are not (see the reproduced value); read as spurious oscillations they are (marin.fig9.oscillations)", Minor, FIG9),
+    ("marin.fig9.oscillations", Some(Verdict::Undetermined), "overshoots are eliminated with t^AP", "read as spurious oscillations, they are; read as excursions beyond the data, they are not (marin.fig9.overshoots)", Minor, FIG9),
+    ("marin.sec2.overshoots_reduced", None, "the minimizing parametrization reduces overshoots", "one reading holds on the robot data, not on Table II (see the evidence)", Minor, "a remark, not a result of the paper"),
+    ("marin.fig45.validity_of_34", None, "Figs. 4 and 5 illustrate that (34) may replace (31)", "some panels differ by more than the declared 1 % of their range (see the reproduced value)", Minor, "an illustration; the paper compares the two objectives by Table III (marin.table3.*)"),
+    ("marin.eq34.quadrature_factor", None, "M̂ has the same effect as rectangular quadrature with centred differences", "Eq. 34's G is 3/2 times that objective for every h: the same minimizer, not the same value", Minor, "a constant factor changes no parametrization the paper computes"),
+    ("marin.abstract.objective_weights", None, "Σ_l ∫(d²θ^l/dt²)² dt", "the weights 1/α_l² of Eq. 31 are lost; they change the robot's parametrization (see the reproduced value)", Minor, "Eq. 31, which the paper computes with, carries them"),
+    ("marin.sec2.oscillations_centred", None, "oscillations in θ″ more centred about zero", "not under the declared measure for every component (see the reproduced value)", Minor, "a qualitative remark; the paper gives no measure"),
     // Provenance (clause 1): the corner data are ours.
-    ("marin.fig6.corner", Some(Verdict::Illustrated), "oscillations near a widely spaced corner (Fig. 6)", "on corner data of our own: the paper prints none", "an illustration on invented data"),
+    ("marin.fig6.corner", Some(Verdict::Illustrated), "oscillations near a widely spaced corner (Fig. 6)", "on corner data of our own: the paper prints none", Minor, "an illustration on invented data"),
 ];
 
 /// The verdict policy (`ledger` module doc) applied to the claims it changes or qualifies.
 fn policy(ledger: &mut Ledger) {
-    for &(id, verdict, paper, difference, reason) in AMENDMENTS {
-        // Only a claim whose check did not reproduce gets a finding (clause 7).
-        let applies = verdict.is_some()
-            || ledger
-                .verdict_of(id)
-                .is_some_and(|v| v != Verdict::Reproduced);
-        if applies {
-            ledger.amend(
-                id,
-                verdict,
-                (paper, difference),
-                crate::ledger::Severity::Minor,
-                reason,
-            );
-        }
-    }
+    ledger.apply(AMENDMENTS);
 }
 
 #[cfg(test)]
