@@ -642,6 +642,12 @@ fn marin_commands() {
     let g: f64 = plane["G"].as_str().unwrap().parse().unwrap();
     let g_chord: f64 = plane["G_chord"].as_str().unwrap().parse().unwrap();
     assert!(g <= g_chord, "{g} > {g_chord}");
+    // A yes/no field is a JSON boolean, not the string "true".
+    assert!(
+        plane["descent_converged"].is_boolean(),
+        "{}",
+        plane["descent_converged"]
+    );
 }
 
 const PH_DATA: &str = r#"{"p_b":[0,0,0],"p_e":[1,0.2,0.1],"v_b":[1,0,0],"v_e":[1,0.3,0],"a_b":[0,1,0],"a_e":[0,-1,0.2],"j_b":[0,0,1],"j_e":[0.1,0,0],"s_b":[0,0,0],"s_e":[0,0,0]}"#;

@@ -25,6 +25,8 @@ pub enum Out<T> {
     /// A count or an index: printed as a JSON integer, not a string.
     Int(i64),
     Text(String),
+    /// A yes/no answer, printed as a JSON boolean.
+    Bool(bool),
     /// A double reported as a JSON number (e.g. an f64 reference value), or null if not finite.
     F64(f64),
     Null,
@@ -124,6 +126,7 @@ pub fn render_plain<T: Field>(out: &Out<T>) -> Value {
         ),
         Out::Int(i) => Value::from(*i),
         Out::Text(s) => Value::String(s.clone()),
+        Out::Bool(b) => Value::Bool(*b),
         Out::F64(x) => f64_value(*x),
         Out::Null => Value::Null,
     }
@@ -171,6 +174,7 @@ pub fn render_proven(out: &Out<Ball>, path: &str) -> Result<Value, RunError> {
         ),
         Out::Int(i) => Value::from(*i),
         Out::Text(s) => Value::String(s.clone()),
+        Out::Bool(b) => Value::Bool(*b),
         Out::F64(x) => f64_value(*x),
         Out::Null => Value::Null,
     })
@@ -199,7 +203,9 @@ pub fn render_certified(lo: &Out<Float>, hi: &Out<Float>, path: &str) -> Result<
             }
             Value::Object(map)
         }
-        (_, other @ (Out::Int(_) | Out::Text(_) | Out::F64(_) | Out::Null)) => render_plain(other),
+        (_, other @ (Out::Int(_) | Out::Text(_) | Out::Bool(_) | Out::F64(_) | Out::Null)) => {
+            render_plain(other)
+        }
         _ => {
             return Err(RunError::internal(format!(
                 "outputs at two precisions differ in shape at \"{path}\""

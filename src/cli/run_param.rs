@@ -362,10 +362,7 @@ impl RealJob for MarinJob {
                 Out::F64(m.projected_gradient_norm.to_f64()),
             ),
             ("iterations", Out::Int(self.rough.iterations as i64)),
-            (
-                "descent_converged",
-                Out::Text(self.rough.converged.to_string()),
-            ),
+            ("descent_converged", Out::Bool(self.rough.converged)),
             ("objective", Out::Text(objective.into())),
         ]))
     }

@@ -35,6 +35,8 @@ pub fn certified(c: &Certified, max_digits: u32) -> String {
 /// within one unit (the last digit differs), "✗" beyond; unmarked when there is no computed
 /// value.
 pub fn marked(printed: &str, units: Option<f64>) -> String {
+    // A cell the paper leaves empty ("-") reads as the reports' one sign for "none".
+    let printed = if printed == "-" { "–" } else { printed };
     match units {
         Some(u) if u.abs() <= 0.5 => format!("{printed} ✓"),
         Some(u) if u.abs() <= 1.0 => format!("{printed} ≈"),
@@ -178,7 +180,8 @@ mod tests {
         assert_eq!(marked("0.6586", Some(0.4)), "0.6586 ✓");
         assert_eq!(marked("0.6586", Some(-0.51)), "0.6586 ≈");
         assert_eq!(marked("470", Some(3.5)), "470 ✗");
-        assert_eq!(marked("-", None), "-");
+        // The paper's empty cell reads as the reports' one "none" sign.
+        assert_eq!(marked("-", None), "–");
         assert_eq!(marked("1", Some(f64::NAN)), "1");
     }
 }
