@@ -45,7 +45,7 @@ fn direction<T: Real>(from: &[T; 2], to: &[T; 2]) -> [T; 2] {
 /// (W_i − W_{i−1}) ∧ (W_{i+1} − W_i): positive for a left turn at W_i, negative for a right
 /// one, zero when the three points are collinear. No root is taken, so with rational
 /// waypoints the sign is exact.
-fn turn_wedge<T: Field>(w: &[[T; 2]], i: usize) -> T {
+pub fn turn_wedge<T: Field>(w: &[[T; 2]], i: usize) -> T {
     let a = [
         w[i][0].clone() - &w[i - 1][0],
         w[i][1].clone() - &w[i - 1][1],

@@ -42,18 +42,24 @@ pub struct NaturalCubicSpline<T> {
     second: Vec<T>,
 }
 
+/// At least two knots, and one value per knot.
+fn check_lengths<T>(knots: &[T], values: &[T]) -> Result<(), SplineError> {
+    if knots.len() < 2 {
+        return Err(SplineError::TooFewKnots);
+    }
+    if knots.len() != values.len() {
+        return Err(SplineError::LengthMismatch {
+            knots: knots.len(),
+            values: values.len(),
+        });
+    }
+    Ok(())
+}
+
 impl<T: Field> NaturalCubicSpline<T> {
     /// The natural cubic spline (zero second derivative at both ends) through (knots, values).
     pub fn new(knots: Vec<T>, values: Vec<T>) -> Result<Self, SplineError> {
-        if knots.len() < 2 {
-            return Err(SplineError::TooFewKnots);
-        }
-        if knots.len() != values.len() {
-            return Err(SplineError::LengthMismatch {
-                knots: knots.len(),
-                values: values.len(),
-            });
-        }
+        check_lengths(&knots, &values)?;
         if let Some(i) = (1..knots.len()).find(|&i| knots[i] <= knots[i - 1]) {
             return Err(SplineError::NotIncreasing { index: i });
         }
@@ -64,15 +70,7 @@ impl<T: Field> NaturalCubicSpline<T> {
     /// exact values they were rounded from): the order is not compared again, so a ball
     /// whose knots overlap after rounding still gets its enclosure.
     pub fn with_increasing_knots(knots: Vec<T>, values: Vec<T>) -> Result<Self, SplineError> {
-        if knots.len() < 2 {
-            return Err(SplineError::TooFewKnots);
-        }
-        if knots.len() != values.len() {
-            return Err(SplineError::LengthMismatch {
-                knots: knots.len(),
-                values: values.len(),
-            });
-        }
+        check_lengths(&knots, &values)?;
         let second = second_derivatives(&knots, &values);
         Ok(NaturalCubicSpline {
             knots,

@@ -28,22 +28,30 @@ struct Control<T> {
 }
 
 impl<T: Field> Control<T> {
+    /// The pieces of u on [0, end]: (start, end clipped to `end`, value), in order.
+    fn pieces_until<'a>(&'a self, end: &'a T) -> impl Iterator<Item = (&'a T, T, &'a T)> + 'a {
+        self.breaks
+            .windows(2)
+            .zip(&self.values)
+            .take_while(move |(w, _)| w[0] < *end)
+            .map(move |(w, c)| {
+                let hi = if w[1] < *end {
+                    w[1].clone()
+                } else {
+                    end.clone()
+                };
+                (&w[0], hi, c)
+            })
+    }
+
     /// (x, ẋ, ẍ) at `end` by integrating d³x/dt³ = u from rest piece by piece (Taylor steps,
     /// exact for a constant u): independent of the integral forms it is compared with.
     fn state_at(&self, end: &T) -> [T; 3] {
         let ctx = end.ctx();
         let zero = T::zero_in(&ctx);
         let (mut x, mut v, mut a) = (zero.clone(), zero.clone(), zero);
-        for (w, c) in self.breaks.windows(2).zip(&self.values) {
-            if w[0] >= *end {
-                break;
-            }
-            let hi = if w[1] < *end {
-                w[1].clone()
-            } else {
-                end.clone()
-            };
-            let h = hi - &w[0];
+        for (lo, hi, c) in self.pieces_until(end) {
+            let h = hi - lo;
             let h2 = h.clone() * &h;
             x = x
                 + &(v.clone() * &h)
@@ -60,16 +68,8 @@ impl<T: Field> Control<T> {
         let ctx = end.ctx();
         let power = |r: T| (0..=k).fold(T::one_in(&ctx), |p, _| p * &r);
         let mut total = T::zero_in(&ctx);
-        for (w, c) in self.breaks.windows(2).zip(&self.values) {
-            if w[0] >= *end {
-                break;
-            }
-            let hi = if w[1] < *end {
-                w[1].clone()
-            } else {
-                end.clone()
-            };
-            let piece = power(end.clone() - &w[0]) - &power(end.clone() - &hi);
+        for (lo, hi, c) in self.pieces_until(end) {
+            let piece = power(end.clone() - lo) - &power(end.clone() - &hi);
             total += &(c.clone() * &piece / &T::from_i64(i64::from(k) + 1, &ctx));
         }
         total

@@ -3,8 +3,11 @@
 
 use super::basis::fmt_e;
 use super::setup::{bfbs_path, erbs_path, spec, ErbsSet, HI, LO, RADIUS};
+use crate::algo::gerbs::bfbs::Bfbs;
 use crate::algo::gerbs::dubins::{through_poses, DubinsPath};
-use crate::algo::gerbs::path::{local_curves, tangents, ArcConvention, GerbsPath, PathPoint};
+use crate::algo::gerbs::path::{
+    local_curves, tangents, ArcConvention, GerbsPath, PathPoint, PathSpec,
+};
 use crate::algo::gerbs::{Blend, Side};
 use crate::papers::{Outcome, Verdict};
 use crate::scalar::certify::certify;
@@ -369,18 +372,29 @@ pub fn locality() -> Outcome {
     )
 }
 
+/// The documented BFBS path (arcs in the turn direction) and a variant of it whose spec
+/// `edit` changes, both at 256 bits (`None` for the variant if it cannot be built).
+fn bfbs_and_variant(
+    edit: impl FnOnce(&mut PathSpec<Float>),
+) -> (GerbsPath<Float, Bfbs>, Option<GerbsPath<Float, Bfbs>>) {
+    let conv = ArcConvention::TurnDirection;
+    let base = bfbs_path::<Float>(&HI, conv);
+    let mut variant = spec::<Float>(&HI, conv);
+    edit(&mut variant);
+    let built = GerbsPath::new(&variant, base.blend.clone()).ok();
+    (base, built)
+}
+
 /// Algorithm 1 step 14 returns m only, while Algorithm 2 takes (W, m, s): s is computed
 /// (steps 9–13) and then lost. That Algorithm 2 needs it: the BFBS path with the arcs swept in
 /// the turn direction, once with Algorithm 1's s and once with every s = +1 (what a reader
 /// without s might pass); the sign of the path's curvature at each interior waypoint against
 /// the turn, at 256 bits.
 pub fn algorithm1_returns_s() -> Outcome {
-    let conv = ArcConvention::TurnDirection;
-    let with_s = bfbs_path::<Float>(&HI, conv);
+    let (with_s, without) =
+        bfbs_and_variant(|spec| spec.turns = Some(vec![1; spec.waypoints.len()]));
     let s = with_s.tangents.s.clone();
-    let mut spec_without = spec::<Float>(&HI, conv);
-    spec_without.turns = Some(vec![1; s.len()]);
-    let Ok(without) = GerbsPath::new(&spec_without, with_s.blend.clone()) else {
+    let Some(without) = without else {
         return Outcome::new(
             "",
             "mpfr:256",
@@ -425,11 +439,8 @@ pub fn algorithm1_returns_s() -> Outcome {
 /// waypoint and an arc is θ_o away from it. At 256 bits.
 pub fn end_curves() -> Outcome {
     use crate::algo::gerbs::path::EndCurves;
-    let conv = ArcConvention::TurnDirection;
-    let lines = bfbs_path::<Float>(&HI, conv);
-    let mut arcs_spec = spec::<Float>(&HI, conv);
-    arcs_spec.end_curves = EndCurves::Arcs;
-    let Ok(arcs) = GerbsPath::new(&arcs_spec, lines.blend.clone()) else {
+    let (lines, arcs) = bfbs_and_variant(|spec| spec.end_curves = EndCurves::Arcs);
+    let Some(arcs) = arcs else {
         return Outcome::new(
             "",
             "mpfr:256",

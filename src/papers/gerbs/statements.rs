@@ -5,6 +5,7 @@
 use super::basis::knot_jumps;
 use super::setup::fig1_knots;
 use crate::algo::gerbs::bfbs::Bfbs;
+use crate::algo::gerbs::path::turn_wedge;
 use crate::algo::gerbs::{basis_derivatives, Blend, Knots, Side};
 use crate::numeric::poly::{binomial, Poly};
 use crate::papers::{Outcome, Verdict};
@@ -345,16 +346,9 @@ pub fn polyline_c0() -> Outcome {
     for _ in 0..50 {
         let w: Vec<[Q; 2]> = (0..6).map(|_| [rng.rational(), rng.rational()]).collect();
         for i in 1..w.len() - 1 {
-            let a = [
-                w[i][0].clone() - &w[i - 1][0],
-                w[i][1].clone() - &w[i - 1][1],
-            ];
-            let b = [
-                w[i + 1][0].clone() - &w[i][0],
-                w[i + 1][1].clone() - &w[i][1],
-            ];
-            let cross = a[0].clone() * &b[1] - a[1].clone() * &b[0];
-            let dot = a[0].clone() * &b[0] + a[1].clone() * &b[1];
+            let cross = turn_wedge(&w, i);
+            let dot = (w[i][0].clone() - &w[i - 1][0]) * (w[i + 1][0].clone() - &w[i][0])
+                + (w[i][1].clone() - &w[i - 1][1]) * (w[i + 1][1].clone() - &w[i][1]);
             interior += 1;
             // Same direction only when parallel (cross = 0) with the same sense (dot > 0).
             kinks += usize::from(cross != q(0, 1) || dot <= q(0, 1));
