@@ -1,7 +1,7 @@
 //! Criterion benches for paper 003: evaluating a GERBS path at one point (position, first
 //! and second derivatives, curvature and its rate) with the BFBS closed form against the
 //! ERBS quadrature, in f64 and MPFR-256; and the whole path length. The BFBS is the named
-//! baseline of the ERBS figures in the README.
+//! baseline of the ERBS figures in `docs/benchmarks.md`.
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use std::hint::black_box;

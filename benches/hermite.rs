@@ -1,5 +1,5 @@
 //! Criterion benches for paper 000: Hermite control points (m = 2, 10, 30) and the condition
-//! number κ₂ (m = 10, 30), in f64, MPFR-256 and exact rationals. The README reports the
+//! number κ₂ (m = 10, 30), in f64, MPFR-256 and exact rationals. `docs/benchmarks.md` reports the
 //! ratios to f64. κ₂ has no rational column: an SVD needs square roots.
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};

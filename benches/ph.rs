@@ -1,6 +1,6 @@
 //! Criterion benches for paper 001: one C⁴ conversion per segment (Algorithm 1 plus the 18
 //! control points) in f64 and MPFR-256, the Hermite data of a segment from the curve
-//! expression (Taylor AD), and evaluating p, R and ω at one point. The README reports the
+//! expression (Taylor AD), and evaluating p, R and ω at one point. `docs/benchmarks.md` reports the
 //! figures and the ratio to the public Python implementation.
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};

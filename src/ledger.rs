@@ -5,7 +5,7 @@
 //!
 //! This module sits below both the paper checks (`papers/`) and the renderers (`report/`):
 //! checks produce these values, renderers read them, and neither imports the other's
-//! internals through it (DESIGN.md, "Layers").
+//! internals through it (`docs/design.md`, "Architecture").
 //!
 //! # The verdict policy
 //!

@@ -1,7 +1,7 @@
 //! trajverify: the curve and trajectory algorithms of five papers, written once over the
 //! number type and verified in exact rationals, MPFR and f64 side by side.
 //!
-//! Layers, each using only those below it (README, Design; `tests/layers.rs` checks every
+//! Layers, each using only those below it (`docs/design.md`, "Architecture"; `tests/layers.rs` checks every
 //! `crate::` reference against this order):
 //! - [`cli`]: arguments and JSON in, JSON out, work budgets; parse, one algorithm call, print.
 //! - [`papers`]: the published claims of each paper, each a check that calls the library.

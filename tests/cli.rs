@@ -648,6 +648,17 @@ fn marin_commands() {
         "{}",
         plane["descent_converged"]
     );
+    // The endpoints are fixed exactly by the constraints: "0" and "1", not 77 digits of 1.
+    let wide = json(&trajverify(
+        &["run", "marin", "--scalar", "mpfr:256"],
+        r#"{"points": [[0, 0], [1, 2], [3, 3], [4, 1]]}"#,
+    ));
+    let t = wide["t"].as_array().expect("t is a list");
+    assert_eq!(
+        (&t[0], &t[3]),
+        (&serde_json::json!("0"), &serde_json::json!("1"))
+    );
+    assert!(t[1].as_str().is_some_and(|s| s.len() > 60), "{}", t[1]);
 }
 
 const PH_DATA: &str = r#"{"p_b":[0,0,0],"p_e":[1,0.2,0.1],"v_b":[1,0,0],"v_e":[1,0.3,0],"a_b":[0,1,0],"a_e":[0,-1,0.2],"j_b":[0,0,1],"j_e":[0.1,0,0],"s_b":[0,0,0],"s_e":[0,0,0]}"#;

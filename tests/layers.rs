@@ -1,5 +1,5 @@
 //! The one-way architecture, checked: every `crate::<module>` reference in the source (outside
-//! comments) must point to a module allowed below it in the layer order of the README's Design
+//! comments) must point to a module allowed below it in the layer order of `docs/design.md` ("Architecture")
 //! section. A new import that runs upwards (an algorithm using a claim, a renderer using a
 //! paper's checks) fails this test and names the file and line.
 

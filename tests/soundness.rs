@@ -891,7 +891,7 @@ fn off(x: i64, sign: char) -> String {
     near(x, 40, sign == '+')
 }
 
-/// The discrete decisions the README lists ("Decisions on the exact input"), each with
+/// The discrete decisions `docs/design.md` lists ("Decisions on the exact input"), each with
 /// inputs within 1e-40 of its boundary on both sides: every number type must take the exact
 /// input's branch (the reference: the rational run or 4p bits), and answer.
 fn decision_cases() -> Vec<(Algorithm, &'static str, bool, Value)> {

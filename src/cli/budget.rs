@@ -4,7 +4,7 @@
 //!
 //! Each algorithm estimates its running time from the sizes of its input (points, segments,
 //! samples, derivatives, levels, the length of a curve expression) and the number type. The
-//! estimates are cost models fitted to measured runs (see the README's "Limits" section):
+//! estimates are cost models fitted to measured runs (see `docs/limits.md`):
 //! a power of the sizes times a rate per number type, with the rates measured on the
 //! reference machine and rounded up. An MPFR run computes at p and at 2p bits; its cost
 //! relative to `mpfr:256` is [`mpfr_factor`]. The models err on the side of refusing: the

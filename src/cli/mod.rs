@@ -1,4 +1,4 @@
-//! The command line: `verify`, `list` and `run <algorithm>` (DESIGN.md, "Command line").
+//! The command line: `verify`, `list` and `run <algorithm>` (README, "Command line"; `docs/commands.md`).
 //!
 //! No mathematics lives here: arguments and JSON are read, an algorithm of the library is
 //! called, and JSON or a summary is printed. Every user error becomes one line on stderr and
@@ -123,7 +123,7 @@ const RUN_HELP: &str = r#"Algorithms and their input:
   angles (theta_o, headings, ERBS parameters) may also be constant expressions such as "pi/8"
 Numbers may be JSON numbers or strings ("3/5", "0.6", "1e-3"); both are read exactly.
 Every input is answered within 30 s on two cores and 2 GiB, or refused at once: each run
-estimates its work from its sizes and the number type (see the README, "Limits").
+estimates its work from its sizes and the number type (see docs/limits.md).
 Exit status: 0 success, 2 bad input (one line naming the field, nothing on stdout),
 3 internal failure of a method on accepted input; `verify` exits 1 when a claim failed."#;
 

@@ -352,8 +352,21 @@ impl RealJob for MarinJob {
         } else {
             "approx (Eq. 34)"
         };
+        // t_0 = 0 and t_n = 1 are fixed by the constraints, exactly: printed as such, not as
+        // 77 digits of "1.000…" at the working precision.
+        let last = m.knots.len().saturating_sub(1);
+        let knots = m
+            .knots
+            .into_iter()
+            .enumerate()
+            .map(|(i, t)| match i {
+                0 => Out::Text("0".into()),
+                i if i == last => Out::Text("1".into()),
+                _ => Out::Num(t),
+            })
+            .collect();
         Ok(Out::object(vec![
-            ("t", Out::nums(m.knots)),
+            ("t", Out::List(knots)),
             ("G", Out::Num(m.objective)),
             ("G_chord", Out::Num(m.chord_objective)),
             // ‖π_B(∇G)‖ at the result: the stopping rule's quantity, at the working precision after Newton.

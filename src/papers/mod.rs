@@ -5,7 +5,7 @@
 //! spec through a [`Ledger`], and returns the paper's Markdown report and figures.
 //! `trajverify list` prints the specs without running anything.
 //!
-//! Verdicts (DESIGN.md): `reproduced` — the computed value agrees with the printed one within
+//! Verdicts (README, "Reading the ledger"; `docs/papers.md`): `reproduced` — the computed value agrees with the printed one within
 //! the precision printed, or the property holds to the stated digits; `discrepancy` — the
 //! paper's own method, computed to certified precision, does not give what is printed (a
 //! finding, with evidence); `failed` — something that must hold does not.

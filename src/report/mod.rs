@@ -180,7 +180,7 @@ pub fn paper_output(
 ) -> PaperOutput {
     let mut markdown = heading;
     markdown.push_str(&summary_section(&claims));
-    markdown.push_str(&body);
+    markdown.push_str(&shorten_prose(&body));
     markdown.push_str(&coverage);
     markdown.push_str(&claims_section(&claims));
     PaperOutput {
@@ -188,6 +188,21 @@ pub fn paper_output(
         markdown,
         figures,
     }
+}
+
+/// `body` with every prose line's numbers at most ten significant digits and in the report
+/// style ([`number::shorten`]); table rows are left as rendered, each cell having come from
+/// the one formatter (which a test checks cell by cell).
+fn shorten_prose(body: &str) -> String {
+    body.split_inclusive('\n')
+        .map(|line| {
+            if line.starts_with('|') {
+                line.to_string()
+            } else {
+                number::shorten(line, number::PROSE_DIGITS)
+            }
+        })
+        .collect()
 }
 
 /// The ledger section of a paper report: every claim with its verdict and evidence.

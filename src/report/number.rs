@@ -1,32 +1,168 @@
-//! The one number formatter of every report table and figure label.
+//! The one number formatter of every report table, summary and figure label.
 //!
-//! A table cell shows a number to a chosen count of significant digits, rounded (never a
-//! prefix of a longer string, which would drop an exponent: "1.89784150e-7" cut to ten
-//! characters reads as 1.9), in plain notation for moderate exponents and scientific
-//! notation otherwise. A certified value shows at most the digits it has.
+//! A number shows a chosen count of significant digits, rounded (never a prefix of a longer
+//! string, which would drop an exponent: "1.89784150e-7" cut to ten characters reads as 1.9).
+//! Its notation is plain from 10⁻³ up to the digits shown or six integer digits
+//! ("0.00160821195", "911600", "1670") and scientific otherwise ("2.547675220e-5", "6.94771e7"), so no number opens with a long run of
+//! zeros; [`column`] picks one notation for a whole table column. A certified value shows at
+//! most the digits it has. Prose, summaries and evidence show at most ten significant digits
+//! ([`shorten`]); `claims.json` keeps every certified digit.
+//!
+//! [`audit`] lets a test check every number a report shows against the value it was rendered
+//! from (to the digits shown), and tell formatter output from text built elsewhere.
 
-use crate::scalar::certify::{format_float_digits, Certified};
+use crate::scalar::certify::Certified;
 use crate::scalar::Float;
+use rug::float::Round;
 
-/// `x` to `digits` significant digits ("0" for zero; "NaN", "inf", "-inf" as such).
+/// The most significant digits a report shows in prose, summaries and evidence.
+pub const PROSE_DIGITS: u32 = 10;
+
+/// Plain or scientific notation.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Notation {
+    /// Plain from 10⁻³ up to the digits shown, scientific otherwise.
+    Auto,
+    /// Always `d.ddde±k`.
+    Scientific,
+}
+
+/// `x` rounded to `digits` significant digits in `notation` ("0" for zero; "NaN", "inf",
+/// "-inf" as such).
+fn style(x: &Float, digits: u32, notation: Notation) -> String {
+    if x.is_zero() {
+        return "0".into();
+    }
+    if !x.is_finite() {
+        return if x.is_nan() {
+            "NaN".into()
+        } else if x.is_sign_negative() {
+            "-inf".into()
+        } else {
+            "inf".into()
+        };
+    }
+    let (negative, mantissa, exp) =
+        x.to_sign_string_exp_round(10, Some(digits.max(1) as usize), Round::Nearest);
+    let point = exp.unwrap_or(0) as i64; // value = 0.mantissa × 10^point
+    let sign = if negative { "-" } else { "" };
+    let k = mantissa.len() as i64;
+    // Plain from 10⁻³ up to the digits shown, or up to six integer digits padded with zeros
+    // ("1670" rather than "1.67e3" beside "891" in one column).
+    let plain = notation == Notation::Auto && (-2..=k.clamp(6, 21)).contains(&point);
+    let body = if plain && point <= 0 {
+        format!("0.{}{}", "0".repeat((-point) as usize), mantissa)
+    } else if plain && point > k {
+        format!("{mantissa}{}", "0".repeat((point - k) as usize))
+    } else if plain {
+        let (int, frac) = mantissa.split_at(point as usize);
+        if frac.is_empty() {
+            int.to_string()
+        } else {
+            format!("{int}.{frac}")
+        }
+    } else {
+        let (lead, rest) = mantissa.split_at(1);
+        let e = point - 1;
+        if rest.is_empty() {
+            format!("{lead}e{e}")
+        } else {
+            format!("{lead}.{rest}e{e}")
+        }
+    };
+    format!("{sign}{body}")
+}
+
+/// `x` to `digits` significant digits.
 pub fn sig(x: f64, digits: u32) -> String {
+    sig_in(x, digits, Notation::Auto)
+}
+
+/// `x` to `digits` significant digits in `notation`.
+pub fn sig_in(x: f64, digits: u32, notation: Notation) -> String {
     if x.is_nan() {
         return "NaN".into();
     }
-    format_float_digits(&Float::with_val(53, x), digits)
+    let value = Float::with_val(53, x);
+    let text = style(&value, digits, notation);
+    if x.is_finite() {
+        audit::formatted(&text, &value);
+    }
+    text
+}
+
+/// A high-precision `x` to `digits` significant digits.
+pub fn float(x: &Float, digits: u32) -> String {
+    float_in(x, digits, Notation::Auto)
+}
+
+/// A high-precision `x` to `digits` significant digits in `notation`.
+pub fn float_in(x: &Float, digits: u32, notation: Notation) -> String {
+    let text = style(x, digits, notation);
+    if x.is_finite() {
+        audit::formatted(&text, x);
+    }
+    text
+}
+
+/// A table column: every value to `digits` significant digits in one notation, scientific
+/// for the whole column when any of its values needs it.
+pub fn column(values: &[f64], digits: u32) -> Vec<String> {
+    let notation = if values
+        .iter()
+        .all(|&x| !sig(x, digits).contains('e') || !x.is_finite())
+    {
+        Notation::Auto
+    } else {
+        Notation::Scientific
+    };
+    values
+        .iter()
+        .map(|&x| sig_in(x, digits, notation))
+        .collect()
+}
+
+/// Rows of values as table cells, each column in one notation ([`column`]).
+pub fn columns(rows: &[Vec<f64>], digits: u32) -> Vec<Vec<String>> {
+    let width = rows.iter().map(Vec::len).max().unwrap_or(0);
+    let cols: Vec<Vec<String>> = (0..width)
+        .map(|k| {
+            let values: Vec<f64> = rows
+                .iter()
+                .map(|r| r.get(k).copied().unwrap_or(f64::NAN))
+                .collect();
+            column(&values, digits)
+        })
+        .collect();
+    (0..rows.len())
+        .map(|i| (0..rows[i].len()).map(|k| cols[k][i].clone()).collect())
+        .collect()
+}
+
+/// A value as the paper prints it (or exact input data as given), shown verbatim.
+pub fn printed(text: &str) -> String {
+    audit::printed(text);
+    text.to_string()
 }
 
 /// A certified value with at most `max_digits` of its certified digits, rounded.
 pub fn certified(c: &Certified, max_digits: u32) -> String {
-    if c.digits <= max_digits {
-        return c.text.clone();
-    }
+    certified_in(c, max_digits, Notation::Auto)
+}
+
+/// A certified value with at most `max_digits` of its certified digits, in `notation`.
+pub fn certified_in(c: &Certified, max_digits: u32, notation: Notation) -> String {
     // The certified text carries `c.digits` correct digits; rounding it to fewer digits
     // needs a precision that holds them all (about 3.33 bits a digit).
     let bits = (c.digits * 4 + 16).max(64);
     match Float::parse(&c.text) {
-        Ok(parsed) => format_float_digits(&Float::with_val(bits, parsed), max_digits),
-        Err(_) => c.text.clone(),
+        Ok(parsed) if c.digits > 0 => {
+            let value = Float::with_val(bits, parsed);
+            let text = style(&value, c.digits.min(max_digits), notation);
+            audit::formatted(&text, &value);
+            text
+        }
+        _ => c.text.clone(),
     }
 }
 
@@ -37,6 +173,7 @@ pub fn certified(c: &Certified, max_digits: u32) -> String {
 pub fn marked(printed: &str, units: Option<f64>) -> String {
     // A cell the paper leaves empty ("-") reads as the reports' one sign for "none".
     let printed = if printed == "-" { "–" } else { printed };
+    audit::printed(printed);
     match units {
         Some(u) if u.abs() <= 0.5 => format!("{printed} ✓"),
         Some(u) if u.abs() <= 1.0 => format!("{printed} ≈"),
@@ -54,66 +191,206 @@ pub fn bound_text(x: &rug::Float, digits: usize, round: rug::float::Round) -> St
     let (negative, mantissa, exp) = x.to_sign_string_exp_round(10, Some(digits), round);
     let e = exp.unwrap_or(0) - 1;
     let (lead, rest) = mantissa.split_at(1.min(mantissa.len()));
-    format!("{}{lead}.{rest}e{e}", if negative { "-" } else { "" })
+    let text = format!("{}{lead}.{rest}e{e}", if negative { "-" } else { "" });
+    audit::bound(&text, x, round);
+    text
 }
 
 /// `text` with every decimal number of more than `max` significant digits rounded to `max`
-/// ("2.6432542729944189731668883147678153029" → "2.643254273"): prose, summaries and
-/// evidence in reports show at most ten; `claims.json` keeps every certified digit. Numbers
-/// inside identifiers (`n8192`, `t1`) and fractions are left alone.
+/// ("2.6432542729944189731668883147678153029" → "2.643254273"), and every number below 10⁻³
+/// in scientific notation ("0.0000254767522" → "2.54767522e-5"): prose, summaries and
+/// evidence in reports show at most ten digits; `claims.json` keeps every certified digit.
+/// Numbers inside identifiers (`n8192`, `t1`) and fractions (`3/19`) are left alone.
 pub fn shorten(text: &str, max: u32) -> String {
-    let chars: Vec<char> = text.chars().collect();
     let mut out = String::with_capacity(text.len());
+    let mut rest = text;
+    while let Some((before, token, after)) = next_number(rest) {
+        out.push_str(before);
+        out.push_str(&reformat(token, after.starts_with('/'), max).unwrap_or_else(|| token.into()));
+        rest = after;
+    }
+    out.push_str(rest);
+    out
+}
+
+/// The next decimal number of `text` that is not part of an identifier: the text before it,
+/// the number (digits, one optional point, an optional exponent) and the text after it.
+pub fn next_number(text: &str) -> Option<(&str, &str, &str)> {
+    let bytes = text.as_bytes();
     let mut i = 0;
-    while i < chars.len() {
-        let starts_number = chars[i].is_ascii_digit()
-            && (i == 0
-                || !(chars[i - 1].is_alphanumeric() || chars[i - 1] == '_' || chars[i - 1] == '.'));
-        if !starts_number {
-            out.push(chars[i]);
-            i += 1;
+    while i < bytes.len() {
+        let glued = i > 0 && {
+            let prev = text[..i].chars().next_back().unwrap_or(' ');
+            prev.is_alphanumeric() || prev == '_' || prev == '.'
+        };
+        if !bytes[i].is_ascii_digit() || glued {
+            i += text[i..].chars().next().map_or(1, char::len_utf8);
             continue;
         }
         let start = i;
-        while i < chars.len() && (chars[i].is_ascii_digit() || chars[i] == '.') {
+        let mut seen_point = false;
+        while i < bytes.len()
+            && (bytes[i].is_ascii_digit()
+                || (bytes[i] == b'.'
+                    && !seen_point
+                    && bytes.get(i + 1).is_some_and(u8::is_ascii_digit)))
+        {
+            seen_point |= bytes[i] == b'.';
             i += 1;
         }
         // An exponent: e, an optional sign, digits.
-        let mut end = i;
-        if end < chars.len() && (chars[end] == 'e' || chars[end] == 'E') {
-            let mut j = end + 1;
-            if j < chars.len() && (chars[j] == '-' || chars[j] == '+') {
+        if i < bytes.len() && (bytes[i] == b'e' || bytes[i] == b'E') {
+            let mut j = i + 1;
+            if j < bytes.len() && (bytes[j] == b'-' || bytes[j] == b'+') {
                 j += 1;
             }
-            if j < chars.len() && chars[j].is_ascii_digit() {
-                while j < chars.len() && chars[j].is_ascii_digit() {
+            if j < bytes.len() && bytes[j].is_ascii_digit() {
+                while j < bytes.len() && bytes[j].is_ascii_digit() {
                     j += 1;
                 }
-                end = j;
+                i = j;
             }
         }
-        let token: String = chars[start..end].iter().collect();
-        let mantissa = token.split(['e', 'E']).next().unwrap_or("");
-        let significant = mantissa
-            .chars()
-            .filter(char::is_ascii_digit)
-            .skip_while(|&c| c == '0')
-            .count();
-        let fraction_follows = end < chars.len() && chars[end] == '/';
-        let rounded =
-            (significant as u32 > max && !fraction_follows && mantissa.matches('.').count() <= 1)
-                .then(|| Float::parse(&token).ok())
-                .flatten()
-                .map(|p| {
-                    format_float_digits(
-                        &Float::with_val((significant as u32 * 4 + 16).max(64), p),
-                        max,
-                    )
-                });
-        out.push_str(rounded.as_deref().unwrap_or(&token));
-        i = end;
+        return Some((&text[..start], &text[start..i], &text[i..]));
     }
-    out
+    None
+}
+
+/// The significant digits of a number token and whether it is below 10⁻³ in plain notation.
+pub fn token_shape(token: &str) -> (u32, bool) {
+    let mantissa = token.split(['e', 'E']).next().unwrap_or("");
+    let significant = mantissa
+        .chars()
+        .filter(char::is_ascii_digit)
+        .skip_while(|&c| c == '0')
+        .count() as u32;
+    let tiny_plain = !token.contains(['e', 'E']) && mantissa.starts_with("0.000");
+    (significant, tiny_plain)
+}
+
+/// A number token in the report style when it has more than `max` digits or opens with a long
+/// run of zeros; `None` when it is fine as it is (or is a fraction's numerator).
+fn reformat(token: &str, numerator: bool, max: u32) -> Option<String> {
+    let (significant, tiny_plain) = token_shape(token);
+    if numerator || !(significant > max || tiny_plain) {
+        return None;
+    }
+    let parsed = Float::parse(token).ok()?;
+    let value = Float::with_val((significant * 4 + 16).max(64), parsed);
+    let text = style(&value, significant.min(max), Notation::Auto);
+    audit::formatted(&text, &value);
+    Some(text)
+}
+
+/// A record of the numbers the formatter printed, for tests: each text with whether it shows
+/// the value it was rendered from to the digits shown, and the paper's printed values shown
+/// verbatim. Off unless a test calls [`audit::start`]; the record is shared by the process.
+#[doc(hidden)]
+pub mod audit {
+    use super::Float;
+    use rug::float::Round;
+    use std::collections::HashSet;
+    use std::sync::Mutex;
+
+    /// What the formatter printed since [`start`].
+    #[derive(Clone, Debug, Default)]
+    pub struct Record {
+        /// Texts that show their value to the digits shown.
+        pub formatted: HashSet<String>,
+        /// The paper's printed values, shown verbatim.
+        pub printed: HashSet<String>,
+        /// Texts that do not show their value (with the value): always a defect.
+        pub wrong: Vec<String>,
+    }
+
+    static RECORD: Mutex<Option<Record>> = Mutex::new(None);
+
+    fn with(f: impl FnOnce(&mut Record)) {
+        if let Ok(mut guard) = RECORD.lock() {
+            if let Some(record) = guard.as_mut() {
+                f(record);
+            }
+        }
+    }
+
+    /// Start recording (idempotent).
+    pub fn start() {
+        if let Ok(mut guard) = RECORD.lock() {
+            guard.get_or_insert_with(Record::default);
+        }
+    }
+
+    /// A copy of the record so far.
+    pub fn record() -> Record {
+        RECORD
+            .lock()
+            .ok()
+            .and_then(|g| g.clone())
+            .unwrap_or_default()
+    }
+
+    /// The unit of the last digit `text` shows, and its value, at `bits`.
+    fn unit_and_value(text: &str, bits: u32) -> Option<(Float, Float)> {
+        let (mantissa, exp) = match text.split_once(['e', 'E']) {
+            Some((m, e)) => (m, e.parse::<i32>().ok()?),
+            None => (text, 0),
+        };
+        // An integer's trailing zeros pad it ("1670" from 1668 to three digits): the unit is
+        // that of its last nonzero digit.
+        let fraction_digits = match mantissa.split_once('.') {
+            Some((_, f)) => f.len() as i32,
+            None => -((mantissa.len() - mantissa.trim_end_matches('0').len()) as i32),
+        };
+        let unit = rug::ops::Pow::pow(Float::with_val(bits, 10), exp - fraction_digits);
+        let shown = Float::with_val(bits, Float::parse(text).ok()?);
+        Some((unit, shown))
+    }
+
+    /// `text` was rendered from `value` to nearest: it must be within half a unit of its last
+    /// digit.
+    pub(super) fn formatted(text: &str, value: &Float) {
+        with(|r| {
+            let bits = value.prec().max(128) + 64;
+            let ok = unit_and_value(text, bits).is_some_and(|(unit, shown)| {
+                let slack = Float::with_val(bits, &unit * 1e-9);
+                Float::with_val(bits, &shown - value).abs() <= unit / 2 + slack
+            });
+            if ok {
+                r.formatted.insert(text.to_string());
+            } else {
+                r.wrong.push(format!("{text} (from {value})"));
+            }
+        });
+    }
+
+    /// `text` was rendered from `value` rounded outward (`round`): within one unit of its last
+    /// digit, on the side that keeps it a bound.
+    pub(super) fn bound(text: &str, value: &Float, round: Round) {
+        with(|r| {
+            let bits = value.prec().max(128) + 64;
+            let ok = unit_and_value(text, bits).is_some_and(|(unit, shown)| {
+                let diff = Float::with_val(bits, &shown - value);
+                let side = match round {
+                    Round::Down => diff <= 0,
+                    Round::Up => diff >= 0,
+                    _ => true,
+                };
+                side && diff.abs() <= unit
+            });
+            if ok {
+                r.formatted.insert(text.to_string());
+            } else {
+                r.wrong.push(format!("{text} (bound of {value})"));
+            }
+        });
+    }
+
+    /// A value the paper prints, shown verbatim.
+    pub(super) fn printed(text: &str) {
+        with(|r| {
+            r.printed.insert(text.to_string());
+        });
+    }
 }
 
 #[cfg(test)]

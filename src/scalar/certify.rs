@@ -1,5 +1,5 @@
 //! Certified digits: a number is reported with the significant digits on which two
-//! computations at different precisions agree (DESIGN.md, "Precision is a result").
+//! computations at different precisions agree (README, "Precision is a result"; `docs/design.md`, "Precision").
 //!
 //! A value computed at p bits and again at 2p bits (or more) agrees on about
 //! −log₁₀(|x_p − x_2p| / |x_2p|) significant decimal digits; those digits are the ones the

@@ -20,6 +20,41 @@ pub struct QSqrt2 {
 }
 
 impl QSqrt2 {
+    /// The value as a reader writes it: over one common denominator, with √2 and a minus sign
+    /// ("2 − √2", "(2 + √2)/2", "−3√2/4").
+    pub fn to_math_string(&self) -> String {
+        let d = num_integer::Integer::lcm(self.a.denom(), self.b.denom());
+        let a = (&self.a * BigRational::from_integer(d.clone())).to_integer();
+        let b = (&self.b * BigRational::from_integer(d.clone())).to_integer();
+        let root = |b: &num_bigint::BigInt| {
+            if Signed::abs(b).is_one() {
+                "√2".to_string()
+            } else {
+                format!("{}√2", Signed::abs(b))
+            }
+        };
+        let minus = |n: &num_bigint::BigInt| if n.is_negative() { "−" } else { "" };
+        let (numerator, terms) = match (Zero::is_zero(&a), Zero::is_zero(&b)) {
+            (_, true) => (format!("{}{}", minus(&a), Signed::abs(&a)), 1),
+            (true, false) => (format!("{}{}", minus(&b), root(&b)), 1),
+            (false, false) => (
+                format!(
+                    "{}{} {} {}",
+                    minus(&a),
+                    Signed::abs(&a),
+                    if b.is_negative() { "−" } else { "+" },
+                    root(&b)
+                ),
+                2,
+            ),
+        };
+        match (d.is_one(), terms) {
+            (true, _) => numerator,
+            (false, 1) => format!("{numerator}/{d}"),
+            (false, _) => format!("({numerator})/{d}"),
+        }
+    }
+
     /// a + b√2.
     pub fn new(a: BigRational, b: BigRational) -> Self {
         QSqrt2 { a, b }

@@ -11,7 +11,7 @@
 //!   routines are tested against and the "what f64 gives" column of every report.
 //!
 //! nalgebra's decompositions need `ComplexField`, which neither `rug::Float` nor
-//! `BigRational` implement, hence these short generic routines (DESIGN.md, "Scalars").
+//! `BigRational` implement, hence these short generic routines (`docs/design.md`, "The library").
 
 pub mod banded;
 pub mod gauss;

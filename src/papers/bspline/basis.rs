@@ -6,6 +6,7 @@ use crate::algo::bspline::CardinalBSpline;
 use crate::numeric::linalg::{solve, Matrix};
 use crate::numeric::poly::Poly;
 use crate::scalar::{BigRational, Field};
+use num_traits::{One, Signed};
 
 type Q = BigRational;
 
@@ -27,23 +28,43 @@ pub const TABLE1_PRINTED: [(usize, usize, &str, &[i64], i64); 10] = [
     (3, 3, "s^3/3!", &[0, 0, 0, 1], 6),
 ];
 
-/// A polynomial in s printed with exact fraction coefficients, lowest power first.
+/// A polynomial in s printed with exact fraction coefficients, lowest power first, as a reader
+/// writes it: "1 − s", "s^3/6", "2/3 − s^2 + s^3/2".
 pub fn show(p: &Poly<Q>) -> String {
     if p.is_zero() {
         return "0".into();
     }
-    let terms: Vec<String> = p
-        .coeffs()
-        .iter()
-        .enumerate()
-        .filter(|(_, c)| !Field::is_zero(*c))
-        .map(|(i, c)| match i {
-            0 => c.to_string(),
-            1 => format!("{c}·s"),
-            _ => format!("{c}·s^{i}"),
-        })
-        .collect();
-    terms.join(" + ").replace("+ -", "− ")
+    let mut out = String::new();
+    for (i, c) in p.coeffs().iter().enumerate() {
+        if Field::is_zero(c) {
+            continue;
+        }
+        let negative = c.is_negative();
+        let (numer, denom) = (c.numer().abs(), c.denom().clone());
+        let power = match i {
+            0 => String::new(),
+            1 => "s".into(),
+            _ => format!("s^{i}"),
+        };
+        let factor = if power.is_empty() || !numer.is_one() {
+            format!("{numer}{power}")
+        } else {
+            power
+        };
+        let term = if denom.is_one() {
+            factor
+        } else {
+            format!("{factor}/{denom}")
+        };
+        out.push_str(match (out.is_empty(), negative) {
+            (true, false) => "",
+            (true, true) => "−",
+            (false, false) => " + ",
+            (false, true) => " − ",
+        });
+        out.push_str(&term);
+    }
+    out
 }
 
 /// One entry of Table 1: the printed polynomial beside Algorithm 1's.

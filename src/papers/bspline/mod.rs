@@ -18,7 +18,7 @@ use super::{ClaimSpec, Ledger, Paper, PaperOutput};
 use crate::scalar::qsqrt2::QSqrt2;
 use crate::scalar::{BigRational, Field};
 
-/// The paper's id (file name in `../shared/papers`).
+/// The paper's id (its text's file stem; `docs/papers.md` cites the paper).
 pub const ID: &str = "002_f491c66a0b3f232c";
 /// The short name: the prefix of every claim id and a `--paper` value.
 pub const SHORT: &str = "bspline";

@@ -97,7 +97,7 @@ pub fn section41(n: &Option<Numeric>) -> [Outcome; 4] {
     let printed_u = (e(2) + &QSqrt2::sqrt2()) / &e(2);
     let amp = match n {
         Some(n) => Outcome::new(
-            format!("U = {} = {} exactly", n.amplitude.text, exact_u.to_plain_string()),
+            format!("U = {} = {} exactly", n.amplitude.text, exact_u.to_math_string()),
             "mpfr:128/256 and Q(sqrt2)",
             if exact_u == printed_u && agrees(&n.amplitude, &printed_u) { Verdict::Reproduced } else { Verdict::Discrepancy },
             "U = ξ/x₁(2) with x₁ the unit-amplitude response and ξ = 2/3: exactly (2 + √2)/2 in Q(√2) (x₁(2) = (8 − 4√2)/6), and \
@@ -178,7 +178,7 @@ fn trajectory(t: &[QSqrt2; 3], u: &QSqrt2) -> Outcome {
         .all(|s| response(t, u, s)[0].clone() * &e(6) / u == printed(s));
     let ok = end.iter().all(Field::is_zero) && at2[0] == eq(2, 3) && closed_form;
     Outcome::new(
-        format!("x(4) = ẋ(4) = ẍ(4) = 0 and x(2) = {} exactly; printed x(t) equal at 7 points: {closed_form}", at2[0].to_plain_string()),
+        format!("x(4) = ẋ(4) = ẍ(4) = 0 and x(2) = {} exactly; printed x(t) equal at 7 points: {closed_form}", at2[0].to_math_string()),
         "Q(sqrt2)",
         if ok { Verdict::Reproduced } else { Verdict::Discrepancy },
         "the response to the bang-bang control with t = (2−√2, 2, 2+√2) and U = (2+√2)/2, integrated exactly in Q(√2); the printed \
@@ -255,7 +255,7 @@ pub fn does_better(exact_u: &QSqrt2) -> Outcome {
             "‖u‖∞ = (2+√2)/2 ≈ {:.6} for the bang-bang control against {} for B_3 (same x(2) = {xi}); ratio {} ≈ {:.6}",
             exact_u.to_f64(),
             sup,
-            ratio.to_plain_string(),
+            ratio.to_math_string(),
             ratio.to_f64()
         ),
         "Q(sqrt2)",
@@ -299,7 +299,7 @@ pub fn dual_claims(switches: &[QSqrt2; 3], exact_u: &QSqrt2) -> [Outcome; 2] {
             "a = ({}) with ‖Ya‖₁ = 1: Ya has signs ({}) between the switches and c·a = 2ξa₄ = {} = U exactly",
             a.join(", "),
             signs.join(", "),
-            cert.value.to_plain_string()
+            cert.value.to_math_string()
         ),
         "Q(sqrt2)",
         Verdict::holds(proves),
@@ -309,7 +309,7 @@ pub fn dual_claims(switches: &[QSqrt2; 3], exact_u: &QSqrt2) -> [Outcome; 2] {
              signs at the midpoints hold on each whole interval and match u* = U·sign(Ya): {aligned}. Weak duality (Hölder): every \
              feasible u has ‖u‖∞ ≥ ⟨Ya, u⟩ = c·a with c = (0, 0, 0, 2ξ); c·a equals the U of the feasible u*: {}, so u* solves \
              Problem 3 (L∞ optimality proved, not only the printed solution verified)",
-            cert.unscaled_l1_norm.to_plain_string(),
+            cert.unscaled_l1_norm.to_math_string(),
             cert.value == *exact_u
         ),
     );
@@ -318,9 +318,9 @@ pub fn dual_claims(switches: &[QSqrt2; 3], exact_u: &QSqrt2) -> [Outcome; 2] {
     let objective_outcome = Outcome::new(
         format!(
             "at the dual optimum ξa₄ = {} ≈ {:.6}, half of min ‖u‖∞ = U = {} ≈ {:.6}; 2ξa₄ = U",
-            printed_objective.to_plain_string(),
+            printed_objective.to_math_string(),
             printed_objective.to_f64(),
-            exact_u.to_plain_string(),
+            exact_u.to_math_string(),
             exact_u.to_f64()
         ),
         "Q(sqrt2)",

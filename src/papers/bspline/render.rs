@@ -2,9 +2,8 @@
 
 use super::{figures, fitting, Results, ID, SHORT, TITLE};
 use crate::ledger::{Claim, PaperOutput};
+use crate::report::number;
 use crate::report::{paper_output, plot, table};
-use crate::scalar::certify::format_float_digits;
-use crate::scalar::{Field, Float};
 
 fn figure_name(n: u32) -> String {
     super::super::figure_file(ID, n)
@@ -58,7 +57,7 @@ fn table1(r: &Results) -> String {
             vec![
                 r.k.to_string(),
                 r.j.to_string(),
-                r.printed.clone(),
+                number::printed(&r.printed),
                 r.ours.clone(),
                 comparison.into(),
             ]
@@ -81,16 +80,16 @@ fn bang_bang(r: &Results) -> String {
             rows.push(vec![
                 names[i].to_string(),
                 ["2 − √2", "2", "2 + √2"][i].into(),
-                r.printed_switches[i].to_plain_string(),
-                n.switches[i].text.clone(),
+                r.printed_switches[i].to_math_string(),
+                number::certified(&n.switches[i], number::PROSE_DIGITS),
                 n.switches[i].digits.to_string(),
             ]);
         }
         rows.push(vec![
             "U (ξ = 2/3)".into(),
             "(2 + √2)/2".into(),
-            r.amplitude.to_plain_string(),
-            n.amplitude.text.clone(),
+            r.amplitude.to_math_string(),
+            number::certified(&n.amplitude, number::PROSE_DIGITS),
             n.amplitude.digits.to_string(),
         ]);
     }
@@ -98,7 +97,7 @@ fn bang_bang(r: &Results) -> String {
         "quantity",
         "published",
         "exact (Q(√2))",
-        "Newton, MPFR 128/256 bits",
+        "Newton, MPFR 128/256 bits (ten digits shown)",
         "certified digits",
     ];
     format!(
@@ -133,8 +132,12 @@ fn gram_and_limit(r: &Results) -> String {
         .iter()
         .map(|r| {
             vec![
-                format!("1e{}", r.exponent),
-                format_float_digits(&r.distance, 6),
+                number::sig_in(
+                    10f64.powi(r.exponent as i32),
+                    1,
+                    number::Notation::Scientific,
+                ),
+                number::float_in(&r.distance, 6, number::Notation::Scientific),
             ]
         })
         .collect();
@@ -147,16 +150,14 @@ fn gram_and_limit(r: &Results) -> String {
 }
 
 fn reconstruction(recs: &[fitting::Reconstruction]) -> String {
-    let fmt = |x: f64| format_float_digits(&Float::with_val(53, x), 4);
+    let measured: Vec<Vec<f64>> = recs
+        .iter()
+        .map(|r| vec![r.max_to_original, r.max_to_interpolation])
+        .collect();
     let body: Vec<Vec<String>> = recs
         .iter()
-        .map(|r| {
-            vec![
-                r.label.clone(),
-                fmt(r.max_to_original),
-                fmt(r.max_to_interpolation),
-            ]
-        })
+        .zip(number::columns(&measured, 4))
+        .map(|(r, cells)| [vec![r.label.clone()], cells].concat())
         .collect();
     let headers = [
         "reconstruction",

@@ -138,7 +138,7 @@ pub fn integral_forms(switches: &[QSqrt2; 3], amplitude: &QSqrt2) -> Outcome {
     Outcome::new(
         format!(
             "the four integral forms hold exactly on {random_ok} of 40 random controls and on u* ({bang_ok}); ⟨(2−t)₊², u*⟩ = {} = 2ξ for ξ = 2/3",
-            two_xi.to_plain_string()
+            two_xi.to_math_string()
         ),
         "rational, Q(sqrt2)",
         Verdict::holds(random_ok == 40 && bang_ok && xi_ok),
@@ -163,7 +163,7 @@ pub fn problem3_as_printed(amplitude: &QSqrt2) -> Outcome {
     Outcome::new(
         format!(
             "u ≡ 0 meets all six boundary conditions (x, ẋ, ẍ at t = 4: {x}, {v}, {a}), so min ‖u‖∞ = 0 < U = {} of the bang-bang law",
-            amplitude.to_plain_string()
+            amplitude.to_math_string()
         ),
         "rational, Q(sqrt2)",
         if trivial_wins { Verdict::Discrepancy } else { Verdict::Failed },

@@ -122,17 +122,10 @@ pub fn partition() -> (Outcome, Outcome) {
     )
 }
 
+/// Two significant digits in scientific notation, at any exponent (MPFR's range is far wider
+/// than a double's: the ERBS derivatives at the knots reach 10^-9016).
 pub fn fmt_e(x: &Float) -> String {
-    if x.is_zero() {
-        return "0".into();
-    }
-    let v = x.to_f64();
-    if v != 0.0 && v.is_finite() {
-        return format!("{v:.1e}");
-    }
-    // Below the double range: the decimal exponent from log10.
-    let l = Float::with_val(64, x.clone().abs()).log10().to_f64();
-    format!("1e{}", l.floor())
+    crate::report::number::float_in(x, 2, crate::report::number::Notation::Scientific)
 }
 
 /// One row of the smoothness table.
@@ -323,7 +316,10 @@ fn fig2_literal() -> (Outcome, SmoothRow) {
     let row = SmoothRow {
         basis: format!("ERBS {}", ErbsSet::Fig2Literal.label()),
         knot: "t_4 (B_4′ from left, right)".into(),
-        jumps: vec![cl.text.clone(), cr.text.clone()],
+        jumps: vec![
+            crate::report::number::certified(&cl, crate::report::number::PROSE_DIGITS),
+            crate::report::number::certified(&cr, crate::report::number::PROSE_DIGITS),
+        ],
         class: "C^0".into(),
     };
     let fig2 = Outcome::new(
@@ -374,9 +370,9 @@ pub fn centre_reading() -> (Outcome, Vec<Vec<String>>) {
         sym.push(asym);
         rows.push(vec![
             name.to_string(),
-            format!("{centre:.4}"),
-            format!("{:.4}", (arg - a) / (b - a)),
-            crate::report::number::sig(asym, 4),
+            crate::report::number::sig(centre, 4),
+            crate::report::number::sig((arg - a) / (b - a), 4),
+            crate::report::number::sig_in(asym, 4, crate::report::number::Notation::Scientific),
         ]);
     }
     (

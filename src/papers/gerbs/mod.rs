@@ -17,7 +17,7 @@ use crate::algo::gerbs::path::PathPoint;
 use crate::ledger::Amendment;
 use crate::ledger::Severity::{Material, Minor};
 
-/// The paper's id (file name in `../shared/papers`).
+/// The paper's id (its text's file stem; `docs/papers.md` cites the paper).
 pub const ID: &str = "003_96e0e92e8c1da747";
 /// The short name: the prefix of every claim id and a `--paper` value.
 pub const SHORT: &str = "gerbs";

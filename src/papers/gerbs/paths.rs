@@ -130,7 +130,11 @@ pub fn algorithm2() -> (Outcome, Outcome, Outcome, Vec<Vec<String>>) {
             let signs: Vec<String> = hi
                 .along
                 .iter()
-                .map(|a| format!("{:+.3}", a.to_f64()))
+                .map(|a| {
+                    let v = a.to_f64();
+                    let plus = if v >= 0.0 { "+" } else { "" };
+                    format!("{plus}{}", crate::report::number::sig(v, 4))
+                })
                 .collect();
             for (i, a) in hi.along.iter().enumerate() {
                 if a.is_sign_negative() {
@@ -362,9 +366,10 @@ pub fn locality() -> Outcome {
     };
     let (klo, khi, kout) = changed(&kept);
     let (rlo, rhi, _) = changed(&rerun);
+    let kout_text = crate::report::number::sig(kout, 2);
     Outcome::new(
         format!(
-            "moving W3 with m and s kept changes the path only for t in ({klo:.3}, {khi:.3}) ⊂ (t_3, t_5) = (0.25, 0.75), bit for bit unchanged outside (largest change outside {kout:e}); re-running Algorithm 1 changes it on ({rlo:.3}, {rhi:.3}) because the tangents of W2 and W4 depend on W3"
+            "moving W3 with m and s kept changes the path only for t in ({klo:.3}, {khi:.3}) ⊂ (t_3, t_5) = (0.25, 0.75), bit for bit unchanged outside (largest change outside {kout_text}); re-running Algorithm 1 changes it on ({rlo:.3}, {rhi:.3}) because the tangents of W2 and W4 depend on W3"
         ),
         "f64",
         Verdict::holds(kout == 0.0 && klo > 0.25 && khi < 0.75),

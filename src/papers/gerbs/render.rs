@@ -4,6 +4,7 @@ use super::setup::{self, ErbsSet};
 use super::{figures, Results, ID, SHORT, TITLE};
 use crate::algo::gerbs::path::ArcConvention;
 use crate::ledger::{Claim, PaperOutput};
+use crate::report::number;
 use crate::report::{paper_output, table};
 
 fn figure_name(n: u32) -> String {
@@ -43,6 +44,7 @@ pub fn report(r: &Results, claims: Vec<Claim>) -> PaperOutput {
     md.push_str("\n## Figures\n\n");
     for (n, caption) in CAPTIONS {
         md.push_str(&format!("![{caption}]({})\n\n", figure_name(n)));
+        md.push_str(&material_findings_on(&claims, n));
     }
     paper_output(
         heading,
@@ -51,6 +53,33 @@ pub fn report(r: &Results, claims: Vec<Claim>) -> PaperOutput {
         claims,
         figures(r),
     )
+}
+
+/// The material findings about figure `n`, under the figure, so a reader who looks at the
+/// figure sees what it shows (they rest on the documented inputs at the top of the report).
+fn material_findings_on(claims: &[Claim], n: u32) -> String {
+    let figure = format!("Fig. {n}");
+    claims
+        .iter()
+        .filter(|c| {
+            // "Fig. 1" names Fig. 1, not Fig. 12.
+            c.location.match_indices(&figure).any(|(i, _)| {
+                !c.location[i + figure.len()..].starts_with(|ch: char| ch.is_ascii_digit())
+            })
+        })
+        .filter_map(|c| {
+            let f = c.finding.as_ref()?;
+            (f.severity == crate::ledger::Severity::Material).then(|| {
+                format!(
+                    "**Material finding** (`{}`, {}, on the documented inputs above): {}. {}.\n\n",
+                    c.id,
+                    c.verdict.as_str(),
+                    f.computed,
+                    f.severity_reason
+                )
+            })
+        })
+        .collect()
 }
 
 /// The figures in file-name order.
@@ -126,10 +155,10 @@ fn tables(r: &Results) -> String {
                 l.word_name(),
                 l.lengths
                     .iter()
-                    .map(|x| format!("{x:.2}"))
+                    .map(|&x| number::sig(x, 5))
                     .collect::<Vec<_>>()
                     .join(", "),
-                format!("{:.2}", l.total()),
+                number::sig(l.total(), 5),
             ]
         })
         .collect();

@@ -42,9 +42,9 @@ impl ErbsSet {
 
     pub fn label(self) -> &'static str {
         match self {
-            ErbsSet::Fig2Literal => "Fig. 2 literal (alpha = 0, sigma = 0.2)",
-            ErbsSet::Fig2Alpha1 => "alpha = 1, sigma = 0.2",
-            ErbsSet::Smooth => "alpha = 1, sigma = 1",
+            ErbsSet::Fig2Literal => "Fig. 2 literal (α = 0, σ = 0.2)",
+            ErbsSet::Fig2Alpha1 => "α = 1, σ = 0.2",
+            ErbsSet::Smooth => "α = 1, σ = 1",
         }
     }
 }

@@ -25,7 +25,6 @@ use super::super::{Outcome, Verdict};
 use crate::algo::hermite::HermiteData;
 use crate::numeric::poly::bernstein::power_basis_derivative;
 use crate::numeric::poly::Bernstein;
-use crate::scalar::certify::format_float_digits;
 use crate::scalar::{BigRational, Field, Float, Real};
 
 /// Working precision for the Fig. 3 curves (their duration involves π).
@@ -267,7 +266,7 @@ fn turn_metrics_for(data: TurnData) -> Option<Vec<TurnMetrics>> {
 
 /// Four significant digits of a sampled measurement.
 pub fn fmt4(x: f64) -> String {
-    format_float_digits(&Float::with_val(53, x), 4)
+    crate::report::number::sig(x, 4)
 }
 
 /// The three Fig. 3 claims from the measurements of both readings of the data (the first

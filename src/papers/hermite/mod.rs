@@ -20,7 +20,7 @@ use crate::numeric::poly::Bernstein;
 use crate::papers::ClaimSpec;
 use crate::scalar::BigRational;
 
-/// The paper's id (file name in `../shared/papers`).
+/// The paper's id (its text's file stem; `docs/papers.md` cites the paper).
 pub const ID: &str = "000_d51e5cedfa8471cf";
 /// The short name: the prefix of every claim id and a `--paper` value.
 pub const SHORT: &str = "hermite";

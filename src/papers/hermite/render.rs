@@ -1,10 +1,10 @@
 //! The Markdown report of paper 000, written from the checks' [`Results`](super::Results).
 
-use super::{conditioning, examples, figures, Results, FIG2_FAST, FIG2_SLOW, ID, SHORT, TITLE};
+use super::{conditioning, figures, Results, FIG2_FAST, FIG2_SLOW, ID, SHORT, TITLE};
 use crate::ledger::{Claim, PaperOutput};
+use crate::report::number;
 use crate::report::{paper_output, plot, table};
-use crate::scalar::certify::format_float_digits;
-use crate::scalar::{Field, Float};
+use crate::scalar::Field;
 
 fn figure_name(n: u32) -> String {
     super::super::figure_file(ID, n)
@@ -49,13 +49,13 @@ fn fig2(r: &Results) -> String {
     let rows = [
         vec![
             "1".into(),
-            format!("[{FIG2_FAST}]"),
+            number::printed(&format!("[{FIG2_FAST}]")),
             fast.reproduced.clone(),
             fast.verdict.as_str().into(),
         ],
         vec![
             "2".into(),
-            format!("[{FIG2_SLOW}]"),
+            number::printed(&format!("[{FIG2_SLOW}]")),
             slow.reproduced.clone(),
             slow.verdict.as_str().into(),
         ],
@@ -82,25 +82,31 @@ fn turn(r: &Results, figures: &mut Vec<(String, String)>) -> String {
     );
     match &r.turn {
         Some(metrics) => {
-            let rows: Vec<Vec<String>> = metrics
+            let measured: Vec<Vec<f64>> = metrics
                 .iter()
                 .map(|t| {
                     vec![
-                        t.data.label().to_string(),
-                        if t.factor.1 == 1 {
-                            t.factor.0.to_string()
-                        } else {
-                            format!("{}/{}", t.factor.0, t.factor.1)
-                        },
-                        examples::fmt4(t.duration),
-                        examples::fmt4(t.hausdorff_chord),
-                        examples::fmt4(t.hausdorff_arc),
-                        examples::fmt4(t.max_radial_deviation),
-                        examples::fmt4(t.farthest_from_end),
-                        examples::fmt4(t.turning_degrees),
-                        examples::fmt4(t.net_turning_degrees),
-                        examples::fmt4(t.max_speed),
+                        t.duration,
+                        t.hausdorff_chord,
+                        t.hausdorff_arc,
+                        t.max_radial_deviation,
+                        t.farthest_from_end,
+                        t.turning_degrees,
+                        t.net_turning_degrees,
+                        t.max_speed,
                     ]
+                })
+                .collect();
+            let rows: Vec<Vec<String>> = metrics
+                .iter()
+                .zip(number::columns(&measured, 4))
+                .map(|(t, cells)| {
+                    let factor = if t.factor.1 == 1 {
+                        t.factor.0.to_string()
+                    } else {
+                        format!("{}/{}", t.factor.0, t.factor.1)
+                    };
+                    [vec![t.data.label().to_string(), factor], cells].concat()
                 })
                 .collect();
             md.push_str(&table(
@@ -169,7 +175,11 @@ fn landing(r: &Results, figures: &mut Vec<(String, String)>) -> String {
 
 fn fmt_kappa(k: &Option<conditioning::Kappa>, digits: u32) -> String {
     k.as_ref().map_or("—".into(), |k| {
-        format_float_digits(&k.exact, digits.min(k.value.digits))
+        number::float_in(
+            &k.exact,
+            digits.min(k.value.digits),
+            number::Notation::Scientific,
+        )
     })
 }
 
@@ -177,42 +187,21 @@ fn fig5_section(rows: &[conditioning::KappaRow]) -> String {
     let mut md = String::from("## Fig. 5: condition number of the transform\n\n");
     md.push_str(
         "κ2 = σmax/σmin (Eq. 10) of the matrix taking p_0…p_(2m+1) to H (Eqs. 14–15), for m derivatives at each end. Certified \
-         column: MPFR at p and 2p bits, printed to 20 of its certified digits (the full values are in `claims.json` evidence \
-         where needed). f64 columns: nalgebra's SVD and our one-sided Jacobi, each on the correctly rounded f64 matrix, with \
-         their correct digits against the certified value. *binomial* is the same matrix without the factors n!/(n−j)!/T^j. Proven column: bounds \
-         decided exactly by Sylvester's law of inertia on BᵀB (claim hermite.fig5.proven), printed rounded outward.\n\n",
+         column: MPFR at p and 2p bits, shown to ten of its certified digits (`trajverify run hermite-condition` prints them \
+         all). f64 columns: nalgebra's SVD and our one-sided Jacobi, each on the correctly rounded f64 matrix, with \
+         their correct digits against the certified value. Proven column: bounds decided exactly by Sylvester's law of \
+         inertia on BᵀB (claim hermite.fig5.proven), printed rounded outward.\n\n",
+    );
+    md.push_str(&fig5_unit_table(rows));
+    md.push_str(
+        "\nThe same κ2 for other durations T, and for the *binomial* matrix (the same matrix without the factors \
+         n!/(n−j)!/T^j), each to six certified digits:\n\n",
     );
     let body: Vec<Vec<String>> = rows
         .iter()
         .map(|r| {
-            let bits = r.unit.as_ref().map_or(0, |k| k.bits);
-            let digits = r.unit.as_ref().map_or(0, |k| k.value.digits);
-            let rel = match (r.nalgebra, &r.unit) {
-                (Some(a), Some(k)) => format_float_digits(
-                    &Float::with_val(53, crate::scalar::certify::relative_error(a, &k.exact)),
-                    2,
-                ),
-                _ => "—".into(),
-            };
             vec![
                 r.m.to_string(),
-                fmt_kappa(&r.unit, 20),
-                format!("{digits} ({bits}/{} bits)", 2 * bits),
-                r.proven.as_ref().map_or("—".into(), |(lo, hi)| {
-                    format!(
-                        "[{}, {}]",
-                        crate::report::number::bound_text(lo, 9, rug::float::Round::Down),
-                        crate::report::number::bound_text(hi, 9, rug::float::Round::Up)
-                    )
-                }),
-                match r.nalgebra {
-                    None => "— (overflow)".into(),
-                    Some(k) if k.is_infinite() => "∞ (σmin = 0)".into(),
-                    Some(k) => crate::scalar::float_text(k),
-                },
-                rel,
-                conditioning::f64_digits(r.nalgebra, &r.unit).to_string(),
-                conditioning::f64_digits(r.jacobi_f64, &r.unit).to_string(),
                 fmt_kappa(&r.durations[0], 6),
                 fmt_kappa(&r.durations[1], 6),
                 fmt_kappa(&r.durations[2], 6),
@@ -221,20 +210,7 @@ fn fig5_section(rows: &[conditioning::KappaRow]) -> String {
         })
         .collect();
     md.push_str(&table(
-        &[
-            "m",
-            "κ2, T = 1 (certified)",
-            "certified digits (precisions)",
-            "proven enclosure (exact inertia)",
-            "f64 nalgebra",
-            "rel. error",
-            "f64 nalgebra digits",
-            "f64 Jacobi digits",
-            "T = 1/2",
-            "T = 2",
-            "T = 10",
-            "binomial, T = 1",
-        ],
+        &["m", "T = 1/2", "T = 2", "T = 10", "binomial, T = 1"],
         &body,
     ));
     md.push_str(&format!(
@@ -244,4 +220,57 @@ fn fig5_section(rows: &[conditioning::KappaRow]) -> String {
         figure_name(5)
     ));
     md
+}
+
+/// Fig. 5's κ2 at T = 1: certified, proven, and the two f64 answers with their correct digits.
+fn fig5_unit_table(rows: &[conditioning::KappaRow]) -> String {
+    let scientific = number::Notation::Scientific;
+    let body: Vec<Vec<String>> = rows
+        .iter()
+        .map(|r| {
+            let bits = r.unit.as_ref().map_or(0, |k| k.bits);
+            let digits = r.unit.as_ref().map_or(0, |k| k.value.digits);
+            let rel = match (r.nalgebra, &r.unit) {
+                (Some(a), Some(k)) => number::sig_in(
+                    crate::scalar::certify::relative_error(a, &k.exact),
+                    2,
+                    scientific,
+                ),
+                _ => "—".into(),
+            };
+            vec![
+                r.m.to_string(),
+                fmt_kappa(&r.unit, number::PROSE_DIGITS),
+                format!("{digits} ({bits}/{} bits)", 2 * bits),
+                r.proven.as_ref().map_or("—".into(), |(lo, hi)| {
+                    format!(
+                        "[{}, {}]",
+                        number::bound_text(lo, 9, rug::float::Round::Down),
+                        number::bound_text(hi, 9, rug::float::Round::Up)
+                    )
+                }),
+                match r.nalgebra {
+                    None => "— (overflow)".into(),
+                    Some(k) if k.is_infinite() => "∞ (σmin = 0)".into(),
+                    Some(k) => number::sig_in(k, number::PROSE_DIGITS, scientific),
+                },
+                rel,
+                conditioning::f64_digits(r.nalgebra, &r.unit).to_string(),
+                conditioning::f64_digits(r.jacobi_f64, &r.unit).to_string(),
+            ]
+        })
+        .collect();
+    table(
+        &[
+            "m",
+            "κ2, T = 1 (certified)",
+            "certified digits (precisions)",
+            "proven enclosure (exact inertia)",
+            "f64 nalgebra",
+            "rel. error",
+            "f64 nalgebra digits",
+            "f64 Jacobi digits",
+        ],
+        &body,
+    )
 }

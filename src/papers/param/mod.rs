@@ -23,7 +23,7 @@ use crate::ledger::Severity::Minor;
 use crate::scalar::parse::parse_rational;
 use crate::scalar::BigRational;
 
-/// The paper's id (file name in `../shared/papers`).
+/// The paper's id (its text's file stem; `docs/papers.md` cites the paper).
 pub const ID: &str = "004_2a9dc6e62cca15f1";
 /// The short name: the prefix of every claim id and a `--paper` value.
 pub const SHORT: &str = "marin";

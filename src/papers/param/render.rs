@@ -8,9 +8,9 @@ use super::plane::PlaneSection;
 use super::robot::{two_digit_units, RobotSection, NAMES};
 use super::{figures, num, Results, ID, SHORT, TITLE};
 use crate::ledger::{Claim, PaperOutput};
+use crate::report::number;
 use crate::report::number::{marked, sig as fmt};
 use crate::report::{paper_output, table};
-use crate::scalar::certify::format_float_digits;
 use crate::scalar::{Field, Float};
 
 /// How the printed cells of the tables are marked.
@@ -55,9 +55,9 @@ fn h1(rows: &[H1Row]) -> String {
         .map(|r| {
             vec![
                 r.name.clone(),
-                format_float_digits(&r.h1, 6),
-                format_float_digits(&r.energy, 6),
-                format_float_digits(&Float::with_val(53, r.ratio), 4),
+                number::float(&r.h1, 6),
+                number::float(&r.energy, 6),
+                number::float(&Float::with_val(53, r.ratio), 4),
             ]
         })
         .collect();
@@ -80,9 +80,9 @@ fn table1(t: &TableOne) -> String {
         .map(|(i, (z, printed))| {
             vec![
                 i.to_string(),
-                z.to_string(),
+                number::printed(z),
                 marked(printed, Some(printed_units(&t.t_star[i], printed))),
-                format_float_digits(&t.t_star[i], 10.min(t.digits[i].max(1))),
+                number::float(&t.t_star[i], 10.min(t.digits[i].max(1))),
                 if t.agrees[i] { "agrees" } else { "differs" }.into(),
             ]
         })
@@ -107,7 +107,7 @@ fn plane(p: &PlaneSection, figures: &mut Vec<(String, String)>) -> String {
             let mut row = vec![
                 i.to_string(),
                 marked(TABLE3[i].0, Some(printed_units(&p.chord[i], TABLE3[i].0))),
-                format_float_digits(&p.chord[i], 6),
+                number::float(&p.chord[i], 6),
             ];
             for (c, col) in p.columns.iter().enumerate() {
                 let printed = [TABLE3[i].1, TABLE3[i].2][c];
@@ -117,7 +117,7 @@ fn plane(p: &PlaneSection, figures: &mut Vec<(String, String)>) -> String {
                 ));
                 row.push(
                     col.as_ref()
-                        .map_or("—".into(), |k| format_float_digits(&k.exact[i], 6)),
+                        .map_or("—".into(), |k| number::float(&k.exact[i], 6)),
                 );
             }
             row
@@ -205,12 +205,12 @@ fn robot(r: &RobotSection) -> String {
             vec![
                 i.to_string(),
                 marked(TABLE6[i][0], Some(printed_units(&r.chord[i], TABLE6[i][0]))),
-                format_float_digits(&r.chord[i], 6),
+                number::float(&r.chord[i], 6),
                 marked(
                     TABLE6[i][1],
                     Some(printed_units(&r.work_centre[i], TABLE6[i][1])),
                 ),
-                format_float_digits(&r.work_centre[i], 6),
+                number::float(&r.work_centre[i], 6),
                 marked(
                     TABLE6[i][2],
                     r.approx

@@ -23,7 +23,7 @@ mod theorems;
 use super::{found, ClaimSpec, Ledger, Outcome, Paper, PaperOutput, Verdict};
 use crate::ledger::Severity::{Material, Minor};
 
-/// The paper's id (file name in `../shared/papers`).
+/// The paper's id (its text's file stem; `docs/papers.md` cites the paper).
 pub const ID: &str = "001_ddf1926ff43f1bf6";
 /// The short name: the prefix of every claim id and a `--paper` value.
 pub const SHORT: &str = "phodcos";
