@@ -69,8 +69,12 @@ pub struct Panel {
     pub log_y: bool,
     /// Same scale on both axes (for paths in the plane).
     pub equal_aspect: bool,
-    /// Which corner the legend goes in.
+    /// Which corner the legend goes in (another one, or room above the data, when it would
+    /// cover data there).
     pub legend: Corner,
+    /// A fixed y range (before padding), e.g. one scale shared by the panels of several
+    /// figures so they can be compared; `None`: from the data.
+    pub y_range: Option<(f64, f64)>,
 }
 
 /// A corner of the plotting area.
@@ -167,7 +171,9 @@ fn draw_panel<DB: DrawingBackend>(
         .map(|s| transformed(panel, &s.points))
         .collect();
     let (margin, label_area) = (12u32, 50u32);
-    let ((x0, x1), (y0, y1)) = axis_ranges(panel, &data, area.dim_in_pixel(), margin, label_area);
+    let plot = plot_size(area.dim_in_pixel(), margin, label_area);
+    let ranges = axis_ranges(panel, &data, plot);
+    let (legend_corner, ((x0, x1), (y0, y1))) = place_legend(panel, &data, ranges, plot);
     let mut chart = ChartBuilder::on(area)
         .caption(&panel.title, ("sans-serif", 16))
         .margin(margin)
@@ -198,7 +204,7 @@ fn draw_panel<DB: DrawingBackend>(
         draw_series(&mut chart, series, points)?;
     }
     if panel.series.iter().any(|s| !s.name.is_empty()) {
-        let position = match panel.legend {
+        let position = match legend_corner {
             Corner::UpperLeft => SeriesLabelPosition::UpperLeft,
             Corner::UpperRight => SeriesLabelPosition::UpperRight,
             Corner::LowerLeft => SeriesLabelPosition::LowerLeft,
@@ -215,30 +221,123 @@ fn draw_panel<DB: DrawingBackend>(
     Ok(())
 }
 
+/// The plotting area's size in pixels inside a panel of `size` (margins, axis labels and the
+/// caption taken off).
+fn plot_size(size: (u32, u32), margin: u32, label_area: u32) -> (f64, f64) {
+    let (w, h) = size;
+    (
+        w.saturating_sub(margin * 2 + label_area).max(1) as f64,
+        h.saturating_sub(margin * 2 + label_area + 24).max(1) as f64,
+    )
+}
+
+type Ranges = ((f64, f64), (f64, f64));
+
 /// The axis ranges of `panel` over its transformed `data`: padded data bounds, whole decades
-/// on a log axis, and equal units on both axes for an equal-aspect panel of `size` pixels.
-fn axis_ranges(
-    panel: &Panel,
-    data: &[Vec<(f64, f64)>],
-    size: (u32, u32),
-    margin: u32,
-    label_area: u32,
-) -> ((f64, f64), (f64, f64)) {
-    let (mut x0, mut x1) = bounds(data.iter().flatten().map(|p| p.0));
-    let (mut y0, mut y1) = bounds(data.iter().flatten().map(|p| p.1));
+/// on a log axis, and equal units on both axes for an equal-aspect panel.
+fn axis_ranges(panel: &Panel, data: &[Vec<(f64, f64)>], plot: (f64, f64)) -> Ranges {
+    let (x0, x1) = bounds(data.iter().flatten().map(|p| p.0));
+    let (mut y0, mut y1) = match panel.y_range {
+        Some((lo, hi)) => bounds([lo, hi].into_iter()),
+        None => bounds(data.iter().flatten().map(|p| p.1)),
+    };
     if panel.log_y {
         (y0, y1) = (y0.floor(), y1.ceil());
     }
-    if panel.equal_aspect {
-        let (w, h) = size;
-        let plot_w = w.saturating_sub(margin * 2 + label_area).max(1) as f64;
-        let plot_h = h.saturating_sub(margin * 2 + label_area + 24).max(1) as f64;
-        let scale = ((x1 - x0) / plot_w).max((y1 - y0) / plot_h);
-        let (cx, cy) = ((x0 + x1) / 2.0, (y0 + y1) / 2.0);
-        (x0, x1) = (cx - scale * plot_w / 2.0, cx + scale * plot_w / 2.0);
-        (y0, y1) = (cy - scale * plot_h / 2.0, cy + scale * plot_h / 2.0);
+    equal_aspect(panel, ((x0, x1), (y0, y1)), plot)
+}
+
+/// For an equal-aspect panel, the ranges widened (about their centres) to one scale on both
+/// axes; other panels unchanged.
+fn equal_aspect(panel: &Panel, ranges: Ranges, (plot_w, plot_h): (f64, f64)) -> Ranges {
+    let ((x0, x1), (y0, y1)) = ranges;
+    if !panel.equal_aspect {
+        return ranges;
     }
-    ((x0, x1), (y0, y1))
+    let scale = ((x1 - x0) / plot_w).max((y1 - y0) / plot_h);
+    let (cx, cy) = ((x0 + x1) / 2.0, (y0 + y1) / 2.0);
+    (
+        (cx - scale * plot_w / 2.0, cx + scale * plot_w / 2.0),
+        (cy - scale * plot_h / 2.0, cy + scale * plot_h / 2.0),
+    )
+}
+
+/// The legend's size in pixels, by the same fixed text rule as the rest of the figure: a
+/// sample, a gap and about 7 px per character across; 20 px per entry down.
+fn legend_size(panel: &Panel) -> (f64, f64) {
+    let named: Vec<&Series> = panel.series.iter().filter(|s| !s.name.is_empty()).collect();
+    let chars = named
+        .iter()
+        .map(|s| s.name.chars().count())
+        .max()
+        .unwrap_or(0);
+    (chars as f64 * 7.0 + 50.0, named.len() as f64 * 20.0 + 16.0)
+}
+
+/// Where the legend goes so that it covers no data: the panel's preferred corner if its box is
+/// empty, else the first empty corner, else above the data (the y range grown by the legend's
+/// height, which leaves the upper corners empty). Lines are checked between their points too.
+fn place_legend(
+    panel: &Panel,
+    data: &[Vec<(f64, f64)>],
+    ranges: Ranges,
+    plot: (f64, f64),
+) -> (Corner, Ranges) {
+    if panel.series.iter().all(|s| s.name.is_empty()) {
+        return (panel.legend, ranges);
+    }
+    // The points a reader sees: each series' points, and for lines 8 more per segment.
+    let mut seen = Vec::new();
+    for (series, points) in panel.series.iter().zip(data) {
+        seen.extend_from_slice(points);
+        if series.style != Style::Markers {
+            for w in points.windows(2) {
+                let ((ax, ay), (bx, by)) = (w[0], w[1]);
+                seen.extend((1..8).map(|k| {
+                    let f = k as f64 / 8.0;
+                    (ax + f * (bx - ax), ay + f * (by - ay))
+                }));
+            }
+        }
+    }
+    let (lw, lh) = legend_size(panel);
+    // The legend's box with a 10-pixel gap to the frame, as fractions of the plotting area.
+    let (fw, fh) = (
+        ((lw + 14.0) / plot.0).min(1.0),
+        ((lh + 14.0) / plot.1).min(0.9),
+    );
+    let free = |corner: Corner, ((x0, x1), (y0, y1)): Ranges| {
+        let (w, h) = (fw * (x1 - x0), fh * (y1 - y0));
+        let (left, right) = match corner {
+            Corner::UpperLeft | Corner::LowerLeft => (x0, x0 + w),
+            _ => (x1 - w, x1),
+        };
+        let (bottom, top) = match corner {
+            Corner::UpperLeft | Corner::UpperRight => (y1 - h, y1),
+            _ => (y0, y0 + h),
+        };
+        !seen
+            .iter()
+            .any(|&(x, y)| x >= left && x <= right && y >= bottom && y <= top)
+    };
+    let order = [
+        panel.legend,
+        Corner::UpperRight,
+        Corner::UpperLeft,
+        Corner::LowerRight,
+        Corner::LowerLeft,
+    ];
+    if let Some(&corner) = order.iter().find(|&&c| free(c, ranges)) {
+        return (corner, ranges);
+    }
+    // Headroom: a span S with S·fh ≤ S − H leaves the legend's height above the data.
+    let ((x0, x1), (y0, y1)) = ranges;
+    let grown = equal_aspect(panel, ((x0, x1), (y0, y0 + (y1 - y0) / (1.0 - fh))), plot);
+    let corner = match panel.legend {
+        Corner::UpperLeft | Corner::LowerLeft => Corner::UpperLeft,
+        _ => Corner::UpperRight,
+    };
+    (corner, grown)
 }
 
 /// One series in its style, with its legend entry drawn in the same style.
@@ -397,6 +496,40 @@ mod tests {
         assert!(render(&[p.clone()], (1, 1), (400, 300)).is_err());
         p.series[1].style = Style::Dashed;
         assert!(render(&[p], (1, 1), (400, 300)).is_ok());
+    }
+
+    #[test]
+    fn legends_go_to_an_empty_corner_or_above_the_data() {
+        // Data only in the upper-left corner: the preferred upper left is taken, another
+        // corner is chosen and the ranges are kept.
+        let mut p = panel(false);
+        p.series = vec![Series::new(
+            "a",
+            vec![(0.0, 1.0), (0.1, 0.9)],
+            Style::Solid,
+            1,
+        )];
+        p.series
+            .push(Series::new("b", vec![(1.0, 0.0)], Style::Markers, 2));
+        let plot = (400.0, 300.0);
+        let data: Vec<Vec<(f64, f64)>> = p.series.iter().map(|s| s.points.clone()).collect();
+        let ranges = axis_ranges(&p, &data, plot);
+        let (corner, kept) = place_legend(&p, &data, ranges, plot);
+        assert_ne!(corner, Corner::UpperLeft);
+        assert_eq!(kept, ranges);
+        // A square's outline touches all four corners: the legend goes above the data.
+        let square = vec![(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0), (0.0, 0.0)];
+        p.series[0].points = square.clone();
+        let data: Vec<Vec<(f64, f64)>> = p.series.iter().map(|s| s.points.clone()).collect();
+        let ranges = axis_ranges(&p, &data, plot);
+        let (corner, ((_, _), (y0, y1))) = place_legend(&p, &data, ranges, plot);
+        assert!(matches!(corner, Corner::UpperLeft | Corner::UpperRight));
+        let (_, lh) = legend_size(&p);
+        let legend_bottom = y1 - (lh + 14.0) / plot.1 * (y1 - y0);
+        assert!(
+            legend_bottom >= 1.0,
+            "legend reaches down to y = {legend_bottom}"
+        );
     }
 
     #[test]

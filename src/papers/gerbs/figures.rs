@@ -104,19 +104,63 @@ fn plane_panel(title: &str, mut series: Vec<Series>) -> Panel {
 }
 
 /// Paths side by side in the plane (Fig. 5).
-pub fn path_figure(paths: &[(&str, &[PathPoint<f64>])]) -> String {
-    let panels: Vec<Panel> = paths
-        .iter()
-        .map(|(name, pts)| plane_panel(name, vec![curve(name, xy(pts), Style::Solid, 1)]))
+/// A square window of the plane, centre and half-width, in length units.
+type Window = ((f64, f64), f64);
+
+/// A panel of `series` clipped to `window` (with the waypoints inside it), drawn to equal
+/// scale: where the full-scale paths overlap, the window shows how they differ.
+fn zoom_panel(title: String, series: Vec<Series>, ((cx, cy), half): Window) -> Panel {
+    let inside = |p: &(f64, f64)| (p.0 - cx).abs() <= half && (p.1 - cy).abs() <= half;
+    let mut clipped: Vec<Series> = series
+        .into_iter()
+        .map(|mut s| {
+            s.points.retain(inside);
+            s
+        })
         .collect();
-    let cols = panels.len();
-    plot::render_or_note(&panels, (1, cols), (700 * cols as u32, 500))
+    let mut waypoints = waypoint_series();
+    waypoints.points.retain(inside);
+    clipped.push(waypoints);
+    Panel {
+        title,
+        x_label: "x (length units)".into(),
+        y_label: "y (length units)".into(),
+        series: clipped,
+        equal_aspect: true,
+        legend: Corner::UpperLeft,
+        ..Panel::default()
+    }
 }
 
-/// Fig. 3: the path with arcs swept in the turn direction, the path of Eqs. (21)–(22) as
-/// printed, and both overlaid in a window around the printed point farthest from the other
-/// path (the turn the printed angles concern), since at full scale the difference is a few
-/// units on a path of 1200.
+/// The window around waypoint `i` (0-based) of half-width `half`.
+fn around_waypoint(i: usize, half: f64) -> Window {
+    let w = setup::WAYPOINTS[i.min(setup::WAYPOINTS.len() - 1)];
+    ((w[0] as f64, w[1] as f64), half)
+}
+
+/// The straight lines between the waypoints, for reference.
+fn polygon_series() -> Series {
+    let mut s = waypoint_series();
+    s.name = "waypoint polygon".into();
+    s.style = Style::Dotted;
+    s.color = 6;
+    s
+}
+
+/// Fig. 5: the BFBS path, and a window at W3 where it rounds the corner of the polygon.
+pub fn figure5(bfbs: &[PathPoint<f64>]) -> String {
+    let path = || curve("BFBS (i = 2)", xy(bfbs), Style::Solid, 1);
+    let panels = [
+        plane_panel("Fig. 5: BFBS path (i = 2)", vec![path()]),
+        zoom_panel(
+            "at W3: the path rounds the corner".into(),
+            vec![path(), polygon_series()],
+            around_waypoint(2, 70.0),
+        ),
+    ];
+    plot::render_or_note(&panels, (1, 2), (1300, 520))
+}
+
 pub fn figure3(turn: &[PathPoint<f64>], printed: &[PathPoint<f64>]) -> String {
     let (a, b) = (xy(turn), xy(printed));
     let distance_to_a = |q: &(f64, f64)| {
@@ -162,44 +206,49 @@ pub fn figure3(turn: &[PathPoint<f64>], printed: &[PathPoint<f64>]) -> String {
     };
     let panels = vec![
         plane_panel(
-            "ERBS, arcs swept in the turn direction",
-            vec![curve("turn direction", a.clone(), Style::Solid, 1)],
-        ),
-        plane_panel(
-            "ERBS, Eqs. (21)-(22) as printed",
-            vec![curve("as printed", b.clone(), Style::Dashed, 2)],
+            "ERBS: arcs in the turn direction and Eqs. (21)–(22) as printed",
+            vec![
+                curve("turn direction", a.clone(), Style::Solid, 1),
+                curve("as printed", b.clone(), Style::Dashed, 2),
+            ],
         ),
         zoom,
     ];
-    plot::render_or_note(&panels, (1, 3), (2100, 550))
+    plot::render_or_note(&panels, (1, 2), (1300, 540))
 }
 
-/// Fig. 4: the ERBS path with its local curves.
 pub fn figure4(erbs: &[PathPoint<f64>]) -> String {
     let p = setup::erbs_path::<f64>(&(), ErbsSet::Smooth, ArcConvention::TurnDirection);
-    let mut series = vec![curve("ERBS path", xy(erbs), Style::Solid, 1)];
-    for (i, c) in p.curves.iter().enumerate() {
-        let pts = (0..=50)
-            .map(|j| {
-                let q = c.at(&(j as f64 / 50.0));
-                (q[0], q[1])
-            })
-            .collect();
-        series.push(curve(
-            if i == 0 { "local curves" } else { "" },
-            pts,
-            Style::Dashed,
-            2,
-        ));
-    }
-    plot::render_or_note(
-        &[plane_panel(
-            "local curves: lines at the ends, arcs R = 80, theta_o = pi/8",
-            series,
-        )],
-        (1, 1),
-        (900, 500),
-    )
+    let series = || {
+        let mut series = vec![curve("ERBS path", xy(erbs), Style::Solid, 1)];
+        for (i, c) in p.curves.iter().enumerate() {
+            let pts = (0..=50)
+                .map(|j| {
+                    let q = c.at(&(j as f64 / 50.0));
+                    (q[0], q[1])
+                })
+                .collect();
+            series.push(curve(
+                if i == 0 { "local curves" } else { "" },
+                pts,
+                Style::Dashed,
+                2,
+            ));
+        }
+        series
+    };
+    let panels = [
+        plane_panel(
+            "local curves: lines at the ends, arcs R = 80, θ_o = π/8",
+            series(),
+        ),
+        zoom_panel(
+            "at W2: the arc local curve and the path".into(),
+            series(),
+            around_waypoint(1, 60.0),
+        ),
+    ];
+    plot::render_or_note(&panels, (1, 2), (1300, 520))
 }
 
 fn curvature_series(name: &str, pts: &[PathPoint<f64>], color: usize) -> Series {
@@ -213,12 +262,37 @@ fn curvature_series(name: &str, pts: &[PathPoint<f64>], color: usize) -> Series 
 
 /// Fig. 6: BFBS and ERBS paths and their curvature.
 pub fn figure6(bfbs: &[PathPoint<f64>], erbs: &[PathPoint<f64>]) -> String {
-    let a = plane_panel(
-        "Fig. 6: BFBS and ERBS paths",
+    // Equal-t samples: the window is centred where the two paths are farthest apart.
+    let (far, gap) = bfbs
+        .iter()
+        .zip(erbs)
+        .map(|(p, q)| (p.point[0] - q.point[0]).hypot(p.point[1] - q.point[1]))
+        .enumerate()
+        .fold((0, 0.0), |m, x| if x.1 > m.1 { x } else { m });
+    let centre = match (bfbs.get(far), erbs.get(far)) {
+        (Some(p), Some(q)) => (
+            (p.point[0] + q.point[0]) / 2.0,
+            (p.point[1] + q.point[1]) / 2.0,
+        ),
+        _ => (0.0, 0.0),
+    };
+    let at_far = |pts: &[PathPoint<f64>]| pts.get(far).map(|p| (p.point[0], p.point[1]));
+    let t_far = bfbs.get(far).map_or(0.0, |p| p.t);
+    let a = zoom_panel(
+        format!(
+            "Fig. 6: the paths nearly coincide; at equal t = {t_far:.3} they are {gap:.1} apart"
+        ),
         vec![
             curve("BFBS", xy(bfbs), Style::Solid, 2),
             curve("ERBS", xy(erbs), Style::Dashed, 1),
+            curve(
+                "BFBS and ERBS points at that t",
+                [at_far(bfbs), at_far(erbs)].into_iter().flatten().collect(),
+                Style::Markers,
+                4,
+            ),
         ],
+        (centre, (4.0 * gap).max(60.0)),
     );
     let b = Panel {
         title: "signed curvature".into(),
@@ -276,7 +350,7 @@ pub fn figure7(
         y_label: "signed curvature κ (1/length unit)".into(),
         series: vec![
             curve("Dubins", kd, Style::Solid, 2),
-            curve("ERBS", ke, Style::Dashed, 1),
+            curve("ERBS", ke, Style::Solid, 1),
         ],
         legend: Corner::LowerLeft,
         ..Panel::default()

@@ -16,15 +16,15 @@ const CAPTIONS: [(u32, &str); 7] = [
     (1, "Fig. 1: BFBS basis (i = 2) on the knots of Fig. 1"),
     (
         2,
-        "Fig. 2: ERBS basis for the three parameter sets and both readings of Eq. (4)",
+        "Fig. 2: ERBS basis for the three parameter sets and both readings of Eq. (4). With σ = 0.2 the weight Ψ = exp(−β|t − c|^0.4/…) is sharply peaked at the interval's centre c (|t − c|^0.4 has an infinite slope there), so its running integral, the basis, is nearly a step at c",
     ),
     (
         3,
-        "Fig. 3: ERBS path; middle: Eqs. (21)–(22) as printed; right: both, zoomed where they differ most (the printed arc angles make left turns run backwards)",
+        "Fig. 3: ERBS path with the arcs swept in the turn direction and with Eqs. (21)–(22) as printed; right: zoomed where they differ most (the printed arc angles make left turns run backwards)",
     ),
-    (4, "Fig. 4: ERBS path with its local curves"),
-    (5, "Fig. 5: BFBS path"),
-    (6, "Fig. 6: BFBS vs ERBS, paths and curvature"),
+    (4, "Fig. 4: ERBS path with its local curves; right: at W2"),
+    (5, "Fig. 5: BFBS path; right: at W3, against the waypoint polygon"),
+    (6, "Fig. 6: BFBS vs ERBS, where the paths differ most, and their curvature"),
     (7, "Fig. 7: ERBS vs Dubins, paths and curvature"),
 ];
 
@@ -92,10 +92,7 @@ fn figures(r: &Results) -> Vec<(String, String)> {
         (figure_name(2), figures::figure2()),
         (figure_name(3), figures::figure3(erbs, &printed)),
         (figure_name(4), figures::figure4(erbs)),
-        (
-            figure_name(5),
-            figures::path_figure(&[("BFBS (i = 2)", bfbs)]),
-        ),
+        (figure_name(5), figures::figure5(bfbs)),
         (figure_name(6), figures::figure6(bfbs, erbs)),
         (figure_name(7), figures::figure7(erbs, &r.legs)),
     ];

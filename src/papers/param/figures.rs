@@ -53,15 +53,48 @@ pub fn figure1(s: &NaturalCubicSpline<Float>) -> String {
     plot::render(&panels, (1, 3), (1200, 380)).unwrap_or_default()
 }
 
-/// Figs. 3–5: x, x', x'' and y, y', y'' against t for one parametrization.
-pub fn component_figure(name: &str, t: &[f64], z: &[Vec<f64>]) -> String {
+/// Figs. 3–5: x, x', x'' and y, y', y'' against t, one figure per parametrization (name,
+/// knots). Each panel position has one y scale across the figures, so the second derivatives
+/// of the parametrizations can be compared by eye.
+pub fn component_figures(parametrizations: &[(&str, Vec<f64>)], z: &[Vec<f64>]) -> Vec<String> {
+    let mut figures: Vec<Vec<Panel>> = parametrizations
+        .iter()
+        .map(|(name, t)| component_panels(name, t, z))
+        .collect();
+    let positions = figures.iter().map(Vec::len).max().unwrap_or(0);
+    for k in 0..positions {
+        let ys = figures
+            .iter()
+            .filter_map(|panels| panels.get(k))
+            .flat_map(|p| p.series.iter().flat_map(|s| s.points.iter().map(|q| q.1)))
+            .filter(|y| y.is_finite());
+        let range = ys.fold(None, |r: Option<(f64, f64)>, y| {
+            Some(r.map_or((y, y), |(lo, hi)| (lo.min(y), hi.max(y))))
+        });
+        for panels in &mut figures {
+            if let Some(p) = panels.get_mut(k) {
+                p.y_range = range;
+            }
+        }
+    }
+    figures
+        .iter()
+        .map(|panels| plot::render(panels, (2, 3), (1200, 640)).unwrap_or_default())
+        .collect()
+}
+
+/// The six panels of one of Figs. 3–5 (empty if the spline cannot be built).
+fn component_panels(name: &str, t: &[f64], z: &[Vec<f64>]) -> Vec<Panel> {
     let mut panels = Vec::new();
     for (c, comp) in ["x", "y"].iter().enumerate() {
-        let Ok(s) = NaturalCubicSpline::new(t.to_vec(), z[c].clone()) else {
-            return String::new();
+        let Some(zc) = z.get(c) else {
+            return Vec::new();
+        };
+        let Ok(s) = NaturalCubicSpline::new(t.to_vec(), zc.clone()) else {
+            return Vec::new();
         };
         let grid: Vec<[f64; 3]> = (0..=600).map(|k| s.eval_all(&(k as f64 / 600.0))).collect();
-        for (j, label) in ["", "'", "''"].iter().enumerate() {
+        for (j, label) in ["", "′", "″"].iter().enumerate() {
             let mut series = vec![Series::new(
                 "",
                 (0..=600).map(|k| (k as f64 / 600.0, grid[k][j])).collect(),
@@ -71,27 +104,22 @@ pub fn component_figure(name: &str, t: &[f64], z: &[Vec<f64>]) -> String {
             if j == 0 {
                 series.push(Series::new(
                     "data",
-                    t.iter().copied().zip(z[c].iter().copied()).collect(),
+                    t.iter().copied().zip(zc.iter().copied()).collect(),
                     Style::Markers,
                     2,
                 ));
             }
-            let legend = if c == 0 {
-                Corner::LowerLeft
-            } else {
-                Corner::UpperRight
-            };
             panels.push(Panel {
                 title: format!("{comp}{label}(t), {name}"),
                 x_label: "t (parameter, dimensionless)".into(),
                 y_label: format!("{comp}{label}"),
                 series,
-                legend,
+                legend: Corner::UpperRight,
                 ..Panel::default()
             });
         }
     }
-    plot::render(&panels, (2, 3), (1200, 640)).unwrap_or_default()
+    panels
 }
 
 /// Fig. 2: the parametric spline through the Table II data with t^EX.

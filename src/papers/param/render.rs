@@ -143,13 +143,17 @@ fn plane(p: &PlaneSection, figures: &mut Vec<(String, String)>) -> String {
     );
     md.push_str(&second_derivatives(p));
     md.push_str(&format!("\n![Fig. 2](./{ID}_fig2.svg)\n\n"));
-    for (n, (name, t)) in p.parametrizations.iter().enumerate() {
+    md.push_str(
+        "Figs. 3–5 share one y scale per panel, so the second derivatives can be compared.\n\n",
+    );
+    let drawn = figures::component_figures(&p.parametrizations, &p.data);
+    for (n, ((name, _), svg)) in p.parametrizations.iter().zip(drawn).enumerate() {
         let file = figure_file(n as u32 + 3);
         md.push_str(&format!(
             "![Fig. {}: components with {name}](./{file})\n\n",
             n + 3
         ));
-        figures.push((file, figures::component_figure(name, t, &p.data)));
+        figures.push((file, svg));
     }
     if let Some(ex) = &p.columns[0] {
         let t: Vec<f64> = ex.exact.iter().map(Field::to_f64).collect();

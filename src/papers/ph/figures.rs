@@ -64,6 +64,7 @@ pub fn convergence_figure(
         log_y: true,
         equal_aspect: false,
         legend: Corner::LowerLeft,
+        y_range: None,
     };
     plot::render_or_note(&[panel], (1, 1), (900, 600))
 }
@@ -108,6 +109,7 @@ pub fn figure2a() -> String {
                 log_y: false,
                 equal_aspect: true,
                 legend: Corner::UpperRight,
+                y_range: None,
             });
         }
     }
@@ -186,6 +188,7 @@ pub fn figure2b() -> String {
             log_y: false,
             equal_aspect: false,
             legend: Corner::UpperLeft,
+            y_range: None,
         });
     }
     plot::render_or_note(&panels, (1, 3), (1500, 500))
@@ -238,9 +241,9 @@ pub fn figure3() -> String {
             ),
             Series::new("transformed back", project(&back, 0, 2), Style::Dashed, 2),
         ],
-        log_y: false,
         equal_aspect: true,
         legend: Corner::LowerLeft,
+        ..Panel::default()
     };
     let b = Panel {
         title: "B: reversion".into(),
@@ -266,9 +269,9 @@ pub fn figure3() -> String {
                 2,
             ),
         ],
-        log_y: false,
         equal_aspect: true,
         legend: Corner::LowerLeft,
+        ..Panel::default()
     };
     plot::render_or_note(&[a, b], (1, 2), (1100, 550))
 }
@@ -306,6 +309,7 @@ pub fn nrho_figure1(n: &nrho::Nrho) -> String {
             log_y: false,
             equal_aspect: true,
             legend: Corner::LowerLeft,
+            y_range: None,
         })
         .collect();
     plot::render_or_note(&panels, (1, 2), (1100, 550))
@@ -316,9 +320,9 @@ pub fn nrho_figure4(n: &nrho::Nrho) -> String {
     let pts = converted_points(pw, 8);
     let (sigma, omega) = nrho::speed_and_turn_rate(pw, 8);
     let mut panels: Vec<Panel> = [
-        (0usize, 2usize, "B: front (x–z)"),
+        (0usize, 1usize, "A: top (x–y); the paper's A is a 3-D view"),
+        (0, 2, "B: front (x–z)"),
         (1, 2, "C: side (y–z)"),
-        (0, 1, "top (x–y)"),
     ]
     .iter()
     .map(|&(a, b, title)| Panel {
@@ -337,25 +341,28 @@ pub fn nrho_figure4(n: &nrho::Nrho) -> String {
         log_y: false,
         equal_aspect: true,
         legend: Corner::LowerLeft,
+        y_range: None,
     })
     .collect();
     panels.push(Panel {
-        title: "D: parametric speed sigma".into(),
+        title: "D: parametric speed σ".into(),
         x_label: "t (TU)".into(),
-        y_label: "sigma (LU/TU)".into(),
-        series: vec![Series::new("sigma", sigma, Style::Solid, 1)],
+        y_label: "σ (LU/TU)".into(),
+        series: vec![Series::new("σ", sigma, Style::Solid, 1)],
         log_y: false,
         equal_aspect: false,
         legend: Corner::UpperRight,
+        y_range: None,
     });
     panels.push(Panel {
-        title: "E: |omega|".into(),
+        title: "E: |ω|".into(),
         x_label: "t (TU)".into(),
-        y_label: "|omega| (rad/TU)".into(),
-        series: vec![Series::new("|omega|", omega, Style::Solid, 2)],
+        y_label: "|ω| (rad/TU)".into(),
+        series: vec![Series::new("|ω|", omega, Style::Solid, 2)],
         log_y: true,
         equal_aspect: false,
         legend: Corner::UpperRight,
+        y_range: None,
     });
     plot::render_or_note(&panels, (2, 3), (1500, 900))
 }
