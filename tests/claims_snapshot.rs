@@ -40,102 +40,10 @@ fn snapshot_paper(short: &str) {
     settings.bind(|| insta::assert_snapshot!(format!("claims_{}", paper.id), text));
 }
 
-/// Every number the report shows, checked against the value it was rendered from: each
-/// decimal number of a table cell (outside the claims ledger, whose evidence columns are prose)
-/// is the one formatter's output, shown to its digits (or the paper's printed value, verbatim);
-/// one notation per column; and nowhere in the report more than ten significant digits or a
-/// long run of leading zeros.
+/// Every number the report shows, checked against the value it was rendered from
+/// ([`audit::check`]).
 fn report_numbers(markdown: &str) {
-    let record = audit::record();
-    assert!(
-        record.wrong.is_empty(),
-        "numbers that do not show their value: {:?}",
-        record.wrong
-    );
-    // Each decimal number of `text` with its sign, and whether it is exact as written (an
-    // integer, or part of a fraction such as 3/19).
-    let tokens = |text: &str| -> Vec<(String, bool)> {
-        let mut out = Vec::new();
-        let mut rest = text;
-        while let Some((before, token, after)) = number::next_number(rest) {
-            let exact =
-                !token.contains(['.', 'e', 'E']) || before.ends_with('/') || after.starts_with('/');
-            let sign = if before.ends_with('-') || before.ends_with('−') {
-                "-"
-            } else {
-                ""
-            };
-            out.push((format!("{sign}{token}"), exact));
-            rest = after;
-        }
-        out
-    };
-    let mut problems = Vec::new();
-    let mut in_ledger = false;
-    let mut columns: Vec<Vec<(bool, String)>> = Vec::new();
-    let flush = |columns: &mut Vec<Vec<(bool, String)>>, problems: &mut Vec<String>| {
-        for col in columns.drain(..) {
-            let scientific = col.iter().filter(|(s, _)| *s).count();
-            if scientific > 0 && scientific < col.len() {
-                problems.push(format!(
-                    "a column mixes notations: {:?}",
-                    col.iter().map(|(_, t)| t).collect::<Vec<_>>()
-                ));
-            }
-        }
-    };
-    for line in markdown.lines() {
-        // Outside code spans (claim ids such as `phodcos.table1.n16`).
-        let prose: String = line.split('`').step_by(2).collect::<Vec<_>>().join(" ");
-        for (token, _) in tokens(&prose).into_iter().filter(|(_, exact)| !exact) {
-            let (significant, tiny_plain) = number::token_shape(&token);
-            if significant > number::PROSE_DIGITS || tiny_plain {
-                problems.push(format!("{token} in: {line}"));
-            }
-        }
-        if !line.starts_with('|') {
-            flush(&mut columns, &mut problems);
-            in_ledger = false;
-            continue;
-        }
-        let cells: Vec<&str> = line.trim_matches('|').split(" | ").map(str::trim).collect();
-        if cells.iter().all(|c| c.chars().all(|ch| ch == '-')) {
-            continue;
-        }
-        if columns.is_empty() {
-            in_ledger = cells.starts_with(&["id", "location", "published", "reproduced"]);
-            columns = vec![Vec::new(); cells.len()];
-            continue;
-        }
-        if in_ledger {
-            continue;
-        }
-        // The first column labels the row (its parameters are inputs as typed).
-        for (k, cell) in cells.iter().enumerate().skip(1) {
-            let bare = cell.trim_end_matches([' ', '✓', '≈', '✗']);
-            if record.printed.contains(bare) {
-                continue;
-            }
-            let found = tokens(bare);
-            for (token, exact) in &found {
-                if !exact && !record.formatted.contains(token) {
-                    problems.push(format!(
-                        "{token} (cell '{cell}') is not the formatter's: {line}"
-                    ));
-                }
-            }
-            // A single number in the cell, the formatter's (an integer count is not).
-            if let [(single, exact)] = found.as_slice() {
-                // Zero has no notation.
-                if single != "0" && (!exact || record.formatted.contains(single)) {
-                    if let Some(col) = columns.get_mut(k) {
-                        col.push((single.contains('e'), single.clone()));
-                    }
-                }
-            }
-        }
-    }
-    flush(&mut columns, &mut problems);
+    let problems = audit::check(markdown);
     assert!(
         problems.is_empty(),
         "{} report numbers:\n{}",
@@ -209,6 +117,39 @@ fn the_report_number_check_catches_cut_numbers_and_mixed_columns() {
         let caught = std::panic::catch_unwind(|| report_numbers(markdown)).is_err();
         assert!(caught, "not caught:\n{markdown}");
     }
+}
+
+/// `report convergence` writes its tables through the same formatter: its report passes the
+/// same check.
+#[test]
+fn the_convergence_report_shows_its_numbers_as_computed() {
+    use trajverify::algo::convergence::{study, Method, StudyOptions};
+    use trajverify::report::convergence::{files, Described};
+    audit::start();
+    let curve = trajverify::curve::ExprCurve::parse("[cos(t), sin(2*t), t/5]").expect("parses");
+    let (a, b) = (
+        trajverify::scalar::BigRational::from_integer(0.into()),
+        trajverify::scalar::BigRational::from_integer(2.into()),
+    );
+    let options = StudyOptions {
+        method: Method::Hermite(2),
+        levels: vec![1, 2, 3, 4, 5],
+        ..StudyOptions::default()
+    };
+    let result = study(&curve, (&a, &b), &options, &mut |_, _| {}).expect("the study runs");
+    let described = Described {
+        curve: "[cos(t), sin(2*t), t/5]",
+        label: "test curve",
+        interval: ("0", "2"),
+        scalar: "ball:128".into(),
+    };
+    let markdown = files(&result, &described)
+        .into_iter()
+        .find(|(name, _)| name.ends_with(".md"))
+        .expect("a Markdown report")
+        .1;
+    assert!(markdown.contains('|'), "the report has a table");
+    report_numbers(&markdown);
 }
 
 #[test]

@@ -1,4 +1,4 @@
-//! `run bspline-basis`, `bspline-gram`, `spline-fit` and `bang-bang`: the JSON shapes of issue 4.
+//! `run bspline-basis`, `bspline-gram`, `spline-fit` and `bang-bang`: the JSON shapes that `docs/commands.md` documents.
 
 use super::budget::Rates;
 use super::dispatch::{refuse_ball, run_field, run_real, FieldJob, RealJob};

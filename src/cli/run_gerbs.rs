@@ -1,4 +1,4 @@
-//! `run gerbs-basis`, `run gerbs-path` and `run dubins`: the JSON shapes of issue 6 (paper 003).
+//! `run gerbs-basis`, `run gerbs-path` and `run dubins`: the JSON shapes that `docs/commands.md` documents (paper 003).
 //!
 //! Inputs are read exactly (rationals, or constant expressions such as `"pi/8"` for angles)
 //! and checked before anything is computed: knots, waypoints (collinearity decided exactly on

@@ -1,4 +1,4 @@
-//! `run hermite` and `run hermite-condition`: the JSON shapes of issue 2.
+//! `run hermite` and `run hermite-condition`: the JSON shapes that `docs/commands.md` documents.
 
 use super::budget::{self, check_output, Rates};
 use super::dispatch::{run_field, run_two_precision, FieldJob, TwoPrecisionJob};

@@ -1,4 +1,4 @@
-//! `run marin-1d`, `run natural-spline` and `run marin`: the JSON shapes of issue 5.
+//! `run marin-1d`, `run natural-spline` and `run marin`: the JSON shapes that `docs/commands.md` documents.
 
 use super::budget::{check_output, Rates};
 use super::dispatch::{refuse_ball, run_field, run_real, run_real_or_exact, FieldJob, RealJob};

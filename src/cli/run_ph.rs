@@ -1,4 +1,4 @@
-//! `run ph-hermite`, `run phodcos` and `run convergence`: the JSON shapes of issue 3.
+//! `run ph-hermite`, `run phodcos` and `run convergence`: the JSON shapes that `docs/commands.md` documents.
 
 use super::budget::{self, Rates};
 use super::dispatch::{run_real, run_two_precision, RealJob, TwoPrecisionJob};

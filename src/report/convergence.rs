@@ -2,11 +2,11 @@
 //! levels and what the orders say, an SVG figure with a slope guide for the expected order
 //! and the precision floor marked, and the JSON of every number.
 
-use super::number::{bound_text, sig};
+use super::number::{self, bound_text, sig};
 use super::plot::{self, Corner, Panel, Series, Style};
 use super::table;
 use crate::algo::convergence::{FitOutcome, Row, Status, Study};
-use crate::scalar::certify::format_float_digits;
+
 use rug::float::Round;
 use serde_json::json;
 
@@ -33,7 +33,11 @@ pub fn files(study: &Study, d: &Described) -> Vec<(String, String)> {
 
 /// The sampled maximum with the digits its two precisions agree on (at most `cap`).
 fn sampled_text(r: &Row, cap: u32) -> String {
-    format_float_digits(&r.sampled.1, r.sampled_digits().clamp(1, cap))
+    number::float_in(
+        &r.sampled.1,
+        r.sampled_digits().clamp(1, cap),
+        number::Notation::Scientific,
+    )
 }
 
 fn proven_text(r: &Row) -> String {
@@ -56,8 +60,9 @@ fn status_text(r: &Row) -> &'static str {
 }
 
 fn f64_text(r: &Row) -> String {
-    r.f64_error
-        .map_or("not finite in f64".into(), |e| sig(e, 4))
+    r.f64_error.map_or("not finite in f64".into(), |e| {
+        number::sig_in(e, 4, number::Notation::Scientific)
+    })
 }
 
 fn table_rows(study: &Study) -> Vec<Vec<String>> {
@@ -67,9 +72,12 @@ fn table_rows(study: &Study) -> Vec<Vec<String>> {
         .zip(&study.orders)
         .map(|(r, o)| {
             let order = o.as_ref().map_or("—".into(), |o| match o.proven {
-                Some((lo, hi)) if hi - lo > 1e-3 => {
-                    format!("{} ∈ [{lo:.3}, {hi:.3}]", order_text(o.value))
-                }
+                Some((lo, hi)) if hi - lo > 1e-3 => format!(
+                    "{} ∈ [{}, {}]",
+                    order_text(o.value),
+                    number::bound(lo, 4, Round::Down),
+                    number::bound(hi, 4, Round::Up)
+                ),
                 _ => order_text(o.value),
             });
             let mut row = vec![r.segments.to_string()];
@@ -94,14 +102,12 @@ fn table_rows(study: &Study) -> Vec<Vec<String>> {
         .collect()
 }
 
-/// An order to four decimals ("0.0000", never "-0.0000").
+/// An order to five significant digits ("0" for zero, never "-0").
 fn order_text(value: f64) -> String {
-    let text = format!("{value:.4}");
-    if text == "-0.0000" {
-        "0.0000".into()
-    } else {
-        text
+    if value == 0.0 {
+        return "0".into();
     }
+    sig(value, 5)
 }
 
 fn fit_lines(study: &Study) -> Vec<String> {

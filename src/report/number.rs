@@ -30,6 +30,11 @@ pub enum Notation {
 /// `x` rounded to `digits` significant digits in `notation` ("0" for zero; "NaN", "inf",
 /// "-inf" as such).
 fn style(x: &Float, digits: u32, notation: Notation) -> String {
+    style_rounded(x, digits, notation, Round::Nearest)
+}
+
+/// [`style`] with the decimal rounding direction given.
+fn style_rounded(x: &Float, digits: u32, notation: Notation, round: Round) -> String {
     if x.is_zero() {
         return "0".into();
     }
@@ -43,7 +48,7 @@ fn style(x: &Float, digits: u32, notation: Notation) -> String {
         };
     }
     let (negative, mantissa, exp) =
-        x.to_sign_string_exp_round(10, Some(digits.max(1) as usize), Round::Nearest);
+        x.to_sign_string_exp_round(10, Some(digits.max(1) as usize), round);
     let point = exp.unwrap_or(0) as i64; // value = 0.mantissa × 10^point
     let sign = if negative { "-" } else { "" };
     let k = mantissa.len() as i64;
@@ -193,6 +198,17 @@ pub fn bound_text(x: &rug::Float, digits: usize, round: rug::float::Round) -> St
     let (lead, rest) = mantissa.split_at(1.min(mantissa.len()));
     let text = format!("{}{lead}.{rest}e{e}", if negative { "-" } else { "" });
     audit::bound(&text, x, round);
+    text
+}
+
+/// A bound `x` in the report style with `digits` significant digits, rounded outward
+/// (`Round::Down` for a lower bound, `Round::Up` for an upper one), so it is still a bound.
+pub fn bound(x: f64, digits: u32, round: Round) -> String {
+    let value = Float::with_val(53, x);
+    let text = style_rounded(&value, digits, Notation::Auto, round);
+    if x.is_finite() {
+        audit::bound(&text, &value, round);
+    }
     text
 }
 
@@ -383,6 +399,122 @@ pub mod audit {
                 r.wrong.push(format!("{text} (bound of {value})"));
             }
         });
+    }
+
+    /// Each decimal number of `text` with its sign, and whether it is exact as written (an
+    /// integer, or part of a fraction such as 3/19).
+    fn tokens(text: &str) -> Vec<(String, bool)> {
+        let mut out = Vec::new();
+        let mut rest = text;
+        while let Some((before, token, after)) = super::next_number(rest) {
+            let exact =
+                !token.contains(['.', 'e', 'E']) || before.ends_with('/') || after.starts_with('/');
+            let negative = before.ends_with('-') || before.ends_with('−');
+            out.push((format!("{}{token}", if negative { "-" } else { "" }), exact));
+            rest = after;
+        }
+        out
+    }
+
+    /// The problems of one Markdown report against the record: every decimal number of a table
+    /// cell (outside the claims ledger, whose evidence columns are prose, and the first
+    /// column, which labels the row) must be the formatter's output shown to its digits, or a
+    /// printed value; one notation per column; nowhere more than ten significant digits or a
+    /// long run of leading zeros. Empty when the report is sound; call after rendering it.
+    pub fn check(markdown: &str) -> Vec<String> {
+        let record = record();
+        let mut problems: Vec<String> = record
+            .wrong
+            .iter()
+            .map(|w| format!("a number that does not show its value: {w}"))
+            .collect();
+        let mut table: Option<Table> = None;
+        for line in markdown.lines() {
+            // Outside code spans (claim ids such as `phodcos.table1.n16`).
+            let prose: String = line.split('`').step_by(2).collect::<Vec<_>>().join(" ");
+            for (token, _) in tokens(&prose).into_iter().filter(|(_, exact)| !exact) {
+                let (significant, tiny_plain) = super::token_shape(&token);
+                if significant > super::PROSE_DIGITS || tiny_plain {
+                    problems.push(format!("{token} in: {line}"));
+                }
+            }
+            if !line.starts_with('|') {
+                if let Some(t) = table.take() {
+                    problems.extend(t.mixed_columns());
+                }
+                continue;
+            }
+            let cells: Vec<&str> = line.trim_matches('|').split(" | ").map(str::trim).collect();
+            match table.as_mut() {
+                None => table = Some(Table::new(&cells)),
+                Some(t) => problems.extend(t.row(&cells, line, &record)),
+            }
+        }
+        if let Some(t) = table.take() {
+            problems.extend(t.mixed_columns());
+        }
+        problems
+    }
+
+    /// One Markdown table being checked: its columns' notations so far.
+    struct Table {
+        ledger: bool,
+        columns: Vec<Vec<(bool, String)>>,
+    }
+
+    impl Table {
+        fn new(header: &[&str]) -> Self {
+            Table {
+                ledger: header.starts_with(&["id", "location", "published", "reproduced"]),
+                columns: vec![Vec::new(); header.len()],
+            }
+        }
+
+        /// The problems of one row; the separator row and the ledger's rows have none.
+        fn row(&mut self, cells: &[&str], line: &str, record: &Record) -> Vec<String> {
+            let mut problems = Vec::new();
+            if self.ledger || cells.iter().all(|c| c.chars().all(|ch| "-|".contains(ch))) {
+                return problems;
+            }
+            for (k, cell) in cells.iter().enumerate().skip(1) {
+                let bare = cell.trim_end_matches([' ', '✓', '≈', '✗']);
+                if record.printed.contains(bare) {
+                    continue;
+                }
+                let found = tokens(bare);
+                for (token, exact) in &found {
+                    if !exact && !record.formatted.contains(token) {
+                        problems.push(format!(
+                            "{token} (cell '{cell}') is not the formatter's: {line}"
+                        ));
+                    }
+                }
+                // A single number in the cell, the formatter's (an integer count is not);
+                // zero has no notation.
+                if let [(single, exact)] = found.as_slice() {
+                    if single != "0" && (!exact || record.formatted.contains(single)) {
+                        if let Some(col) = self.columns.get_mut(k) {
+                            col.push((single.contains('e'), single.clone()));
+                        }
+                    }
+                }
+            }
+            problems
+        }
+
+        fn mixed_columns(self) -> Vec<String> {
+            self.columns
+                .into_iter()
+                .filter(|col| {
+                    let scientific = col.iter().filter(|(s, _)| *s).count();
+                    scientific > 0 && scientific < col.len()
+                })
+                .map(|col| {
+                    let texts: Vec<&String> = col.iter().map(|(_, t)| t).collect();
+                    format!("a column mixes notations: {texts:?}")
+                })
+                .collect()
+        }
     }
 
     /// A value the paper prints, shown verbatim.
