@@ -44,6 +44,7 @@
 //! 0.866666666666666667 ± 4.6e-19, which contains it.
 
 use super::certify::format_float_digits;
+use super::mpfr::precision;
 use super::{BigRational, Field, Real};
 use rug::float::{Constant, Round};
 use rug::Float;
@@ -521,18 +522,35 @@ impl Field for Ball {
         format!("ball:{bits}")
     }
     fn from_i64(v: i64, bits: &u32) -> Self {
-        Ball::rounded(Float::with_val_round(*bits, v, Round::Nearest), 0.0)
+        Ball::rounded(
+            Float::with_val_round(precision(*bits), v, Round::Nearest),
+            0.0,
+        )
     }
     fn from_ratio(n: i64, d: i64, bits: &u32) -> Self {
         let q = rug::Rational::from((n, d));
-        Ball::rounded(Float::with_val_round(*bits, &q, Round::Nearest), 0.0)
+        Ball::rounded(
+            Float::with_val_round(precision(*bits), &q, Round::Nearest),
+            0.0,
+        )
     }
     fn from_rational(q: &BigRational, bits: &u32) -> Self {
         let q = super::mpfr::to_gmp_rational(q);
-        Ball::rounded(Float::with_val_round(*bits, &q, Round::Nearest), 0.0)
+        Ball::rounded(
+            Float::with_val_round(precision(*bits), &q, Round::Nearest),
+            0.0,
+        )
     }
     fn from_f64(v: f64, bits: &u32) -> Self {
-        Ball::rounded(Float::with_val_round(*bits, v, Round::Nearest), 0.0)
+        // NaN is no number: the ball of every number (not an exact ball around NaN), which
+        // `is_finite` reports.
+        if v.is_nan() {
+            return Ball::new(Float::with_val(precision(*bits), 0), f64::INFINITY);
+        }
+        Ball::rounded(
+            Float::with_val_round(precision(*bits), v, Round::Nearest),
+            0.0,
+        )
     }
     fn abs(&self) -> Self {
         // ||x| − |m|| ≤ |x − m|: the same radius encloses every |x|.
@@ -659,12 +677,12 @@ impl Real for Ball {
     }
     fn pi(bits: &u32) -> Self {
         Ball::rounded(
-            Float::with_val_round(*bits, Constant::Pi, Round::Nearest),
+            Float::with_val_round(precision(*bits), Constant::Pi, Round::Nearest),
             0.0,
         )
     }
     fn epsilon(bits: &u32) -> Self {
-        Ball::exact(Float::with_val(*bits, 1) >> (*bits as i32 - 1))
+        Ball::exact(Float::with_val(precision(*bits), 1) >> (*bits as i32 - 1))
     }
     fn precision_bits(bits: &u32) -> u32 {
         *bits

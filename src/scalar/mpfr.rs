@@ -48,6 +48,13 @@ pub fn rational_to_f64(q: &BigRational) -> f64 {
     Float::with_val(53, &to_gmp_rational(q)).to_f64()
 }
 
+/// A precision MPFR accepts: `bits` clamped to [`rug::float::prec_min`],
+/// [`rug::float::prec_max`] (a context of 0 bits would make MPFR abort), so the `Field`
+/// constructors of `Float` and `Ball` never panic.
+pub fn precision(bits: u32) -> u32 {
+    bits.clamp(rug::float::prec_min(), rug::float::prec_max())
+}
+
 impl Field for Float {
     type Ctx = u32;
 
@@ -61,16 +68,16 @@ impl Field for Float {
         Some(2f64.powi(-(*bits as i32).min(1074)))
     }
     fn from_i64(v: i64, bits: &u32) -> Self {
-        Float::with_val(*bits, v)
+        Float::with_val(precision(*bits), v)
     }
     fn from_ratio(n: i64, d: i64, bits: &u32) -> Self {
-        Float::with_val(*bits, Rational::from((n, d)))
+        Float::with_val(precision(*bits), Rational::from((n, d)))
     }
     fn from_rational(q: &BigRational, bits: &u32) -> Self {
-        Float::with_val(*bits, &to_gmp_rational(q))
+        Float::with_val(precision(*bits), &to_gmp_rational(q))
     }
     fn from_f64(v: f64, bits: &u32) -> Self {
-        Float::with_val(*bits, v)
+        Float::with_val(precision(*bits), v)
     }
     fn abs(&self) -> Self {
         self.clone().abs()
@@ -119,11 +126,11 @@ impl Real for Float {
         self.clone().log2()
     }
     fn pi(bits: &u32) -> Self {
-        Float::with_val(*bits, Constant::Pi)
+        Float::with_val(precision(*bits), Constant::Pi)
     }
     fn epsilon(bits: &u32) -> Self {
         // 2^(1−p)
-        Float::with_val(*bits, 1) >> (*bits as i32 - 1)
+        Float::with_val(precision(*bits), 1) >> (*bits as i32 - 1)
     }
     fn precision_bits(bits: &u32) -> u32 {
         *bits

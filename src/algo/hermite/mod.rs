@@ -102,7 +102,8 @@ impl<T: Field> HermiteData<T> {
                 end: end.len(),
             });
         }
-        if t1 <= t0 {
+        // Written so that NaN (which compares false both ways) is refused too.
+        if t0.partial_cmp(&t1) != Some(std::cmp::Ordering::Less) {
             return Err(HermiteError::EmptyInterval);
         }
         Ok(HermiteData { start, end, t0, t1 })

@@ -57,6 +57,39 @@ fn step<T: Field>(h: &[T], p: &[T], lambda: &T) -> Vec<T> {
 pub const DESCENT_TOLERANCE: f64 = 1e-6;
 /// … or after this many iterations.
 pub const DESCENT_MAX_ITERATIONS: usize = 5000;
+/// The shape of a problem: at least two points, every component with the same number of
+/// points, one weight α per component and `spacings` = points − 1 (so no entry point indexes
+/// past its data).
+///
+/// # Errors
+/// [`SplineError::TooFewKnots`], [`SplineError::LengthMismatch`] or
+/// [`SplineError::WeightCount`], naming what differs.
+pub fn check_problem<T>(spacings: usize, z: &[Vec<T>], alpha: &[T]) -> Result<(), SplineError> {
+    let n = z.first().map_or(0, Vec::len);
+    if n < 2 {
+        return Err(SplineError::TooFewKnots);
+    }
+    if let Some(c) = z.iter().find(|c| c.len() != n) {
+        return Err(SplineError::LengthMismatch {
+            knots: n,
+            values: c.len(),
+        });
+    }
+    if alpha.len() != z.len() {
+        return Err(SplineError::WeightCount {
+            weights: alpha.len(),
+            components: z.len(),
+        });
+    }
+    if spacings != n - 1 {
+        return Err(SplineError::LengthMismatch {
+            knots: spacings + 1,
+            values: n,
+        });
+    }
+    Ok(())
+}
+
 /// The most Newton steps [`polish`] takes (it stops earlier when a step no longer changes h).
 pub const NEWTON_MAX_STEPS: usize = 60;
 
@@ -87,6 +120,7 @@ pub fn polish<T: Real>(
     alpha: &[T],
     form: Objective,
 ) -> Result<Vec<T>, SplineError> {
+    check_problem(rough.h.len(), z, alpha)?;
     let ctx = alpha[0].ctx();
     let start = rough.h.iter().map(|x| T::from_f64(*x, &ctx)).collect();
     newton_polish(start, z, alpha, form, NEWTON_MAX_STEPS)
@@ -113,6 +147,7 @@ pub fn refine<T: Real>(
     alpha: &[T],
     form: Objective,
 ) -> Result<Minimum<T>, SplineError> {
+    check_problem(rough.h.len(), z, alpha)?;
     let ctx = alpha[0].ctx();
     let h = polish(rough, z, alpha, form)?;
     let objective_at = objective(&h, z, alpha, form)?;
@@ -160,6 +195,7 @@ pub fn gradient_projection_observed<T: Real>(
     max_iterations: usize,
     observe: &mut dyn FnMut(usize, &[T]),
 ) -> Result<Descent<T>, SplineError> {
+    check_problem(h0.len(), z, alpha)?;
     let ctx = h0[0].ctx();
     let zero = T::zero_in(&ctx);
     let mut h = h0;

@@ -25,6 +25,14 @@ pub enum SplineError {
         /// Number of values.
         values: usize,
     },
+    #[error("{weights} weights α for {components} components")]
+    /// A weight count that differs from the number of components.
+    WeightCount {
+        /// Number of weights α.
+        weights: usize,
+        /// Number of components.
+        components: usize,
+    },
     #[error("knot #{index} is not greater than the knot before it")]
     /// Knots that do not increase strictly.
     NotIncreasing {

@@ -68,10 +68,17 @@ pub fn objective<T: Field>(
 
 /// Normalized accumulated chord length (Eq. 5) as a spacing h: hᵢ = dᵢ / Σⱼ dⱼ with dᵢ the
 /// Euclidean distance between points i−1 and i, the points given by their `components`
-/// (`z[l][i]` is coordinate l of point i).
+/// (`z[l][i]` is coordinate l of point i). Fewer than two points have no spacing (empty);
+/// components of different lengths are read to the shortest; coincident points (total length
+/// zero) get the uniform spacing.
 pub fn chord_length_spacing<T: crate::scalar::Real>(components: &[Vec<T>]) -> Vec<T> {
-    let ctx = components[0][0].ctx();
-    let n = components[0].len();
+    let Some(ctx) = components.first().and_then(|c| c.first()).map(|x| x.ctx()) else {
+        return Vec::new();
+    };
+    let n = components.iter().map(Vec::len).min().unwrap_or(0);
+    if n < 2 {
+        return Vec::new();
+    }
     let d: Vec<T> = (1..n)
         .map(|i| {
             let mut sq = T::zero_in(&ctx);
@@ -83,5 +90,9 @@ pub fn chord_length_spacing<T: crate::scalar::Real>(components: &[Vec<T>]) -> Ve
         })
         .collect();
     let total = d.iter().fold(T::zero_in(&ctx), |a, x| a + x);
+    if total.is_zero() {
+        let uniform = T::one_in(&ctx) / &T::from_i64(d.len() as i64, &ctx);
+        return vec![uniform; d.len()];
+    }
     d.iter().map(|x| x.clone() / &total).collect()
 }

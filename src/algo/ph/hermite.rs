@@ -153,6 +153,15 @@ pub enum PhHermiteError {
     /// The number of free τ parameters given and the number the data need.
     #[error("{0} free τ parameters given where the data need {1}")]
     FreeCount(usize, usize),
+    /// A conversion asked for no segment.
+    #[error("a conversion needs at least one segment")]
+    NoSegments,
+    /// A conversion interval [a, b] without a < b (reversed, empty or NaN).
+    #[error("the interval [a, b] needs a < b")]
+    Interval,
+    /// Data that are not finite (the curve undefined or overflowing at a segment end).
+    #[error("the Hermite data are not finite at segment end {0}")]
+    NotFinite(usize),
 }
 
 /// How step 5 chooses A_m.

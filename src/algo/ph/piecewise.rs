@@ -133,6 +133,11 @@ pub fn segment_data<T: Real, C: Curve<T> + ?Sized>(
 /// Convert `curve` on `segments` uniform pieces of [a, b] with C^m interpolants (m = 4:
 /// PHODCOS; m = 2: the C² baseline) and free parameters `free` on every segment; with
 /// `roll`, apply the roll correction of Eq. (22) so A, R and ω are continuous.
+///
+/// # Errors
+/// [`PhHermiteError::NoSegments`] for `segments` = 0, [`PhHermiteError::Interval`] unless
+/// a < b, [`PhHermiteError::NotFinite`] where the curve or its derivatives are not finite at
+/// a segment end (e.g. `sqrt(t − 10)` on [0, 1]), or the first segment's interpolation error.
 pub fn convert<T: Real, C: Curve<T> + ?Sized>(
     curve: &C,
     a: &T,
@@ -142,7 +147,19 @@ pub fn convert<T: Real, C: Curve<T> + ?Sized>(
     free: &FreeParameters<T>,
     roll: bool,
 ) -> Result<PiecewisePh<T>, PhHermiteError> {
+    if segments == 0 {
+        return Err(PhHermiteError::NoSegments);
+    }
+    if a.partial_cmp(b) != Some(std::cmp::Ordering::Less) {
+        return Err(PhHermiteError::Interval);
+    }
     let data = segment_data(curve, a, b, segments, m);
+    let finite = |v: &[T; 3]| v.iter().all(Field::is_finite);
+    if let Some(k) = data.iter().position(|d| {
+        !(finite(&d.p_b) && finite(&d.p_e) && d.start.iter().chain(&d.end).all(finite))
+    }) {
+        return Err(PhHermiteError::NotFinite(k));
+    }
     let mut pieces = data
         .par_iter()
         .map(carried(|d| interpolate(d, free)))
