@@ -1,19 +1,24 @@
 //! Hostile calls of the public API, each under `catch_unwind`: a call must return an error (or
 //! a documented answer), never panic, and never return `Ok` holding NaN.
 //!
-//! This covers part of the calls found by trying the library as an engineer would. Still
-//! open (they panic or answer NaN today): `Bernstein::new` with no control point or t₀ = t₁,
-//! `BigRational::from_ratio(1, 0, &())`, `Knots::at(0)`, `GerbsPath::at` outside [0, 1] or at
-//! NaN, `PhCurve::new(vec![], …)`, and struct literals of `HermiteData` / `PiecewisePh`, whose
-//! fields are public.
+//! This covers most of the calls found by trying the library as an engineer would. Still
+//! open: `BigRational::from_ratio(1, 0, &())` (the `Field` constructors cannot fail),
+//! `Knots::at(0)` (1-based), and struct literals of `Bernstein`, `PiecewisePh` and
+//! `PathSpec`, whose fields are public (`HermiteData::solve` re-checks its fields).
 
 use std::panic::{catch_unwind, AssertUnwindSafe};
+use trajverify::algo::gerbs::bfbs::Bfbs;
+use trajverify::algo::gerbs::path::{ArcConvention, EndCurves, GerbsPath, PathSpec};
+use trajverify::algo::gerbs::Side;
 use trajverify::algo::param::descent::{descend, refine};
 use trajverify::algo::param::objective::{chord_length_spacing, Objective};
 use trajverify::algo::ph::hermite::{FreeParameters, PhHermiteError};
 use trajverify::algo::ph::piecewise::convert;
+use trajverify::algo::ph::PhCurve;
 use trajverify::curve::ExprCurve;
+use trajverify::numeric::poly::Bernstein;
 use trajverify::scalar::ball::Ball;
+use trajverify::scalar::BigRational;
 use trajverify::scalar::{Field, Float};
 use trajverify::HermiteData;
 
@@ -108,4 +113,48 @@ fn marin_entry_points_check_their_shapes() {
     assert!(refined.is_err());
     let refined = refine(&rough, &z, &[1.0, 1.0], Objective::Exact).expect("refines");
     assert!(refined.knots.iter().all(|t| t.is_finite()));
+}
+
+#[test]
+fn bernstein_polynomials_need_points_and_an_interval() {
+    assert!(no_panic("empty", || Bernstein::<f64>::new(vec![], 0.0, 1.0)).is_err());
+    let q = |n: i64| BigRational::from_integer(n.into());
+    assert!(no_panic("t0 = t1", || Bernstein::new(vec![q(1)], q(1), q(1))).is_err());
+    assert!(no_panic("NaN", || Bernstein::new(vec![1.0], 0.0, f64::NAN)).is_err());
+    // A struct literal of Hermite data with no points is refused when solved.
+    let data = HermiteData::<f64> {
+        start: vec![],
+        end: vec![],
+        t0: 0.0,
+        t1: 1.0,
+    };
+    assert!(no_panic("solve of empty data", || data.solve()).is_err());
+}
+
+#[test]
+fn a_ph_curve_needs_a_preimage() {
+    let r = no_panic("PhCurve::new(vec![])", || {
+        PhCurve::<f64>::new(vec![], [0.0; 3])
+    });
+    assert!(r.is_err());
+}
+
+#[test]
+fn a_gerbs_path_is_evaluated_on_its_knots_only() {
+    let spec = PathSpec {
+        waypoints: vec![[0.0, 0.0], [300.0, 100.0], [600.0, -50.0]],
+        radius: 80.0,
+        theta_o: std::f64::consts::FRAC_PI_8,
+        line_length: None,
+        convention: ArcConvention::TurnDirection,
+        turns: None,
+        end_curves: EndCurves::default(),
+    };
+    let path = GerbsPath::new(&spec, Bfbs::uniform(2, 3).expect("exponents")).expect("a path");
+    for t in [2.0, -0.5, f64::NAN] {
+        let r = no_panic("GerbsPath::at", || path.at(&t, Side::Right));
+        assert!(r.is_err(), "t = {t} answered");
+    }
+    let inside = path.at(&0.3, Side::Right).expect("inside");
+    assert!(inside.curvature.is_finite() && inside.point.iter().all(|x| x.is_finite()));
 }

@@ -447,10 +447,17 @@ impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
     }
 
     /// Point, derivatives and curvature at t (one-sided at a knot, decided on t as given).
-    pub fn at(&self, t: &T, side: Side) -> PathPoint<T> {
+    ///
+    /// # Errors
+    /// [`GerbsError::Parameter`] (field `t`) for t outside [t_1, t_{n+2}] or NaN: the path is
+    /// defined on its knots only.
+    pub fn at(&self, t: &T, side: Side) -> Result<PathPoint<T>, GerbsError> {
         match self.knots.interval(t, side) {
-            Some(j) => self.at_on(t, j),
-            None => self.point_from(t, self.series(t, 3, side)),
+            Some(j) => Ok(self.at_on(t, j)),
+            None => Err(GerbsError::Parameter {
+                field: "t",
+                message: "outside the knot vector's range (or not a number)".into(),
+            }),
         }
     }
 
@@ -516,7 +523,12 @@ impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
                     };
                     self.at_on(&t, j)
                 } else {
-                    self.at(&t, if i == last { Side::Left } else { Side::Right })
+                    // t = i/last lies in [0, 1] = [t_1, t_{n+2}]: its interval exists.
+                    let side = if i == last { Side::Left } else { Side::Right };
+                    match self.knots.interval(&t, side) {
+                        Some(j) => self.at_on(&t, j),
+                        None => self.point_from(&t, self.series(&t, 3, side)),
+                    }
                 }
             })
             .collect()

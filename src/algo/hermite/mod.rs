@@ -93,20 +93,27 @@ pub struct HermiteData<T> {
 impl<T: Field> HermiteData<T> {
     /// Check the shape: non-empty, equal lengths, t₁ > t₀.
     pub fn new(start: Vec<T>, end: Vec<T>, t0: T, t1: T) -> Result<Self, HermiteError> {
-        if start.is_empty() || end.is_empty() {
+        let data = HermiteData { start, end, t0, t1 };
+        data.check()?;
+        Ok(data)
+    }
+
+    /// The shape `new` checks, checked again where the fields may have been set directly.
+    fn check(&self) -> Result<(), HermiteError> {
+        if self.start.is_empty() || self.end.is_empty() {
             return Err(HermiteError::Empty);
         }
-        if start.len() != end.len() {
+        if self.start.len() != self.end.len() {
             return Err(HermiteError::LengthMismatch {
-                start: start.len(),
-                end: end.len(),
+                start: self.start.len(),
+                end: self.end.len(),
             });
         }
         // Written so that NaN (which compares false both ways) is refused too.
-        if t0.partial_cmp(&t1) != Some(std::cmp::Ordering::Less) {
+        if self.t0.partial_cmp(&self.t1) != Some(std::cmp::Ordering::Less) {
             return Err(HermiteError::EmptyInterval);
         }
-        Ok(HermiteData { start, end, t0, t1 })
+        Ok(())
     }
 
     /// m, the highest derivative constrained at each end.
@@ -121,6 +128,7 @@ impl<T: Field> HermiteData<T> {
 
     /// The control points of the interpolating polynomial of degree 2m+1 (Eq. 18).
     pub fn solve(&self) -> Result<Bernstein<T>, HermiteError> {
+        self.check()?;
         let m = self.derivatives();
         let scales = derivative_scales(m, &self.t0, &self.t1)?;
         let scaled =
@@ -128,7 +136,12 @@ impl<T: Field> HermiteData<T> {
         let head = anti_difference(&scaled(&self.start)); // p₀…pₘ
         let tail = backward_anti_difference(&scaled(&self.end)); // pₘ₊₁…pₙ
         let points = head.into_iter().chain(tail).collect();
-        Ok(Bernstein::new(points, self.t0.clone(), self.t1.clone()))
+        Bernstein::new(points, self.t0.clone(), self.t1.clone()).map_err(|e| match e {
+            crate::numeric::poly::bernstein::BernsteinError::Empty => HermiteError::Empty,
+            crate::numeric::poly::bernstein::BernsteinError::Interval => {
+                HermiteError::EmptyInterval
+            }
+        })
     }
 }
 

@@ -153,6 +153,9 @@ pub enum PhHermiteError {
     /// The number of free τ parameters given and the number the data need.
     #[error("{0} free τ parameters given where the data need {1}")]
     FreeCount(usize, usize),
+    /// A preimage with no control point, or of a degree beyond `MAX_PREIMAGE_DEGREE`.
+    #[error("a PH preimage needs 1 to 31 control points (degree ≤ 30), got {0}")]
+    PreimageDegree(usize),
     /// A conversion asked for no segment.
     #[error("a conversion needs at least one segment")]
     NoSegments,
@@ -249,7 +252,7 @@ pub fn interpolate_with<T: Real>(
     for aj in &mut a {
         *aj = back.mul(aj);
     }
-    Ok(PhCurve::new(a, data.p_b.clone()))
+    PhCurve::new(a, data.p_b.clone())
 }
 
 /// Step 4 of Algorithm 1: A_k from h_k (start) and A_{n−k} from h_{2n−k} (end), k = 1 … m−1,

@@ -88,12 +88,15 @@ pub struct FrameState<T> {
 
 impl<T: Field> PhCurve<T> {
     /// The PH curve with hodograph A(ξ) ⋆ A(ξ) from the Bernstein preimage `preimage`, starting at `start`.
-    pub fn new(preimage: Vec<Quat<T>>, start: [T; 3]) -> Self {
-        assert!(
-            !preimage.is_empty() && preimage.len() <= MAX_PREIMAGE_DEGREE + 1,
-            "preimage degree out of range"
-        );
-        PhCurve { preimage, start }
+    ///
+    /// # Errors
+    /// [`hermite::PhHermiteError::PreimageDegree`] without a control point, or with more than
+    /// `MAX_PREIMAGE_DEGREE + 1`.
+    pub fn new(preimage: Vec<Quat<T>>, start: [T; 3]) -> Result<Self, hermite::PhHermiteError> {
+        if preimage.is_empty() || preimage.len() > MAX_PREIMAGE_DEGREE + 1 {
+            return Err(hermite::PhHermiteError::PreimageDegree(preimage.len()));
+        }
+        Ok(PhCurve { preimage, start })
     }
     /// n, the degree of the preimage.
     pub fn preimage_degree(&self) -> usize {
@@ -279,7 +282,8 @@ mod tests {
                 q([1, 1, 1, 1]),
             ],
             [0, 0, 0].map(|x: i64| BigRational::from_integer(x.into())),
-        );
+        )
+        .unwrap();
         let h = c.hodograph();
         let s = c.speed_coefficients();
         for xi in [(1, 3), (2, 7), (5, 4)] {
@@ -305,7 +309,8 @@ mod tests {
                 Quat::new(-0.3, 0.5, 1.1, 0.0),
             ],
             [0.0; 3],
-        );
+        )
+        .unwrap();
         let pts = c.control_points();
         let xi = 0.37;
         let st = c.frame_state(&pts, &xi);

@@ -14,6 +14,17 @@ use super::differences::{backward_differences, forward_differences};
 use super::{binomial, falling_factorial, int_in};
 use crate::scalar::{powi, Field};
 
+/// Why control points and an interval do not make a Bernstein polynomial.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum BernsteinError {
+    /// No control point.
+    #[error("a Bernstein polynomial needs at least one control point")]
+    Empty,
+    /// An interval without t₀ < t₁.
+    #[error("the interval [t0, t1] needs t0 < t1")]
+    Interval,
+}
+
 /// A scalar polynomial of degree n = `control_points.len() − 1` on [t₀, t₁].
 #[derive(Clone, Debug, PartialEq)]
 pub struct Bernstein<T> {
@@ -36,17 +47,44 @@ pub fn basis<T: Field>(n: usize, k: usize, t: &T, t0: &T, t1: &T) -> T {
 }
 
 impl<T: Field> Bernstein<T> {
-    /// A polynomial from its control points on [t₀, t₁]. Needs at least one control point
-    /// and t₀ ≠ t₁ (the callers that take user input check t₀ < t₁ first).
-    pub fn new(control_points: Vec<T>, t0: T, t1: T) -> Self {
-        assert!(
-            !control_points.is_empty(),
-            "a Bernstein polynomial needs a control point"
-        );
-        Bernstein {
+    /// A polynomial from its control points on [t₀, t₁].
+    ///
+    /// # Errors
+    /// [`BernsteinError::Empty`] without a control point; [`BernsteinError::Interval`] unless
+    /// t₀ < t₁ (equal ends would divide by zero, NaN compares neither way).
+    ///
+    /// # Examples
+    /// ```
+    /// use trajverify::numeric::poly::Bernstein;
+    /// use trajverify::scalar::BigRational;
+    /// let q = |n: i64| BigRational::from_integer(n.into());
+    /// // The Fig. 2 control points of paper 000 on [0, 1]: B(1/2) = 1/2 exactly.
+    /// let b = Bernstein::new(vec![q(0), q(0), q(0), q(1), q(1), q(1)], q(0), q(1)).unwrap();
+    /// assert_eq!(b.eval(&BigRational::new(1.into(), 2.into())), BigRational::new(1.into(), 2.into()));
+    /// assert!(Bernstein::<f64>::new(vec![], 0.0, 1.0).is_err());
+    /// assert!(Bernstein::new(vec![1.0], 1.0, 1.0).is_err());
+    /// ```
+    pub fn new(control_points: Vec<T>, t0: T, t1: T) -> Result<Self, BernsteinError> {
+        if control_points.is_empty() {
+            return Err(BernsteinError::Empty);
+        }
+        if t0.partial_cmp(&t1) != Some(std::cmp::Ordering::Less) {
+            return Err(BernsteinError::Interval);
+        }
+        Ok(Bernstein {
             control_points,
             t0,
             t1,
+        })
+    }
+
+    /// A polynomial on this one's interval (valid by construction: the interval was checked,
+    /// and `control_points` is never empty where it is called).
+    fn on_same_interval(&self, control_points: Vec<T>) -> Bernstein<T> {
+        Bernstein {
+            control_points,
+            t0: self.t0.clone(),
+            t1: self.t1.clone(),
         }
     }
 
@@ -84,7 +122,7 @@ impl<T: Field> Bernstein<T> {
         let ctx = self.t0.ctx();
         let n = self.degree();
         if n == 0 {
-            return Bernstein::new(vec![T::zero_in(&ctx)], self.t0.clone(), self.t1.clone());
+            return self.on_same_interval(vec![T::zero_in(&ctx)]);
         }
         let scale = T::from_i64(n as i64, &ctx) / &self.duration();
         let points = self
@@ -92,7 +130,7 @@ impl<T: Field> Bernstein<T> {
             .windows(2)
             .map(|w| (w[1].clone() - &w[0]) * &scale)
             .collect();
-        Bernstein::new(points, self.t0.clone(), self.t1.clone())
+        self.on_same_interval(points)
     }
 
     /// The j-th derivative dʲB/dtʲ as a polynomial (repeated [`Self::derivative`]).
@@ -105,14 +143,14 @@ impl<T: Field> Bernstein<T> {
     pub fn derivative_closed_form(&self, j: usize) -> Bernstein<T> {
         let ctx = self.t0.ctx();
         if j > self.degree() {
-            return Bernstein::new(vec![T::zero_in(&ctx)], self.t0.clone(), self.t1.clone());
+            return self.on_same_interval(vec![T::zero_in(&ctx)]);
         }
         let factor = self.derivative_factor(j);
         let n = self.degree();
         let points = (0..=n - j)
             .map(|k| forward_differences(&self.control_points[k..=k + j])[j].clone() * &factor)
             .collect();
-        Bernstein::new(points, self.t0.clone(), self.t1.clone())
+        self.on_same_interval(points)
     }
 
     /// The factor n!/(n−j)!/(t₁−t₀)ʲ of Eqs. 13–15.
@@ -178,7 +216,7 @@ impl<T: Field> Bernstein<T> {
                 }
             })
             .collect();
-        Bernstein::new(points, self.t0.clone(), self.t1.clone())
+        self.on_same_interval(points)
     }
 
     /// Elevate `times` times.
@@ -261,7 +299,7 @@ mod tests {
     }
 
     fn sample() -> Bernstein<BigRational> {
-        Bernstein::new(vec![q(1, 1), q(-2, 1), q(3, 2), q(5, 1)], q(1, 1), q(3, 1))
+        Bernstein::new(vec![q(1, 1), q(-2, 1), q(3, 2), q(5, 1)], q(1, 1), q(3, 1)).unwrap()
     }
 
     #[test]

@@ -31,8 +31,12 @@ pub(super) fn knot_data<B: Blend<Float>>(path: &GerbsPath<Float, B>, bits: u32) 
     let mut rate_jump = Float::with_val(bits, 0);
     for i in 0..n {
         let t = path.knots.at(i + 2).clone();
-        let right = path.at(&t, if i == n - 1 { Side::Left } else { Side::Right });
-        let left = path.at(&t, if i == 0 { Side::Right } else { Side::Left });
+        let right = path
+            .at(&t, if i == n - 1 { Side::Left } else { Side::Right })
+            .expect("t within the knots");
+        let left = path
+            .at(&t, if i == 0 { Side::Right } else { Side::Left })
+            .expect("t within the knots");
         let d = ((right.point[0].clone() - &w[i][0]).square()
             + (right.point[1].clone() - &w[i][1]).square())
         .sqrt();
@@ -183,7 +187,10 @@ fn largest_gap(t_star: f64, bits: u32) -> (Float, Float) {
     let dot = |u: &[Float; 2], v: &[Float; 2]| u[0].clone() * &v[0] + u[1].clone() * &v[1];
     let small = Float::with_val(bits, Float::i_exp(1, 8 - bits as i32));
     for _ in 0..40 {
-        let (a, b) = (bp.at(&t, Side::Right), ep.at(&t, Side::Right));
+        let (a, b) = (
+            bp.at(&t, Side::Right).expect("t within the knots"),
+            ep.at(&t, Side::Right).expect("t within the knots"),
+        );
         let (d0, d1, d2) = (
             diff(&a.point, &b.point),
             diff(&a.d1, &b.d1),
@@ -198,7 +205,10 @@ fn largest_gap(t_star: f64, bits: u32) -> (Float, Float) {
             break;
         }
     }
-    let (a, b) = (bp.at(&t, Side::Right), ep.at(&t, Side::Right));
+    let (a, b) = (
+        bp.at(&t, Side::Right).expect("t within the knots"),
+        ep.at(&t, Side::Right).expect("t within the knots"),
+    );
     (
         dot(&diff(&a.point, &b.point), &diff(&a.point, &b.point)).sqrt(),
         t,
@@ -223,7 +233,12 @@ pub fn bfbs_vs_erbs() -> (Outcome, Vec<PathPoint<f64>>, Vec<PathPoint<f64>>) {
         }
     }
     // Refine around the sampled maximum by golden-section search in f64.
-    let f = |t: f64| dist(&bp.at(&t, Side::Right), &ep.at(&t, Side::Right));
+    let f = |t: f64| {
+        dist(
+            &bp.at(&t, Side::Right).expect("t within the knots"),
+            &ep.at(&t, Side::Right).expect("t within the knots"),
+        )
+    };
     let (mut lo, mut hi) = ((arg - 1.0 / 800.0).max(0.0), (arg + 1.0 / 800.0).min(1.0));
     let g = 0.618_033_988_749_894_8;
     for _ in 0..60 {
@@ -349,7 +364,10 @@ pub fn locality() -> Outcome {
         let (mut lo, mut hi, mut outside) = (f64::INFINITY, f64::NEG_INFINITY, 0.0f64);
         for i in 0..=1000 {
             let t = i as f64 / 1000.0;
-            let (a, b) = (base.at(&t, Side::Right), p.at(&t, Side::Right));
+            let (a, b) = (
+                base.at(&t, Side::Right).expect("t within the knots"),
+                p.at(&t, Side::Right).expect("t within the knots"),
+            );
             if a.point != b.point {
                 lo = lo.min(t);
                 hi = hi.max(t);

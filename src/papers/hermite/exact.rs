@@ -278,7 +278,8 @@ pub fn eq13_derivatives() -> Outcome {
     for n in 0..=15 {
         let t0 = rng.rational();
         let t1 = t0.clone() + rng.positive();
-        let b = Bernstein::new(rng.rationals(n + 1), t0.clone(), t1.clone());
+        let b = Bernstein::new(rng.rationals(n + 1), t0.clone(), t1.clone())
+            .expect("t0 < t1 and n + 1 points by construction");
         let power = b.to_power_basis();
         for j in 0..=n + 1 {
             for _ in 0..3 {
@@ -350,7 +351,10 @@ pub fn fig2(duration: i64, printed: &str) -> (Outcome, Bernstein<Q>) {
             Verdict::Failed,
             "the Fig. 2 instance did not solve",
         );
-        return (fail, Bernstein::new(vec![q(0)], q(0), q(1)));
+        return (
+            fail,
+            Bernstein::new(vec![q(0)], q(0), q(1)).expect("a constant on [0, 1]"),
+        );
     };
     let shown: Vec<String> = curve
         .control_points

@@ -96,6 +96,7 @@ fn to_f64_curve<T: Field>(c: &Curve<T>) -> Curve<f64> {
                 b.t0.to_f64(),
                 b.t1.to_f64(),
             )
+            .expect("the solved curve's interval, rounded to f64")
         })
         .collect()
 }

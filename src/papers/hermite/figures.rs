@@ -19,7 +19,8 @@ pub fn fig2_panels(fast: &Bernstein<BigRational>, slow: &Bernstein<BigRational>)
                         d.control_points.iter().map(Field::to_f64).collect(),
                         d.t0.to_f64(),
                         d.t1.to_f64(),
-                    );
+                    )
+                    .expect("the solved curve's interval, rounded to f64");
                     let pts = (0..=200).map(|i| {
                         let t = f.t1 * i as f64 / 200.0;
                         (t, f.eval(&t))

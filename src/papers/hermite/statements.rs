@@ -170,7 +170,8 @@ pub fn eq4_basis_and_endpoints() -> Outcome {
     for n in 1..=12usize {
         let points = rng.rationals(n + 1);
         let (t0, t1) = (Q::new((-3).into(), 2.into()), Q::new(7.into(), 3.into()));
-        let curve = Bernstein::new(points.clone(), t0.clone(), t1.clone());
+        let curve = Bernstein::new(points.clone(), t0.clone(), t1.clone())
+            .expect("t0 < t1 and n + 1 points by construction");
         let span = t1.clone() - &t0;
         for t in [t0.clone(), Q::new(1.into(), 5.into()), t1.clone()] {
             // Eq. 4: C(n,k)(t1 − t)^(n−k)(t − t0)^k/(t1 − t0)^n, summed against the points.

@@ -192,7 +192,8 @@ pub fn eq10() -> Outcome {
     for trial in 0..10 {
         let preimage: Vec<Quat<Q>> = (0..=8).map(|_| quaternion(&mut rng)).collect();
         let start = [rational(&mut rng), rational(&mut rng), rational(&mut rng)];
-        let curve = PhCurve::new(preimage.clone(), start.clone());
+        let curve =
+            PhCurve::new(preimage.clone(), start.clone()).expect("a preimage of degree ≤ 30");
         let points = curve.control_points();
         let h = curve.hodograph();
         let mut ok = points.len() == 18 && points[0] == start;
@@ -240,7 +241,8 @@ pub fn eq11_12() -> Outcome {
         let curve = PhCurve::new(
             (0..=4).map(|_| quaternion(&mut rng)).collect(),
             vec3::zero(&()),
-        );
+        )
+        .expect("a preimage of degree ≤ 30");
         for k in 0..=4 {
             let xi = Q::new(k.into(), 4.into());
             let jet = curve.preimage_jet(&xi, 1);
@@ -415,7 +417,8 @@ pub fn eq27() -> Outcome {
     });
     let mut rng = SplitMix64::new(0x2727);
     let preimage: Vec<Quat<Q>> = (0..9).map(|_| quaternion(&mut rng)).collect();
-    let curve = PhCurve::new(preimage.clone(), [q(0), q(0), q(0)]);
+    let curve =
+        PhCurve::new(preimage.clone(), [q(0), q(0), q(0)]).expect("a preimage of degree ≤ 30");
     let mut agree = 0;
     let points = 9;
     for s in 0..points {
@@ -460,7 +463,7 @@ pub fn eq10c_second_equality() -> Outcome {
     let (mut equal, mut gives_p1) = (0, 0);
     for _ in 0..trials {
         let preimage: Vec<Quat<Q>> = (0..9).map(|_| quaternion(&mut rng)).collect();
-        let curve = PhCurve::new(preimage, [q(1), q(2), q(3)]);
+        let curve = PhCurve::new(preimage, [q(1), q(2), q(3)]).expect("a preimage of degree ≤ 30");
         let (h, points) = (curve.hodograph(), curve.control_points());
         let degree = h.len() - 1;
         let printed = |xi: &Q| {

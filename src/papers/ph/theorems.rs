@@ -388,7 +388,8 @@ pub fn left_product() -> Outcome {
             .map(|x| alpha.mul(x))
             .collect(),
         raw.segments[1].start.clone(),
-    );
+    )
+    .expect("a preimage of degree ≤ 30");
     let moved = max_distance(&left.control_points(), &raw.segments[1].control_points());
     let kept = max_distance(
         &right.segments[1].control_points(),
