@@ -4,7 +4,7 @@
 //! string, which would drop an exponent: "1.89784150e-7" cut to ten characters reads as 1.9).
 //! Its notation is plain from 10⁻³ up to the digits shown or six integer digits
 //! ("0.00160821195", "911600", "1670") and scientific otherwise ("2.547675220e-5", "6.94771e7"), so no number opens with a long run of
-//! zeros; [`column`] picks one notation for a whole table column. A certified value shows at
+//! zeros; [`column()`] picks one notation for a whole table column. A certified value shows at
 //! most the digits it has. Prose, summaries and evidence show at most ten significant digits
 //! ([`shorten`]); `claims.json` keeps every certified digit.
 //!
@@ -127,7 +127,7 @@ pub fn column(values: &[f64], digits: u32) -> Vec<String> {
         .collect()
 }
 
-/// Rows of values as table cells, each column in one notation ([`column`]).
+/// Rows of values as table cells, each column in one notation ([`column()`]).
 pub fn columns(rows: &[Vec<f64>], digits: u32) -> Vec<Vec<String>> {
     let width = rows.iter().map(Vec::len).max().unwrap_or(0);
     let cols: Vec<Vec<String>> = (0..width)
