@@ -1,12 +1,18 @@
 //! trajverify: the curve and trajectory algorithms of five papers, written once over the
 //! number type and verified in exact rationals, MPFR and f64 side by side.
 //!
+//! The library is [`scalar`], [`numeric`], [`curve`] and [`algo`]. The command line
+//! (`cli`), the claims (`ledger`, `papers`) and the reports (`report`) are public only so the
+//! binary and the tests can reach them; they are hidden from these docs and are not an API.
+//! (Hidden rather than a separate crate: the binary, the snapshot tests and `verify` share
+//! them, and a workspace split would compile GMP/MPFR's bindings twice for no user.)
+//!
 //! Layers, each using only those below it (`docs/design.md`, "Architecture"; `tests/layers.rs` checks every
 //! `crate::` reference against this order):
-//! - [`cli`]: arguments and JSON in, JSON out, work budgets; parse, one algorithm call, print.
-//! - [`papers`]: the published claims of each paper, each a check that calls the library.
-//! - [`report`]: Markdown reports, SVG figures, `claims.json`; reads only [`ledger`] values.
-//! - [`ledger`]: claim specs, outcomes, verdicts and the ledger that joins them.
+//! - `cli`: arguments and JSON in, JSON out, work budgets; parse, one algorithm call, print.
+//! - `papers`: the published claims of each paper, each a check that calls the library.
+//! - `report`: Markdown reports, SVG figures, `claims.json`; reads only `ledger` values.
+//! - `ledger`: claim specs, outcomes, verdicts and the ledger that joins them.
 //! - [`algo`]: [`hermite`](algo::hermite) (paper 000), [`ph`](algo::ph) (paper 001),
 //!   [`bspline`](algo::bspline) (paper 002), [`gerbs`](algo::gerbs) (paper 003),
 //!   [`param`](algo::param) (paper 004); none uses another.
@@ -41,11 +47,15 @@
 #![deny(missing_docs)]
 
 pub mod algo;
+#[doc(hidden)]
 pub mod cli;
 pub mod curve;
+#[doc(hidden)]
 pub mod ledger;
 pub mod numeric;
+#[doc(hidden)]
 pub mod papers;
+#[doc(hidden)]
 pub mod report;
 pub mod scalar;
 

@@ -4,6 +4,8 @@
 //! quintic spline), checks the work budget, runs the study of the library
 //! ([`crate::algo::convergence`]) with progress on stderr, and writes the three files the
 //! report module renders ([`crate::report::convergence`]), each complete or not at all.
+// The option docs below are clap's `--help` text, where `<m>` and `<bits>` are literal.
+#![allow(rustdoc::invalid_html_tags)]
 
 use super::budget;
 use super::input::{fail, InputError};
