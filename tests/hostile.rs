@@ -158,3 +158,42 @@ fn a_gerbs_path_is_evaluated_on_its_knots_only() {
     let inside = path.at(&0.3, Side::Right).expect("inside");
     assert!(inside.curvature.is_finite() && inside.point.iter().all(|x| x.is_finite()));
 }
+
+#[test]
+fn marins_parametrization_of_points_checks_its_options() {
+    use trajverify::algo::param::descent::{parametrize, ParametrizeOptions};
+    let points = vec![
+        vec![0.0, 0.0],
+        vec![1.0, 2.0],
+        vec![3.0, 3.0],
+        vec![4.0, 1.0],
+    ];
+    let wrong_alpha = ParametrizeOptions {
+        alpha: Some(vec![1.0]),
+        ..ParametrizeOptions::default()
+    };
+    assert!(no_panic("one α for two coordinates", || parametrize(
+        &points,
+        &wrong_alpha
+    ))
+    .is_err());
+    let ragged = vec![vec![0.0, 0.0], vec![1.0], vec![3.0, 3.0]];
+    let default = ParametrizeOptions::default();
+    assert!(no_panic("ragged points", || parametrize(&ragged, &default)).is_err());
+    assert!(no_panic("one point", || parametrize(&points[..1], &default)).is_err());
+    let repeated = vec![
+        vec![0.0, 0.0],
+        vec![1.0, 2.0],
+        vec![1.0, 2.0],
+        vec![4.0, 1.0],
+    ];
+    if let Ok(m) = no_panic("repeated point", || parametrize(&repeated, &default)) {
+        assert!(
+            m.knots.iter().all(|t| t.is_finite()),
+            "Ok holding NaN: {:?}",
+            m.knots
+        );
+    }
+    let m = parametrize(&points, &default).expect("four distinct points");
+    assert!(m.knots.iter().all(|t| t.is_finite()));
+}

@@ -265,6 +265,39 @@ pub struct PathSpec<T> {
     pub end_curves: EndCurves,
 }
 
+impl<T: Real> PathSpec<T> {
+    /// The inputs of a path through `waypoints` with arcs of radius `radius`, and the rest
+    /// as in the paper: θ_o = π/8 (Sec. IV), lines of length 2Rθ_o, arcs swept in the turn
+    /// direction (Eqs. (21)–(22) as printed make left turns run backwards; see
+    /// [`ArcConvention`]), turns decided exactly on the waypoints, straight lines at the
+    /// first and last waypoints (the text; Algorithm 2's arcs there miss them).
+    ///
+    /// # Examples
+    /// ```
+    /// use trajverify::algo::gerbs::bfbs::Bfbs;
+    /// use trajverify::algo::gerbs::path::{GerbsPath, PathSpec};
+    /// use trajverify::algo::gerbs::Side;
+    /// let waypoints = vec![[0.0, 0.0], [300.0, 100.0], [600.0, -50.0], [900.0, 150.0], [1200.0, 0.0]];
+    /// let spec = PathSpec::new(waypoints, 80.0, &());
+    /// let path = GerbsPath::new(&spec, Bfbs::uniform(2, 5).unwrap()).unwrap();
+    /// // The path passes through W2 at the knot t = 1/4.
+    /// let p = path.at(&0.25, Side::Right).unwrap();
+    /// assert!((p.point[0] - 300.0).abs() < 1e-9 && (p.point[1] - 100.0).abs() < 1e-9);
+    /// assert!(path.at(&1.5, Side::Right).is_err());
+    /// ```
+    pub fn new(waypoints: Vec<[T; 2]>, radius: T, ctx: &T::Ctx) -> Self {
+        PathSpec {
+            waypoints,
+            radius,
+            theta_o: T::pi(ctx) / &T::from_i64(8, ctx),
+            line_length: None,
+            convention: ArcConvention::TurnDirection,
+            turns: None,
+            end_curves: EndCurves::default(),
+        }
+    }
+}
+
 /// The local curves c_1 … c_n of Algorithm 2 (lines or arcs at the ends, [`EndCurves`]; arcs inside), with the
 /// tangents of Algorithm 1 (or the given ones).
 pub fn local_curves<T: Real>(

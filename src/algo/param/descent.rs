@@ -357,3 +357,81 @@ pub fn newton_polish<T: Real>(
     }
     Ok(h)
 }
+
+/// Options of [`parametrize`]: which form of G, and the weights α of the components.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ParametrizeOptions<T> {
+    /// Eq. 31 (the default) or Eq. 34.
+    pub objective: Objective,
+    /// One weight α_l per coordinate (Eq. 31's 1/α_l²); `None`: every α_l = 1.
+    pub alpha: Option<Vec<T>>,
+}
+
+impl<T> Default for ParametrizeOptions<T> {
+    fn default() -> Self {
+        ParametrizeOptions {
+            objective: Objective::Exact,
+            alpha: None,
+        }
+    }
+}
+
+/// Marin's minimizing parametrization of `points` (point i is `points[i]`, every point with
+/// the same dimension d ≥ 1): gradient projection in f64 from normalized chord length, then
+/// Newton's method in `T` ([`descend`], then [`refine`]). The knots run from 0 to 1.
+///
+/// # Errors
+/// [`SplineError::TooFewKnots`] for fewer than two points;
+/// [`SplineError::LengthMismatch`] for points of different dimensions (or none);
+/// [`SplineError::WeightCount`] for an `alpha` whose length is not d; and the errors of the
+/// minimization (coincident consecutive points).
+///
+/// # Examples
+/// ```
+/// use trajverify::algo::param::descent::{parametrize, ParametrizeOptions};
+/// // Four points in the plane; the knots are increasing from 0 to 1.
+/// let points = vec![vec![0.0, 0.0], vec![1.0, 2.0], vec![3.0, 3.0], vec![4.0, 1.0]];
+/// let m = parametrize(&points, &ParametrizeOptions::default()).unwrap();
+/// assert_eq!(m.knots.len(), 4);
+/// assert!(m.knots.windows(2).all(|w| w[0] < w[1]));
+/// assert!(m.objective <= m.chord_objective);
+/// ```
+pub fn parametrize<T: Real>(
+    points: &[Vec<T>],
+    options: &ParametrizeOptions<T>,
+) -> Result<Minimum<T>, SplineError> {
+    let n = points.len();
+    let d = points.first().map_or(0, Vec::len);
+    if n < 2 {
+        return Err(SplineError::TooFewKnots);
+    }
+    if d == 0 || points.iter().any(|p| p.len() != d) {
+        return Err(SplineError::LengthMismatch {
+            knots: d,
+            values: points.iter().map(Vec::len).find(|&l| l != d).unwrap_or(0),
+        });
+    }
+    // Component-major, as the objective reads them: z[l][i] is coordinate l of point i.
+    let z: Vec<Vec<T>> = (0..d)
+        .map(|l| points.iter().map(|p| p[l].clone()).collect())
+        .collect();
+    let ctx = z[0][0].ctx();
+    let alpha = match &options.alpha {
+        Some(a) => a.clone(),
+        None => vec![T::one_in(&ctx); d],
+    };
+    check_problem(n - 1, &z, &alpha)?;
+    let z64: Vec<Vec<f64>> = z
+        .iter()
+        .map(|c| c.iter().map(Field::to_f64).collect())
+        .collect();
+    let a64: Vec<f64> = alpha.iter().map(Field::to_f64).collect();
+    let rough = descend(
+        chord_length_spacing(&z64),
+        &z64,
+        &a64,
+        options.objective,
+        &mut |_, _| {},
+    )?;
+    refine(&rough, &z, &alpha, options.objective)
+}
