@@ -11,7 +11,7 @@
 //! [`audit`] lets a test check every number a report shows against the value it was rendered
 //! from (to the digits shown), and tell formatter output from text built elsewhere.
 
-use crate::scalar::certify::Certified;
+use crate::scalar::certify::{decimal_text, Certified};
 use crate::scalar::Float;
 use rug::float::Round;
 
@@ -33,49 +33,13 @@ fn style(x: &Float, digits: u32, notation: Notation) -> String {
     style_rounded(x, digits, notation, Round::Nearest)
 }
 
-/// [`style`] with the decimal rounding direction given.
+/// [`style`] with the decimal rounding direction given: plain from 10⁻³ up to the digits
+/// shown, or up to six integer digits padded with zeros ("1670" rather than "1.67e3" beside
+/// "891" in one column).
 fn style_rounded(x: &Float, digits: u32, notation: Notation, round: Round) -> String {
-    if x.is_zero() {
-        return "0".into();
-    }
-    if !x.is_finite() {
-        return if x.is_nan() {
-            "NaN".into()
-        } else if x.is_sign_negative() {
-            "-inf".into()
-        } else {
-            "inf".into()
-        };
-    }
-    let (negative, mantissa, exp) =
-        x.to_sign_string_exp_round(10, Some(digits.max(1) as usize), round);
-    let point = exp.unwrap_or(0) as i64; // value = 0.mantissa × 10^point
-    let sign = if negative { "-" } else { "" };
-    let k = mantissa.len() as i64;
-    // Plain from 10⁻³ up to the digits shown, or up to six integer digits padded with zeros
-    // ("1670" rather than "1.67e3" beside "891" in one column).
-    let plain = notation == Notation::Auto && (-2..=k.clamp(6, 21)).contains(&point);
-    let body = if plain && point <= 0 {
-        format!("0.{}{}", "0".repeat((-point) as usize), mantissa)
-    } else if plain && point > k {
-        format!("{mantissa}{}", "0".repeat((point - k) as usize))
-    } else if plain {
-        let (int, frac) = mantissa.split_at(point as usize);
-        if frac.is_empty() {
-            int.to_string()
-        } else {
-            format!("{int}.{frac}")
-        }
-    } else {
-        let (lead, rest) = mantissa.split_at(1);
-        let e = point - 1;
-        if rest.is_empty() {
-            format!("{lead}e{e}")
-        } else {
-            format!("{lead}.{rest}e{e}")
-        }
-    };
-    format!("{sign}{body}")
+    decimal_text(x, digits, round, |point, k| {
+        notation == Notation::Auto && (-2..=k.clamp(6, 21)).contains(&point)
+    })
 }
 
 /// `x` to `digits` significant digits.

@@ -41,6 +41,22 @@ pub fn agreeing_digits(lo: &Float, hi: &Float) -> u32 {
 /// otherwise scientific ("1.234e-7", "5.07e49"). Trailing zeros are kept: they are
 /// certified digits too.
 pub fn format_float_digits(x: &Float, digits: u32) -> String {
+    decimal_text(x, digits, Round::Nearest, |point, k| {
+        (-4..=0).contains(&point) || (point > 0 && point <= k && point <= 21)
+    })
+}
+
+/// `x` rounded in direction `round` to `digits` significant decimal digits: in plain notation
+/// when `plain(point, k)` holds, with the value 0.mantissa × 10^point and k mantissa digits
+/// (zeros pad an integer whose point lies beyond its digits), scientific otherwise. "0" for
+/// zero; "NaN", "inf", "-inf" as such. The one decimal printer behind every notation rule
+/// (this module's and the reports').
+pub fn decimal_text(
+    x: &Float,
+    digits: u32,
+    round: Round,
+    plain: impl Fn(i64, i64) -> bool,
+) -> String {
     if x.is_zero() {
         return "0".into();
     }
@@ -53,14 +69,17 @@ pub fn format_float_digits(x: &Float, digits: u32) -> String {
             "inf".into()
         };
     }
-    let digits = digits.max(1) as usize;
-    let (negative, mantissa, exp) = x.to_sign_string_exp_round(10, Some(digits), Round::Nearest);
+    let (negative, mantissa, exp) =
+        x.to_sign_string_exp_round(10, Some(digits.max(1) as usize), round);
     let point = exp.unwrap_or(0) as i64; // value = 0.mantissa × 10^point
     let sign = if negative { "-" } else { "" };
     let k = mantissa.len() as i64;
-    let body = if (-4..=0).contains(&point) {
+    let plain = plain(point, k);
+    let body = if plain && point <= 0 {
         format!("0.{}{}", "0".repeat((-point) as usize), mantissa)
-    } else if point > 0 && point <= k && point <= 21 {
+    } else if plain && point > k {
+        format!("{mantissa}{}", "0".repeat((point - k) as usize))
+    } else if plain {
         let (int, frac) = mantissa.split_at(point as usize);
         if frac.is_empty() {
             int.to_string()
