@@ -36,9 +36,23 @@ pub fn found(
     outcome.finding((paper, &computed, difference), severity, reason)
 }
 
-/// The opening of a paper's Markdown report: title, id, claim prefix, how to regenerate it.
-pub fn report_heading(id: &str, short: &str, title: &str) -> String {
-    format!("# {title}\n\nPaper id `{id}`; claim ids start with `{short}.`. Regenerate with `trajverify verify` (every paper, into `reports/`), or this paper alone with `trajverify verify --paper {short} --out <dir>`.\n\n")
+/// A paper's output from its report `body`, `claims` and `figures`: the heading (title, id,
+/// claim prefix, how to regenerate it) and the coverage section (from its map) around the
+/// body, shared by the five renderers.
+pub fn report_output(
+    (id, short, title): (&str, &str, &str),
+    body: String,
+    claims: Vec<crate::ledger::Claim>,
+    figures: Vec<(String, String)>,
+) -> crate::ledger::PaperOutput {
+    let heading = format!("# {title}\n\nPaper id `{id}`; claim ids start with `{short}.`. Regenerate with `trajverify verify` (every paper, into `reports/`), or this paper alone with `trajverify verify --paper {short} --out <dir>`.\n\n");
+    crate::report::paper_output(
+        heading,
+        body,
+        coverage::render::not_checked_section(short),
+        claims,
+        figures,
+    )
 }
 
 /// The file name of figure `n` of paper `id`, written next to its report.

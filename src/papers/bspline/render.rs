@@ -3,7 +3,7 @@
 use super::{figures, fitting, Results, ID, SHORT, TITLE};
 use crate::ledger::{Claim, PaperOutput};
 use crate::report::number;
-use crate::report::{paper_output, plot, table};
+use crate::report::{plot, table};
 
 fn figure_name(n: u32) -> String {
     super::super::figure_file(ID, n)
@@ -11,7 +11,6 @@ fn figure_name(n: u32) -> String {
 
 /// The report and figures of paper 002.
 pub fn report(r: &Results, claims: Vec<Claim>) -> PaperOutput {
-    let heading = super::super::report_heading(ID, SHORT, TITLE);
     let mut md = String::new();
     let mut figures = vec![(
         figure_name(1),
@@ -39,13 +38,7 @@ pub fn report(r: &Results, claims: Vec<Claim>) -> PaperOutput {
         }
         None => md.push_str("The reconstruction failed.\n\n"),
     }
-    paper_output(
-        heading,
-        md,
-        crate::papers::coverage::render::not_checked_section(SHORT),
-        claims,
-        figures,
-    )
+    super::super::report_output((ID, SHORT, TITLE), md, claims, figures)
 }
 
 fn table1(r: &Results) -> String {

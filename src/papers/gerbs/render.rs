@@ -5,7 +5,7 @@ use super::{figures, Results, ID, SHORT, TITLE};
 use crate::algo::gerbs::path::ArcConvention;
 use crate::ledger::{Claim, PaperOutput};
 use crate::report::number;
-use crate::report::{paper_output, table};
+use crate::report::table;
 
 fn figure_name(n: u32) -> String {
     super::super::figure_file(ID, n)
@@ -30,7 +30,6 @@ const CAPTIONS: [(u32, &str); 7] = [
 
 /// The report and figures of paper 003.
 pub fn report(r: &Results, claims: Vec<Claim>) -> PaperOutput {
-    let heading = super::super::report_heading(ID, SHORT, TITLE);
     let mut md = String::new();
     md.push_str(&format!(
         "Documented inputs (the paper gives R, θ_o and the knot vector, not the waypoints): waypoints {:?}, R = {}, θ_o = π/8, line length l = 2Rθ_o, knots {{0, 0, 1/4, 2/4, 3/4, 1, 1}} (Fig. 1). ERBS parameter sets: {}, {}, {} (λ = 0.5, β = 3, γ = 1 throughout). The ERBS paths of Figs. 3–7 use the last set (see the Fig. 2 claim for why). Certified values agree between 128 and 256 bits.\n\n",
@@ -46,13 +45,7 @@ pub fn report(r: &Results, claims: Vec<Claim>) -> PaperOutput {
         md.push_str(&format!("![{caption}]({})\n\n", figure_name(n)));
         md.push_str(&material_findings_on(&claims, n));
     }
-    paper_output(
-        heading,
-        md,
-        crate::papers::coverage::render::not_checked_section(SHORT),
-        claims,
-        figures(r),
-    )
+    super::super::report_output((ID, SHORT, TITLE), md, claims, figures(r))
 }
 
 /// The material findings about figure `n`, under the figure, so a reader who looks at the

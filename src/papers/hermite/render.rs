@@ -3,7 +3,7 @@
 use super::{conditioning, figures, Results, FIG2_FAST, FIG2_SLOW, ID, SHORT, TITLE};
 use crate::ledger::{Claim, PaperOutput};
 use crate::report::number;
-use crate::report::{paper_output, plot, table};
+use crate::report::{plot, table};
 use crate::scalar::Field;
 
 fn figure_name(n: u32) -> String {
@@ -12,7 +12,6 @@ fn figure_name(n: u32) -> String {
 
 /// The report and figures of paper 000.
 pub fn report(r: &Results, claims: Vec<Claim>) -> PaperOutput {
-    let heading = super::super::report_heading(ID, SHORT, TITLE);
     let mut md = String::new();
     let mut figures = vec![(
         figure_name(2),
@@ -35,13 +34,7 @@ pub fn report(r: &Results, claims: Vec<Claim>) -> PaperOutput {
         figure_name(5),
         plot::render_or_note(&figures::fig5_panels(&r.kappa), (1, 1), (900, 560)),
     ));
-    paper_output(
-        heading,
-        md,
-        crate::papers::coverage::render::not_checked_section(SHORT),
-        claims,
-        figures,
-    )
+    super::super::report_output((ID, SHORT, TITLE), md, claims, figures)
 }
 
 fn fig2(r: &Results) -> String {

@@ -10,7 +10,7 @@ use super::{figures, num, Results, ID, SHORT, TITLE};
 use crate::ledger::{Claim, PaperOutput};
 use crate::report::number;
 use crate::report::number::{marked, sig as fmt};
-use crate::report::{paper_output, table};
+use crate::report::table;
 use crate::scalar::{Field, Float};
 
 /// How the printed cells of the tables are marked.
@@ -22,7 +22,6 @@ fn figure_file(n: u32) -> String {
 
 /// The report and figures of paper 004.
 pub fn report(r: &Results, claims: Vec<Claim>) -> PaperOutput {
-    let heading = super::super::report_heading(ID, SHORT, TITLE);
     let mut md = String::new();
     let mut figures = Vec::new();
     md.push_str(&h1(&r.h1));
@@ -40,13 +39,7 @@ pub fn report(r: &Results, claims: Vec<Claim>) -> PaperOutput {
     }
     md.push_str(&robot(&r.robot));
     md.push_str(&fig9(&r.fig9, &r.robot, &mut figures));
-    paper_output(
-        heading,
-        md,
-        crate::papers::coverage::render::not_checked_section(SHORT),
-        claims,
-        figures,
-    )
+    super::super::report_output((ID, SHORT, TITLE), md, claims, figures)
 }
 
 fn h1(rows: &[H1Row]) -> String {

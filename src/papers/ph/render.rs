@@ -4,7 +4,7 @@ use super::{figures, table1, Results, ID, SHORT, TITLE};
 use crate::ledger::{Claim, PaperOutput};
 use crate::report::number;
 use crate::report::number::{marked, sig as fmt};
-use crate::report::{paper_output, table};
+use crate::report::table;
 use crate::scalar::certify::certify;
 
 fn figure_name(tag: &str) -> String {
@@ -13,7 +13,6 @@ fn figure_name(tag: &str) -> String {
 
 /// The report and figures of paper 001.
 pub fn report(r: &Results, claims: Vec<Claim>) -> PaperOutput {
-    let heading = super::super::report_heading(ID, SHORT, TITLE);
     let mut md = String::new();
     md.push_str(&coefficients(r));
     md.push_str(&table1_section(&r.table1));
@@ -50,13 +49,7 @@ pub fn report(r: &Results, claims: Vec<Claim>) -> PaperOutput {
         (figure_name("fig1"), figures::nrho_figure1(&r.nrho)),
         (figure_name("fig4"), figures::nrho_figure4(&r.nrho)),
     ];
-    paper_output(
-        heading,
-        md,
-        crate::papers::coverage::render::not_checked_section(SHORT),
-        claims,
-        figures,
-    )
+    super::super::report_output((ID, SHORT, TITLE), md, claims, figures)
 }
 
 fn coefficients(r: &Results) -> String {
