@@ -75,10 +75,10 @@ fn length(c: &mut Criterion) {
     let tol = default_tolerance::<f64>(&());
     let (b64, e64) = (bfbs_path::<f64>(&()), erbs_path::<f64>(&()));
     g.bench_function(BenchmarkId::new("f64", "bfbs"), |b| {
-        b.iter(|| b64.length(&tol))
+        b.iter(|| b64.length_within(&tol))
     });
     g.bench_function(BenchmarkId::new("f64", "erbs"), |b| {
-        b.iter(|| e64.length(&tol))
+        b.iter(|| e64.length_within(&tol))
     });
     g.finish();
 }

@@ -32,7 +32,7 @@
 //! fn control_points<T: Field>(ctx: &T::Ctx) -> Vec<T> {
 //!     let i = |v: i64| T::from_i64(v, ctx);
 //!     let data = HermiteData::new(vec![i(0), i(0), i(0)], vec![i(1), i(1), i(0)], i(0), i(1)).unwrap();
-//!     data.solve().unwrap().control_points
+//!     data.solve().unwrap().into_control_points()
 //! }
 //!
 //! let exact: Vec<BigRational> = control_points(&());
@@ -66,4 +66,6 @@ pub use algo::hermite::HermiteData;
 pub use algo::param::natural::NaturalCubicSpline;
 pub use algo::ph::hermite::HermiteData as PhHermiteData;
 pub use algo::ph::PhCurve;
+pub use curve::bezier::BezierCurve;
+pub use curve::parametric::{ParamCurve, ParamCurveArclen, ParamCurveFrame};
 pub use scalar::{Field, Real, ScalarKind};

@@ -124,7 +124,7 @@ fn the_hermite_map_encloses_the_reference() {
             v(3, 7),
         )
         .unwrap();
-        data.solve().unwrap().control_points
+        data.solve().unwrap().into_control_points()
     }
     assert_contained(
         &control_points::<Ball>(&128),

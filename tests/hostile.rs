@@ -1,10 +1,12 @@
 //! Hostile calls of the public API, each under `catch_unwind`: a call must return an error (or
 //! a documented answer), never panic, and never return `Ok` holding NaN.
 //!
-//! This covers most of the calls found by trying the library as an engineer would. Still
-//! open: `BigRational::from_ratio(1, 0, &())` (the `Field` constructors cannot fail),
-//! `Knots::at(0)` (1-based), and struct literals of `Bernstein`, `PiecewisePh` and
-//! `PathSpec`, whose fields are public (`HermiteData::solve` re-checks its fields).
+//! Every call found by trying the library as an engineer would. Struct literals of
+//! `Bernstein`, `BezierCurve`, `PiecewisePh`, `PiecewiseBernstein`, `GerbsPath`, `SplineFit`
+//! and `NaturalSplineCurve` no longer compile (their fields are private); `HermiteData` and
+//! `PathSpec` keep public fields and are re-checked where they are used. The one panic left
+//! by design is `from_ratio(n, 0)` in the exact types (as `i64` division by zero), whose
+//! fallible form `try_from_ratio` is tested here.
 
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use trajverify::algo::gerbs::bfbs::Bfbs;
@@ -13,7 +15,7 @@ use trajverify::algo::gerbs::Side;
 use trajverify::algo::param::descent::{descend, refine};
 use trajverify::algo::param::objective::{chord_length_spacing, Objective};
 use trajverify::algo::ph::hermite::{FreeParameters, PhHermiteError};
-use trajverify::algo::ph::piecewise::convert;
+use trajverify::algo::ph::piecewise::{conversion_error, convert, DEFAULT_SAMPLES};
 use trajverify::algo::ph::PhCurve;
 use trajverify::curve::ExprCurve;
 use trajverify::numeric::poly::Bernstein;
@@ -162,12 +164,9 @@ fn a_gerbs_path_is_evaluated_on_its_knots_only() {
 #[test]
 fn marins_parametrization_of_points_checks_its_options() {
     use trajverify::algo::param::descent::{parametrize, ParametrizeOptions};
-    let points = vec![
-        vec![0.0, 0.0],
-        vec![1.0, 2.0],
-        vec![3.0, 3.0],
-        vec![4.0, 1.0],
-    ];
+    use trajverify::algo::param::natural::NaturalSplineCurve;
+    use trajverify::curve::parametric::ParamCurve;
+    let points = [[0.0, 0.0], [1.0, 2.0], [3.0, 3.0], [4.0, 1.0]];
     let wrong_alpha = ParametrizeOptions {
         alpha: Some(vec![1.0]),
         ..ParametrizeOptions::default()
@@ -177,16 +176,12 @@ fn marins_parametrization_of_points_checks_its_options() {
         &wrong_alpha
     ))
     .is_err());
-    let ragged = vec![vec![0.0, 0.0], vec![1.0], vec![3.0, 3.0]];
+    // Ragged points no longer type-check: every point is a [T; D].
     let default = ParametrizeOptions::default();
-    assert!(no_panic("ragged points", || parametrize(&ragged, &default)).is_err());
     assert!(no_panic("one point", || parametrize(&points[..1], &default)).is_err());
-    let repeated = vec![
-        vec![0.0, 0.0],
-        vec![1.0, 2.0],
-        vec![1.0, 2.0],
-        vec![4.0, 1.0],
-    ];
+    let none: [[f64; 0]; 3] = [[], [], []];
+    assert!(no_panic("D = 0", || parametrize(&none, &default)).is_err());
+    let repeated = [[0.0, 0.0], [1.0, 2.0], [1.0, 2.0], [4.0, 1.0]];
     if let Ok(m) = no_panic("repeated point", || parametrize(&repeated, &default)) {
         assert!(
             m.knots.iter().all(|t| t.is_finite()),
@@ -196,4 +191,194 @@ fn marins_parametrization_of_points_checks_its_options() {
     }
     let m = parametrize(&points, &default).expect("four distinct points");
     assert!(m.knots.iter().all(|t| t.is_finite()));
+    // The spline through the points: lengths and order checked, evaluation on its knots only.
+    let curve = |k: Vec<f64>, p: &[[f64; 2]]| {
+        no_panic("NaturalSplineCurve::new", || NaturalSplineCurve::new(k, p))
+    };
+    assert!(
+        curve(m.knots.clone(), &points[..3]).is_err(),
+        "3 points, 4 knots"
+    );
+    assert!(
+        curve(vec![0.0, 1.0, 1.0, 2.0], &points).is_err(),
+        "repeated knot"
+    );
+    assert!(curve(vec![0.0], &points[..1]).is_err(), "one knot");
+    let spline = curve(m.knots.clone(), &points).expect("a spline");
+    for t in [-0.1, 1.1, f64::NAN] {
+        assert!(no_panic("point", || spline.point(&t)).is_err(), "t = {t}");
+    }
+    assert!(spline
+        .point(&0.5)
+        .expect("inside")
+        .iter()
+        .all(|x| x.is_finite()));
+}
+
+#[test]
+fn exact_ratios_with_a_zero_denominator_are_refused_not_fatal() {
+    use trajverify::scalar::qsqrt2::QSqrt2;
+    assert_eq!(
+        no_panic("BigRational 1/0", || BigRational::try_from_ratio(1, 0, &())),
+        None
+    );
+    assert_eq!(
+        no_panic("QSqrt2 1/0", || QSqrt2::try_from_ratio(1, 0, &())),
+        None
+    );
+    assert_eq!(
+        BigRational::try_from_ratio(3, 4, &()),
+        Some(BigRational::new(3.into(), 4.into()))
+    );
+    // The floating types: IEEE ±∞ / NaN, and the ball of every number.
+    assert_eq!(
+        no_panic("f64 1/0", || f64::from_ratio(1, 0, &())),
+        f64::INFINITY
+    );
+    assert!(no_panic("Float 1/0", || Float::from_ratio(1, 0, &64)).is_infinite());
+    assert!(no_panic("Float 0/0", || Float::from_ratio(0, 0, &64)).is_nan());
+    assert!(!no_panic("Ball 1/0", || Ball::from_ratio(1, 0, &64)).is_finite());
+}
+
+#[test]
+fn knots_count_from_one_and_refuse_out_of_range_indices() {
+    use trajverify::algo::gerbs::Knots;
+    let knots = Knots::<f64>::uniform(5, &()).expect("knots");
+    assert_eq!(no_panic("Knots::get(0)", || knots.get(0)), None);
+    assert_eq!(knots.get(1), Some(&0.0));
+    assert_eq!(knots.get(3), Some(&0.25));
+    assert_eq!(knots.get(7), Some(&1.0));
+    assert_eq!(knots.get(8), None);
+}
+
+#[test]
+fn a_bfbs_for_the_wrong_number_of_waypoints_is_refused() {
+    let spec = PathSpec::new(
+        vec![[0.0, 0.0], [300.0, 100.0], [600.0, -50.0], [900.0, 0.0]],
+        80.0,
+        &(),
+    );
+    for n in [1, 3, 5, 40] {
+        let blend = Bfbs::uniform(2, n).expect("exponents");
+        let r = no_panic("GerbsPath::new", || GerbsPath::new(&spec, blend));
+        assert!(r.is_err(), "{n} exponents for 4 waypoints accepted");
+    }
+    let path = GerbsPath::new(&spec, Bfbs::uniform(2, 4).expect("exponents")).expect("a path");
+    // Parts that do not fit: the knots of 4 curves with the curves of 3.
+    let other = PathSpec::new(spec.waypoints[..3].to_vec(), 80.0, &());
+    let three = GerbsPath::new(&other, Bfbs::uniform(2, 3).expect("exponents")).expect("a path");
+    let r = no_panic("from_parts", || {
+        GerbsPath::from_parts(
+            path.knots().clone(),
+            path.blend().clone(),
+            three.curves().to_vec(),
+            three.tangents().clone(),
+        )
+    });
+    assert!(r.is_err());
+}
+
+#[test]
+fn curves_are_evaluated_on_their_domain_only() {
+    use trajverify::algo::hermite::hermite_curve;
+    use trajverify::algo::ph::piecewise::{fit, FitOptions};
+    use trajverify::curve::bezier::BezierCurve;
+    use trajverify::curve::parametric::{ParamCurve, ParamCurveArclen, ParamCurveFrame};
+    let bezier =
+        BezierCurve::new(vec![[0.0, 0.0, 0.0], [1.0, 1.0, 1.0]], 0.0, 1.0).expect("a line");
+    let ph = fit(
+        &ExprCurve::parse("[cos(t), sin(t), t/5]")
+            .expect("parses")
+            .compile::<f64>(&()),
+        &0.0,
+        &6.0,
+        &FitOptions::default(),
+    )
+    .expect("a PH spline");
+    for t in [-1e-9, 6.5, f64::NAN, f64::INFINITY] {
+        assert!(no_panic("BezierCurve::point", || bezier.point(&t)).is_err());
+        assert!(no_panic("PiecewisePh::derivatives", || ph.derivatives(&t, 3)).is_err());
+        assert!(no_panic("PiecewisePh::frame", || ph.frame(&t)).is_err());
+        assert!(no_panic("PiecewisePh::arc_length", || ph.arc_length(&t)).is_err());
+    }
+    assert!(no_panic("empty", || BezierCurve::<f64, 2>::new(vec![], 0.0, 1.0)).is_err());
+    assert!(no_panic("t0 = t1", || BezierCurve::new(vec![[1.0]], 1.0, 1.0)).is_err());
+    let q = |n: i64| BigRational::from_integer(n.into());
+    assert!(no_panic("exact t0 = t1", || BezierCurve::new(
+        vec![[q(1)]],
+        q(1),
+        q(1)
+    ))
+    .is_err());
+    // Hermite data: unequal derivative counts, no data, an empty interval.
+    let d = [[0.0, 1.0], [1.0, 0.0]];
+    assert!(no_panic("hermite_curve", || hermite_curve(0.0, 1.0, &d, &d[..1])).is_err());
+    assert!(no_panic("hermite_curve", || hermite_curve::<f64, 2>(
+        0.0,
+        1.0,
+        &[],
+        &[]
+    ))
+    .is_err());
+    assert!(no_panic("hermite_curve", || hermite_curve(1.0, 1.0, &d, &d)).is_err());
+    assert!(no_panic("hermite_curve", || hermite_curve(0.0, f64::NAN, &d, &d)).is_err());
+    let ok = hermite_curve(0.0, 1.0, &d, &d).expect("C¹ data");
+    assert!(ok.control_points().iter().flatten().all(|x| x.is_finite()));
+}
+
+#[test]
+fn a_ph_fit_checks_its_options() {
+    use trajverify::algo::ph::piecewise::{fit, FitOptions};
+    let helix = ExprCurve::parse("[cos(t), sin(t), t/5]")
+        .expect("parses")
+        .compile::<f64>(&());
+    let run = |options: FitOptions<f64>| no_panic("fit", || fit(&helix, &0.0, &6.0, &options));
+    assert!(run(FitOptions {
+        segments: 0,
+        ..FitOptions::default()
+    })
+    .is_err());
+    assert!(run(FitOptions {
+        derivatives: 0,
+        ..FitOptions::default()
+    })
+    .is_err());
+    let wrong = FreeParameters::zero(2, &());
+    assert!(run(FitOptions {
+        free: Some(wrong),
+        ..FitOptions::default()
+    })
+    .is_err());
+    for tol in [0.0, -1.0, f64::NAN] {
+        assert!(
+            run(FitOptions {
+                tolerance: Some(tol),
+                ..FitOptions::default()
+            })
+            .is_err(),
+            "tolerance {tol}"
+        );
+    }
+    let fine = run(FitOptions {
+        tolerance: Some(1e-12),
+        ..FitOptions::default()
+    })
+    .expect("reachable");
+    let n = fine.segments().len();
+    let error = conversion_error(&helix, &fine, DEFAULT_SAMPLES).max;
+    assert!(n > 8 && error <= 1e-12, "{n} segments, error {error:e}");
+    let coarser = convert(
+        &helix,
+        &0.0,
+        &6.0,
+        n / 2,
+        4,
+        &FreeParameters::zero(4, &()),
+        true,
+    )
+    .expect("converts");
+    assert!(
+        conversion_error(&helix, &coarser, DEFAULT_SAMPLES).max > 1e-12,
+        "{n} is not the first N that meets it"
+    );
 }

@@ -614,13 +614,13 @@ impl PathJob {
             ),
             (
                 "length",
-                Out::Num(path.length(&default_tolerance::<T>(ctx))),
+                Out::Num(path.length_within(&default_tolerance::<T>(ctx))),
             ),
             ("at_waypoints", Out::List(at_waypoints)),
             (
                 "turns",
                 Out::List(
-                    path.tangents
+                    path.tangents()
                         .s
                         .iter()
                         .map(|&s| Out::Int(s as i64))

@@ -250,8 +250,8 @@ fn phodcos_in<T: Real>(
         }
         (None, None) => return fail("input: give exactly one of \"segments\" and \"tolerance\""),
     };
-    let n = pw.segments.len();
-    let pre = pw.segments.iter().map(preimage_out).collect();
+    let n = pw.segments().len();
+    let pre = pw.segments().iter().map(preimage_out).collect();
     Ok((
         n,
         Out::object(vec![
@@ -300,7 +300,7 @@ impl RealJob for PhodcosJob {
             ("max_error_relative_width", Out::F64(e.relative_width())),
             (
                 "preimages",
-                Out::List(pw.segments.iter().map(preimage_out).collect()),
+                Out::List(pw.segments().iter().map(preimage_out).collect()),
             ),
         ]))
     }

@@ -9,7 +9,9 @@
 //! bracket of its neighbouring samples. The sampled maximum is reported too. The proven
 //! counterpart, an enclosure by branch and bound in balls, is [`super::enclosure`].
 
+use super::parametric::{check_domain, CurveError, ParamCurve, ParamCurveArclen};
 use super::Curve;
+use crate::numeric::poly::bernstein::{bernstein_jet, BernsteinError};
 use crate::numeric::poly::binom;
 use crate::numeric::quat::vec3;
 use crate::scalar::ball::carried;
@@ -44,16 +46,104 @@ pub fn knot<T: Field>(a: &T, b: &T, n: usize, k: usize) -> T {
     a.clone() + &((b.clone() - a) * &T::from_i64(k as i64, &ctx) / &T::from_i64(n as i64, &ctx))
 }
 
-/// Pieces given by their control points.
+/// The segment k holding t and the local parameter ξ = (t − t_k)/h ∈ [0, 1] (t clamped to
+/// [a, b]; at a joint, the segment that starts there; at b, the last one).
+pub fn locate<T: Real, P: BernsteinPieces<T> + ?Sized>(pieces: &P, t: &T) -> (usize, T) {
+    let ctx = t.ctx();
+    let n = pieces.count();
+    let u = (t.clone() - pieces.interval().0) / &pieces.step();
+    // The floor of u, found by comparison so no conversion of huge values can overflow.
+    let nn = T::from_i64(n as i64, &ctx);
+    let u = if u < T::zero_in(&ctx) {
+        T::zero_in(&ctx)
+    } else if u > nn {
+        nn
+    } else {
+        u
+    };
+    let (mut lo, mut hi) = (0usize, n);
+    while hi - lo > 1 {
+        let mid = (lo + hi) / 2;
+        if u >= T::from_i64(mid as i64, &ctx) {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    let xi = u - &T::from_i64(lo as i64, &ctx);
+    (lo, xi)
+}
+
+/// γ(t), γ′(t), … per unit of t for pieces in Bernstein form ([`ParamCurve::derivatives`]):
+/// the derivatives in ξ divided by hᵏ.
+///
+/// # Errors
+/// [`CurveError::OutsideDomain`] for t outside [a, b].
+pub fn pieces_derivatives<T: Real, P: BernsteinPieces<T> + ?Sized>(
+    pieces: &P,
+    t: &T,
+    order: usize,
+) -> Result<Vec<[T; 3]>, CurveError> {
+    check_domain(t, pieces.interval())?;
+    let (k, xi) = locate(pieces, t);
+    let mut jet = bernstein_jet(&pieces.control_points(k), &xi, order);
+    let inv = T::one_in(&t.ctx()) / &pieces.step();
+    let mut scale = T::one_in(&t.ctx());
+    for v in jet.iter_mut().skip(1) {
+        scale *= &inv;
+        for x in v.iter_mut() {
+            *x *= &scale;
+        }
+    }
+    Ok(jet)
+}
+
+/// The joints t_1 … t_{N−1} ([`ParamCurve::breakpoints`]).
+pub fn pieces_breakpoints<T: Real, P: BernsteinPieces<T> + ?Sized>(pieces: &P) -> Vec<T> {
+    (1..pieces.count()).map(|k| pieces.knot(k)).collect()
+}
+
+/// Pieces given by their control points: N ≥ 1 pieces on [a, b], a < b (built by
+/// [`crate::algo::hermite::piecewise::interpolate_curve`]). As a curve of t it implements
+/// [`ParamCurve`] and [`ParamCurveArclen`] (by quadrature).
 #[derive(Clone, Debug)]
 pub struct PiecewiseBernstein<T> {
-    /// The start of the interval.
-    pub a: T,
-    /// The end of the interval.
-    pub b: T,
-    /// The control points of each piece, in order.
-    pub segments: Vec<Vec<[T; 3]>>,
+    a: T,
+    b: T,
+    segments: Vec<Vec<[T; 3]>>,
 }
+
+impl<T: Real> PiecewiseBernstein<T> {
+    /// The pieces with these control points on uniform segments of [a, b].
+    ///
+    /// # Errors
+    /// [`crate::numeric::poly::bernstein::BernsteinError::Empty`] without a piece or for a
+    /// piece without a control point, [`crate::numeric::poly::bernstein::BernsteinError::Interval`]
+    /// unless a < b, both finite.
+    pub fn new(a: T, b: T, segments: Vec<Vec<[T; 3]>>) -> Result<Self, BernsteinError> {
+        if segments.is_empty() || segments.iter().any(Vec::is_empty) {
+            return Err(BernsteinError::Empty);
+        }
+        if !(a.is_finite() && b.is_finite() && a < b) {
+            return Err(BernsteinError::Interval);
+        }
+        Ok(PiecewiseBernstein { a, b, segments })
+    }
+}
+
+impl<T: Real> ParamCurve<T, 3> for PiecewiseBernstein<T> {
+    fn domain(&self) -> (T, T) {
+        (self.a.clone(), self.b.clone())
+    }
+    fn derivatives(&self, t: &T, order: usize) -> Result<Vec<[T; 3]>, CurveError> {
+        pieces_derivatives(self, t, order)
+    }
+    fn breakpoints(&self) -> Vec<T> {
+        pieces_breakpoints(self)
+    }
+}
+
+impl<T: Real> ParamCurveArclen<T, 3> for PiecewiseBernstein<T> {}
 
 impl<T: Real> BernsteinPieces<T> for PiecewiseBernstein<T> {
     fn interval(&self) -> (&T, &T) {

@@ -5,8 +5,10 @@
 //! ([`approx`]) or a proven enclosure ([`enclosure`]).
 
 pub mod approx;
+pub mod bezier;
 pub mod enclosure;
 pub mod expr;
+pub mod parametric;
 pub mod regularity;
 pub mod spline;
 pub mod taylor;

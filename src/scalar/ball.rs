@@ -528,6 +528,10 @@ impl Field for Ball {
         )
     }
     fn from_ratio(n: i64, d: i64, bits: &u32) -> Self {
+        if d == 0 {
+            // No number: the ball of every number, as for NaN.
+            return Ball::new(Float::with_val(precision(*bits), 0), f64::INFINITY);
+        }
         let q = rug::Rational::from((n, d));
         Ball::rounded(
             Float::with_val_round(precision(*bits), &q, Round::Nearest),

@@ -85,8 +85,25 @@ pub trait Field:
     }
     /// The integer `v`, rounded to the context if it is not representable.
     fn from_i64(v: i64, ctx: &Self::Ctx) -> Self;
-    /// The fraction `n/d` with one rounding (exact for rationals). `d` must not be zero.
+    /// The fraction `n/d` with one rounding (exact for rationals).
+    ///
+    /// # Panics
+    /// For d = 0 the exact types (rationals, ℚ(√2)) panic, as `i64` division by zero does
+    /// and as their `/` operator does; the floating types give ±∞ or NaN (a ball: the ball of
+    /// every number). By design: the library calls it with denominators it has checked.
+    /// [`Field::try_from_ratio`] is the form for a denominator that may be zero.
     fn from_ratio(n: i64, d: i64, ctx: &Self::Ctx) -> Self;
+    /// `n/d`, or `None` for d = 0, in every number type.
+    ///
+    /// # Examples
+    /// ```
+    /// use trajverify::scalar::{BigRational, Field};
+    /// assert_eq!(BigRational::try_from_ratio(1, 0, &()), None);
+    /// assert_eq!(f64::try_from_ratio(3, 4, &()), Some(0.75));
+    /// ```
+    fn try_from_ratio(n: i64, d: i64, ctx: &Self::Ctx) -> Option<Self> {
+        (d != 0).then(|| Self::from_ratio(n, d, ctx))
+    }
     /// The fraction `n/d` whose correctly rounded double `nearest` the caller precomputed
     /// (cached constants): f64 returns `nearest` without dividing, every other type
     /// computes `n/d` in its own precision as [`Field::from_ratio`] does.

@@ -71,6 +71,10 @@ impl Field for Float {
         Float::with_val(precision(*bits), v)
     }
     fn from_ratio(n: i64, d: i64, bits: &u32) -> Self {
+        if d == 0 {
+            // IEEE: ±∞, or NaN for 0/0 (a GMP rational with denominator 0 would abort).
+            return Float::with_val(precision(*bits), n) / 0u32;
+        }
         Float::with_val(precision(*bits), Rational::from((n, d)))
     }
     fn from_rational(q: &BigRational, bits: &u32) -> Self {

@@ -14,8 +14,9 @@
 
 use super::gram::{gram_entries, gram_matrix};
 use super::CardinalBSpline;
+use crate::curve::parametric::{check_domain, CurveError, ParamCurve, ParamCurveArclen};
 use crate::numeric::linalg::{inverse, solve, Matrix};
-use crate::scalar::Field;
+use crate::scalar::{Field, Real};
 
 /// Why a fit cannot be made.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -84,6 +85,7 @@ pub struct SplineSpace<T: Field> {
     /// The number of control points (shifted basis functions) M.
     pub controls: usize,
     gram_entries: Vec<T>,
+    ctx: T::Ctx,
 }
 
 impl<T: Field> SplineSpace<T> {
@@ -96,6 +98,7 @@ impl<T: Field> SplineSpace<T> {
             basis: CardinalBSpline::from_algorithm1(degree, ctx),
             controls,
             gram_entries: gram_entries(degree, ctx),
+            ctx: ctx.clone(),
         })
     }
 
@@ -320,6 +323,92 @@ fn norm1<T: Field>(a: &Matrix<T>) -> T {
         .map(|c| (0..a.rows()).fold(T::zero_in(&ctx), |acc, r| acc + &a[(r, c)].abs()))
         .fold(T::zero_in(&ctx), |m, x| m.max_with(&x))
 }
+
+/// A fitted spline x(t) = Σᵢ τᵢ B_k(t − i + 1) as a curve of t on its support [0, M + k]
+/// (points are `[T; 1]`; fit each coordinate of a space curve separately).
+///
+/// # Examples
+/// The optimal cubic interpolant (Eq. 14) of four values, exactly and in f64:
+/// ```
+/// use trajverify::algo::bspline::fit::{SplineFit, SplineSpace};
+/// use trajverify::curve::parametric::ParamCurve;
+/// use trajverify::scalar::BigRational;
+///
+/// let q = |n: i64| BigRational::from_integer(n.into());
+/// let space = SplineSpace::new(3, 6, &()).unwrap();
+/// let fit = SplineFit::interpolate(space, &[q(3), q(4), q(5), q(6)], &[q(0), q(1), q(0), q(2)]).unwrap();
+/// assert_eq!(fit.point(&q(5)).unwrap(), [q(0)]);
+///
+/// let space = SplineSpace::new(3, 6, &()).unwrap();
+/// let fast = SplineFit::interpolate(space, &[3.0, 4.0, 5.0, 6.0], &[0.0, 1.0, 0.0, 2.0]).unwrap();
+/// assert!((fast.point(&6.0).unwrap()[0] - 2.0).abs() < 1e-12);
+/// assert!(fast.point(&-1.0).is_err());
+/// ```
+pub struct SplineFit<T: Field> {
+    space: SplineSpace<T>,
+    tau: Vec<T>,
+    /// The support [0, M + k].
+    domain: (T, T),
+}
+
+impl<T: Field> SplineFit<T> {
+    /// The interpolating spline of least k-th derivative energy (Eq. 14).
+    ///
+    /// # Errors
+    /// Those of [`SplineSpace::interpolate`].
+    pub fn interpolate(space: SplineSpace<T>, times: &[T], values: &[T]) -> Result<Self, FitError> {
+        let tau = space.interpolate(times, values)?;
+        Ok(SplineFit::with(space, tau))
+    }
+
+    /// The smoothing spline with weights wⱼ ≥ 0 (Eq. 15).
+    ///
+    /// # Errors
+    /// Those of [`SplineSpace::smooth`].
+    pub fn smooth(
+        space: SplineSpace<T>,
+        times: &[T],
+        values: &[T],
+        weights: &[T],
+    ) -> Result<Self, FitError> {
+        let tau = space.smooth(times, values, weights)?;
+        Ok(SplineFit::with(space, tau))
+    }
+
+    fn with(space: SplineSpace<T>, tau: Vec<T>) -> Self {
+        let ctx = space.ctx.clone();
+        let end = T::from_i64((space.controls + space.degree()) as i64, &ctx);
+        SplineFit {
+            space,
+            tau,
+            domain: (T::zero_in(&ctx), end),
+        }
+    }
+
+    /// The control points τ₁ … τ_M.
+    pub fn control_points(&self) -> &[T] {
+        &self.tau
+    }
+
+    /// The spline space.
+    pub fn space(&self) -> &SplineSpace<T> {
+        &self.space
+    }
+}
+
+impl<T: Field> ParamCurve<T, 1> for SplineFit<T> {
+    fn domain(&self) -> (T, T) {
+        self.domain.clone()
+    }
+    fn derivatives(&self, t: &T, order: usize) -> Result<Vec<[T; 1]>, CurveError> {
+        check_domain(t, (&self.domain.0, &self.domain.1))?;
+        Ok((0..=order)
+            .map(|d| [self.space.eval_derivative(&self.tau, t, d)])
+            .collect())
+    }
+}
+
+impl<T: Real> ParamCurveArclen<T, 1> for SplineFit<T> {}
 
 /// Whether the N×M collocation matrix of the (distinct) data times has full row rank N,
 /// decided exactly by the Schoenberg–Whitney condition: B-spline collocation matrices are

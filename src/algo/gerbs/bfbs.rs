@@ -136,6 +136,10 @@ impl<T: Field> Blend<T> for Bfbs {
             (falling.clone(), one - &falling)
         }
     }
+
+    fn basis_count(&self) -> Option<usize> {
+        Some(self.exponents.len())
+    }
 }
 
 /// Φ(t_{k−1}, t_k, t) and its first two derivatives as Eqs. (12), (14), (15) and (18) print

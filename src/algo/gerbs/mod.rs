@@ -126,8 +126,15 @@ impl<T: Field> Knots<T> {
         Knots::new(t)
     }
 
-    /// Knot t_j in the paper's numbering (1-based).
-    pub fn at(&self, j: usize) -> &T {
+    /// Knot t_j in the paper's numbering (1-based): t_1 … t_{n+2}; `None` for j = 0 or
+    /// j > n + 2. ([`Knots::as_slice`] counts from 0: `as_slice()[j − 1]` is t_j.)
+    pub fn get(&self, j: usize) -> Option<&T> {
+        j.checked_sub(1).and_then(|i| self.t.get(i))
+    }
+
+    /// Knot t_j (1-based) for the algorithms, whose indices come from the knot vector
+    /// itself (1 ≤ j ≤ n + 2).
+    pub(crate) fn at(&self, j: usize) -> &T {
         &self.t[j - 1]
     }
 
@@ -246,6 +253,13 @@ pub trait Blend<T: Field> {
     fn break_points(&self, knots: &Knots<T>, j: usize) -> Vec<T> {
         let _ = (knots, j);
         Vec::new()
+    }
+
+    /// The number of basis functions the blend was built for, when it fixes one (a BFBS has
+    /// one exponent per basis function); `None`, the default, for a blend that fits any
+    /// knot vector.
+    fn basis_count(&self) -> Option<usize> {
+        None
     }
 }
 

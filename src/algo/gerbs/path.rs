@@ -18,7 +18,9 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 use super::quadrature::TanhSinh;
 use super::{basis_series_on, Blend, GerbsError, Knots, Side};
+use crate::curve::parametric::{check_domain, CurveError, ParamCurve, ParamCurveArclen};
 use crate::curve::taylor::Taylor;
+use crate::numeric::quadrature::default_tolerance;
 use crate::scalar::ball::carried;
 use crate::scalar::{Field, Real};
 use rayon::prelude::*;
@@ -396,26 +398,70 @@ pub struct PathPoint<T> {
     pub curvature_rate: T,
 }
 
-/// The blended path p(t) = Σ c_{k−1}(t) B_k(t) (Eq. 25, Algorithm 2).
+/// The blended path p(t) = Σ c_{k−1}(t) B_k(t) (Eq. 25, Algorithm 2), a planar curve of
+/// t ∈ [t_1, t_{n+2}] ([0, 1] for the knots of [`GerbsPath::new`]): it implements
+/// [`ParamCurve`] (points are `[T; 2]`) and [`ParamCurveArclen`].
+///
+/// # Examples
+/// A curvature-continuous path through five waypoints (the BFBS with i = 2), in f64:
+/// ```
+/// use trajverify::algo::gerbs::{bfbs::Bfbs, path::{GerbsPath, PathSpec}};
+/// use trajverify::curve::parametric::{curvature, ParamCurve, ParamCurveArclen};
+///
+/// let waypoints = vec![[0.0, 0.0], [300.0, 100.0], [600.0, -50.0], [900.0, 150.0], [1200.0, 0.0]];
+/// let spec = PathSpec::new(waypoints, 80.0, &());
+/// let path = GerbsPath::new(&spec, Bfbs::uniform(2, 5).unwrap()).unwrap();
+/// assert_eq!(path.domain(), (0.0, 1.0));
+/// let start = path.point(&0.0).unwrap();
+/// assert!(start[0].abs() < 1e-9 && start[1].abs() < 1e-9); // the path starts at W1
+/// assert!(curvature(&path, &0.5).unwrap() < 1.0 / 80.0 + 1e-9);
+/// assert!(path.length().unwrap() > 1200.0);
+/// assert!(path.point(&1.5).is_err());
+/// ```
 pub struct GerbsPath<T, B> {
-    /// The knot vector, one knot per local curve.
-    pub knots: Knots<T>,
-    /// The blending function B of the basis.
-    pub blend: B,
-    /// The local curves c_k (lines and arcs).
-    pub curves: Vec<LocalCurve<T>>,
-    /// The tangents and turn signs of Algorithm 1.
-    pub tangents: Tangents<T>,
+    knots: Knots<T>,
+    blend: B,
+    curves: Vec<LocalCurve<T>>,
+    tangents: Tangents<T>,
     /// Whether `knots` are the uniform knots of Algorithm 2 (built by [`GerbsPath::new`]),
     /// on which [`GerbsPath::sample`] locates its samples exactly.
     uniform_knots: bool,
 }
 
+/// The knots, the blend and the curves agree: n curves, n + 2 knots, and a blend built for n
+/// basis functions (or for any).
+fn check_parts<T: Field, B: Blend<T>>(
+    knots: &Knots<T>,
+    blend: &B,
+    curves: &[LocalCurve<T>],
+) -> Result<(), GerbsError> {
+    let n = curves.len();
+    if knots.basis_count() != n {
+        return Err(GerbsError::Knots(format!(
+            "{} knots for {n} local curves: need n + 2",
+            knots.as_slice().len()
+        )));
+    }
+    match blend.basis_count() {
+        Some(count) if count != n => Err(GerbsError::Parameter {
+            field: "params.i",
+            message: format!("{count} exponents for {n} basis functions (one per waypoint)"),
+        }),
+        _ => Ok(()),
+    }
+}
+
 impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
     /// Algorithm 2 on the knots of Fig. 1 with the given basis.
+    ///
+    /// # Errors
+    /// The errors of [`local_curves`] (too few or repeated waypoints, a radius that does
+    /// not fit, …) and [`GerbsError::Parameter`] for a BFBS whose number of exponents is
+    /// not the number of waypoints.
     pub fn new(spec: &PathSpec<T>, blend: B) -> Result<Self, GerbsError> {
         let (curves, tangents) = local_curves(spec, None)?;
         let knots = Knots::uniform(spec.waypoints.len(), &spec.radius.ctx())?;
+        check_parts(&knots, &blend, &curves)?;
         Ok(GerbsPath {
             knots,
             blend,
@@ -426,19 +472,44 @@ impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
     }
 
     /// The path from explicit parts (knots must have n + 2 entries for n curves).
+    ///
+    /// # Errors
+    /// [`GerbsError::Knots`] unless there are n + 2 knots for n curves;
+    /// [`GerbsError::Parameter`] for a blend built for another number of basis functions.
     pub fn from_parts(
         knots: Knots<T>,
         blend: B,
         curves: Vec<LocalCurve<T>>,
         tangents: Tangents<T>,
-    ) -> Self {
-        GerbsPath {
+    ) -> Result<Self, GerbsError> {
+        check_parts(&knots, &blend, &curves)?;
+        Ok(GerbsPath {
             knots,
             blend,
             curves,
             tangents,
             uniform_knots: false,
-        }
+        })
+    }
+
+    /// The knot vector, one knot per local curve and the two end knots.
+    pub fn knots(&self) -> &Knots<T> {
+        &self.knots
+    }
+
+    /// The blending function of the basis.
+    pub fn blend(&self) -> &B {
+        &self.blend
+    }
+
+    /// The local curves c_k (lines and arcs).
+    pub fn curves(&self) -> &[LocalCurve<T>] {
+        &self.curves
+    }
+
+    /// The tangents and turn signs of Algorithm 1.
+    pub fn tangents(&self) -> &Tangents<T> {
+        &self.tangents
     }
 
     /// p as series in t to `order` at t ∈ [0, 1], one-sided at knots (the side decided on t
@@ -573,7 +644,7 @@ impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
     /// already done, not from the knot. The knot intervals are independent and run in
     /// parallel; their lengths are added in knot order, so the sum does not depend on the
     /// number of threads.
-    pub fn length(&self, tol: &T) -> T
+    pub fn length_within(&self, tol: &T) -> T
     where
         B: Sync,
     {
@@ -658,5 +729,56 @@ impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
             }
         }
         d
+    }
+}
+
+impl<T: Real, B: Blend<T>> ParamCurve<T, 2> for GerbsPath<T, B> {
+    fn domain(&self) -> (T, T) {
+        let k = self.knots.as_slice();
+        (k[0].clone(), k[k.len() - 1].clone())
+    }
+
+    /// From the right at an inner knot, from the left at the last one.
+    fn derivatives(&self, t: &T, order: usize) -> Result<Vec<[T; 2]>, CurveError> {
+        let (start, end) = self.domain();
+        check_domain(t, (&start, &end))?;
+        let side = if *t == end { Side::Left } else { Side::Right };
+        let j = self
+            .knots
+            .interval(t, side)
+            .ok_or_else(|| CurveError::OutsideDomain {
+                t: t.to_f64(),
+                start: start.to_f64(),
+                end: end.to_f64(),
+            })?;
+        let [x, y] = self.series_on(t, j, order);
+        let (dx, dy) = (x.derivatives(), y.derivatives());
+        Ok((0..=order)
+            .map(|k| [dx[k].clone(), dy[k].clone()])
+            .collect())
+    }
+
+    /// The inner knots and the points where a basis function is less smooth.
+    fn breakpoints(&self) -> Vec<T> {
+        let knots = self.knots.as_slice();
+        let mut out = Vec::new();
+        for j in 1..knots.len() {
+            if j > 1 && knots[j - 1] > knots[0] {
+                out.push(knots[j - 1].clone());
+            }
+            if knots[j - 1] < knots[j] {
+                out.extend(self.blend.break_points(&self.knots, j));
+            }
+        }
+        out.dedup();
+        out
+    }
+}
+
+impl<T: Real, B: Blend<T> + Sync> ParamCurveArclen<T, 2> for GerbsPath<T, B> {
+    /// [`GerbsPath::length_within`] the default tolerance 2^(8−p), which carries an ERBS's
+    /// quadrature from node to node.
+    fn length(&self) -> Result<T, CurveError> {
+        Ok(self.length_within(&default_tolerance(&self.knots.at(1).ctx())))
     }
 }

@@ -30,14 +30,15 @@
 //!     .unwrap()
 //!     .solve()
 //!     .unwrap();
-//! assert_eq!(exact.control_points[3..], [q(1, 5), q(3, 5), q(1, 1)]);
+//! assert_eq!(exact.control_points()[3..], [q(1, 5), q(3, 5), q(1, 1)]);
 //! let fast = HermiteData::new(vec![0.0; 3], vec![1.0, 1.0, 0.0], 0.0, 2.0).unwrap().solve().unwrap();
-//! assert!((fast.control_points[3] - 0.2).abs() < 1e-15);
+//! assert!((fast.control_points()[3] - 0.2).abs() < 1e-15);
 //! ```
 
 pub mod condition;
 pub mod piecewise;
 
+use crate::curve::bezier::BezierCurve;
 use crate::numeric::linalg::Matrix;
 use crate::numeric::poly::differences::{anti_difference, backward_anti_difference};
 use crate::numeric::poly::{binomial, falling_factorial, falling_factorial_in, int_in, Bernstein};
@@ -62,6 +63,9 @@ pub enum HermiteError {
     /// Points of different dimensions.
     #[error("every point must have the same dimension d ≥ 1")]
     DimensionMismatch,
+    /// A piecewise interpolation asked for no segment.
+    #[error("segments: a piecewise interpolant needs at least one segment")]
+    NoSegments,
     /// The interval has t1 ≤ t0.
     #[error("the interval [t0, t1] must have t1 > t0")]
     EmptyInterval,
@@ -170,15 +174,61 @@ pub fn solve_points<T: Field>(
             .solve()
         })
         .collect::<Result<Vec<_>, _>>()?;
-    let count = per_coordinate[0].control_points.len();
+    let count = per_coordinate[0].control_points().len();
     Ok((0..count)
         .map(|k| {
             per_coordinate
                 .iter()
-                .map(|b| b.control_points[k].clone())
+                .map(|b| b.control_points()[k].clone())
                 .collect()
         })
         .collect())
+}
+
+/// The Hermite interpolant of points in Rᴰ as a curve of t ∈ [t₀, t₁] (like scipy's
+/// `BPoly.from_derivatives` for two times): `start[j]` and `end[j]` are the j-th derivative
+/// vectors at t₀ and t₁, the same number m + 1 at both ends; the result has degree 2m + 1.
+///
+/// # Errors
+/// [`HermiteError::Empty`] without data, [`HermiteError::LengthMismatch`] for unequal
+/// numbers of derivatives, [`HermiteError::DimensionMismatch`] for D = 0,
+/// [`HermiteError::EmptyInterval`] unless t₀ < t₁ (both finite), and
+/// [`HermiteError::ScaleNotRepresentable`] where the scales (t₁ − t₀)ʲ(n−j)!/n! overflow.
+///
+/// # Examples
+/// Position, velocity and acceleration at both ends of [0, 2] in 3-D, in f64 and exactly:
+/// ```
+/// use trajverify::algo::hermite::hermite_curve;
+/// use trajverify::curve::parametric::ParamCurve;
+/// use trajverify::scalar::BigRational;
+///
+/// let start = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 0.0]];
+/// let end = [[1.0, 1.0, 0.5], [0.0, 1.0, 0.0], [0.0, 0.0, 0.0]];
+/// let curve = hermite_curve(0.0, 2.0, &start, &end).unwrap();
+/// assert_eq!(curve.degree(), 5);
+/// let v = curve.derivative(&2.0, 1).unwrap();
+/// assert!((v[1] - 1.0).abs() < 1e-15 && v[0].abs() < 1e-15);
+///
+/// let q = |n: i64| BigRational::from_integer(n.into());
+/// let exact = hermite_curve(q(0), q(2), &[[q(0)], [q(0)], [q(0)]], &[[q(1)], [q(1)], [q(0)]]).unwrap();
+/// assert_eq!(exact.control_points()[3][0], BigRational::new(1.into(), 5.into())); // paper 000, Fig. 2
+/// ```
+pub fn hermite_curve<T: Field, const D: usize>(
+    t0: T,
+    t1: T,
+    start: &[[T; D]],
+    end: &[[T; D]],
+) -> Result<BezierCurve<T, D>, HermiteError> {
+    if start.is_empty() || end.is_empty() {
+        return Err(HermiteError::Empty);
+    }
+    let rows = |v: &[[T; D]]| v.iter().map(|p| p.to_vec()).collect::<Vec<_>>();
+    let polygon = solve_points(&rows(start), &rows(end), &t0, &t1)?;
+    let points = polygon
+        .into_iter()
+        .map(|p| std::array::from_fn(|c| p[c].clone()))
+        .collect();
+    BezierCurve::new(points, t0, t1).map_err(|_| HermiteError::EmptyInterval)
 }
 
 /// The scales Tʲ(n−j)!/n!, j = 0…m, n = 2m+1, that turn derivatives into differences.
@@ -263,7 +313,7 @@ pub fn hermite_matrix<T: Field>(m: usize, t0: &T, t1: &T) -> Result<Matrix<T>, H
             t0.clone(),
             t1.clone(),
         )?;
-        columns.push(data.solve()?.control_points);
+        columns.push(data.solve()?.into_control_points());
     }
     Ok(Matrix::from_fn(size, size, |i, j| columns[j][i].clone()))
 }
@@ -284,13 +334,13 @@ mod tests {
     #[test]
     fn figure_two_control_points() {
         let fast = HermiteData::new(ints(&[0, 0, 0]), ints(&[1, 1, 0]), q(0, 1), q(1, 1)).unwrap();
-        let p = fast.solve().unwrap().control_points;
+        let p = fast.solve().unwrap().into_control_points();
         assert_eq!(
             p,
             vec![q(0, 1), q(0, 1), q(0, 1), q(3, 5), q(4, 5), q(1, 1)]
         );
         let slow = HermiteData::new(ints(&[0, 0, 0]), ints(&[1, 1, 0]), q(0, 1), q(2, 1)).unwrap();
-        let p = slow.solve().unwrap().control_points;
+        let p = slow.solve().unwrap().into_control_points();
         assert_eq!(
             p,
             vec![q(0, 1), q(0, 1), q(0, 1), q(1, 5), q(3, 5), q(1, 1)]

@@ -21,12 +21,22 @@ use rayon::prelude::*;
 
 /// The interpolant of `curve` on `segments` uniform pieces of [a, b] matching m derivatives
 /// at every joint (degree 2m + 1).
+///
+/// # Errors
+/// [`HermiteError::NoSegments`] for `segments` = 0, [`HermiteError::EmptyInterval`] unless
+/// a < b, and the errors of [`solve_points`].
 pub fn interpolate_curve<T: Real, C: Curve<T> + ?Sized>(
     curve: &C,
     (a, b): (&T, &T),
     segments: usize,
     m: usize,
 ) -> Result<PiecewiseBernstein<T>, HermiteError> {
+    if segments == 0 {
+        return Err(HermiteError::NoSegments);
+    }
+    if a.partial_cmp(b) != Some(std::cmp::Ordering::Less) {
+        return Err(HermiteError::EmptyInterval);
+    }
     let ctx = a.ctx();
     let h = (b.clone() - a) / &T::from_i64(segments as i64, &ctx);
     // h^j γ^(j)(t_k) as rows of points, for every joint.
@@ -57,11 +67,7 @@ pub fn interpolate_curve<T: Real, C: Curve<T> + ?Sized>(
                 .collect())
         }))
         .collect::<Result<Vec<_>, HermiteError>>()?;
-    Ok(PiecewiseBernstein {
-        a: a.clone(),
-        b: b.clone(),
-        segments: pieces,
-    })
+    PiecewiseBernstein::new(a.clone(), b.clone(), pieces).map_err(|_| HermiteError::EmptyInterval)
 }
 
 #[cfg(test)]

@@ -376,39 +376,39 @@ impl<T> Default for ParametrizeOptions<T> {
     }
 }
 
-/// Marin's minimizing parametrization of `points` (point i is `points[i]`, every point with
-/// the same dimension d ≥ 1): gradient projection in f64 from normalized chord length, then
+/// Marin's minimizing parametrization of `points` in Rᴰ (D ≥ 1): gradient projection in f64 from normalized chord length, then
 /// Newton's method in `T` ([`descend`], then [`refine`]). The knots run from 0 to 1.
 ///
 /// # Errors
 /// [`SplineError::TooFewKnots`] for fewer than two points;
-/// [`SplineError::LengthMismatch`] for points of different dimensions (or none);
-/// [`SplineError::WeightCount`] for an `alpha` whose length is not d; and the errors of the
-/// minimization (coincident consecutive points).
+/// [`SplineError::LengthMismatch`] for D = 0;
+/// [`SplineError::WeightCount`] for an `alpha` whose length is not D; and the errors of the
+/// minimization (coincident consecutive points). Pass the knots and the points to
+/// [`super::natural::NaturalSplineCurve::new`] for the curve.
 ///
 /// # Examples
 /// ```
 /// use trajverify::algo::param::descent::{parametrize, ParametrizeOptions};
 /// // Four points in the plane; the knots are increasing from 0 to 1.
-/// let points = vec![vec![0.0, 0.0], vec![1.0, 2.0], vec![3.0, 3.0], vec![4.0, 1.0]];
+/// let points = [[0.0, 0.0], [1.0, 2.0], [3.0, 3.0], [4.0, 1.0]];
 /// let m = parametrize(&points, &ParametrizeOptions::default()).unwrap();
 /// assert_eq!(m.knots.len(), 4);
 /// assert!(m.knots.windows(2).all(|w| w[0] < w[1]));
 /// assert!(m.objective <= m.chord_objective);
 /// ```
-pub fn parametrize<T: Real>(
-    points: &[Vec<T>],
+pub fn parametrize<T: Real, const D: usize>(
+    points: &[[T; D]],
     options: &ParametrizeOptions<T>,
 ) -> Result<Minimum<T>, SplineError> {
     let n = points.len();
-    let d = points.first().map_or(0, Vec::len);
+    let d = D;
     if n < 2 {
         return Err(SplineError::TooFewKnots);
     }
-    if d == 0 || points.iter().any(|p| p.len() != d) {
+    if d == 0 {
         return Err(SplineError::LengthMismatch {
-            knots: d,
-            values: points.iter().map(Vec::len).find(|&l| l != d).unwrap_or(0),
+            knots: n,
+            values: 0,
         });
     }
     // Component-major, as the objective reads them: z[l][i] is coordinate l of point i.

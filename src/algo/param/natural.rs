@@ -8,6 +8,7 @@
 //! is exact. On [tᵢ₋₁, tᵢ], θ″ is linear between mᵢ₋₁ and mᵢ, so
 //! ∫θ″² = Σᵢ hᵢ(mᵢ₋₁² + mᵢ₋₁mᵢ + mᵢ²)/3 = zᵀQᵀM⁻¹Qz (Eq. 31 for one component).
 
+use crate::curve::parametric::{check_domain, CurveError, ParamCurve, ParamCurveArclen};
 use crate::numeric::quadrature::gauss_legendre4;
 use crate::scalar::{max_of, Field, Real};
 
@@ -311,6 +312,112 @@ fn second_derivatives<T: Field>(t: &[T], z: &[T]) -> Vec<T> {
     }
     m
 }
+
+impl<T: Field> NaturalCubicSpline<T> {
+    /// θ, θ′, θ″, θ‴, … at t ∈ [t₀, t_N] on the piece that starts at t (the last piece at
+    /// t_N): θ‴ = (mᵢ − mᵢ₋₁)/hᵢ there, and every higher derivative is 0.
+    fn jet(&self, t: &T, order: usize) -> Result<Vec<T>, CurveError> {
+        let n = self.knots.len() - 1;
+        check_domain(t, (&self.knots[0], &self.knots[n]))?;
+        let i = (1 + self.knots[1..].partition_point(|k| k <= t)).min(n);
+        let [value, slope, curvature] = self.eval_on(t, i);
+        let h = self.knots[i].clone() - &self.knots[i - 1];
+        let third = (self.second[i].clone() - &self.second[i - 1]) / &h;
+        let zero = T::zero_in(&t.ctx());
+        let mut jet = vec![value, slope, curvature, third];
+        jet.resize(order + 1, zero);
+        Ok(jet)
+    }
+}
+
+impl<T: Field> ParamCurve<T, 1> for NaturalCubicSpline<T> {
+    fn domain(&self) -> (T, T) {
+        (
+            self.knots[0].clone(),
+            self.knots[self.knots.len() - 1].clone(),
+        )
+    }
+    fn derivatives(&self, t: &T, order: usize) -> Result<Vec<[T; 1]>, CurveError> {
+        Ok(self.jet(t, order)?.into_iter().map(|x| [x]).collect())
+    }
+    fn breakpoints(&self) -> Vec<T> {
+        self.knots[1..self.knots.len() - 1].to_vec()
+    }
+}
+
+impl<T: Real> ParamCurveArclen<T, 1> for NaturalCubicSpline<T> {}
+
+/// The interpolating curve of paper 004: through points p₀ … p_N of Rᴰ at knots
+/// t₀ < … < t_N, one natural cubic spline per coordinate ([`NaturalCubicSpline`]), C² in t.
+///
+/// # Examples
+/// Marin's knots for four points of the plane ([`super::descent::parametrize`]) and the
+/// spline through the points on them:
+/// ```
+/// use trajverify::algo::param::descent::{parametrize, ParametrizeOptions};
+/// use trajverify::algo::param::natural::NaturalSplineCurve;
+/// use trajverify::curve::parametric::ParamCurve;
+///
+/// let points = [[0.0, 0.0], [1.0, 2.0], [3.0, 3.0], [4.0, 1.0]];
+/// let knots = parametrize(&points, &ParametrizeOptions::default()).unwrap().knots;
+/// let curve = NaturalSplineCurve::new(knots.clone(), &points).unwrap();
+/// let p = curve.point(&knots[2]).unwrap();
+/// assert!((p[0] - 3.0).abs() < 1e-12 && (p[1] - 3.0).abs() < 1e-12);
+/// assert_eq!(curve.derivative(&0.0, 2).unwrap(), [0.0, 0.0]); // natural end condition
+/// ```
+#[derive(Clone, Debug)]
+pub struct NaturalSplineCurve<T, const D: usize> {
+    components: Vec<NaturalCubicSpline<T>>,
+}
+
+impl<T: Field, const D: usize> NaturalSplineCurve<T, D> {
+    /// The curve through `points` at `knots`.
+    ///
+    /// # Errors
+    /// The errors of [`NaturalCubicSpline::new`] (too few knots, one point per knot,
+    /// increasing knots); [`SplineError::LengthMismatch`] for D = 0.
+    pub fn new(knots: Vec<T>, points: &[[T; D]]) -> Result<Self, SplineError> {
+        if D == 0 {
+            return Err(SplineError::LengthMismatch {
+                knots: knots.len(),
+                values: 0,
+            });
+        }
+        let components = (0..D)
+            .map(|c| {
+                let values = points.iter().map(|p| p[c].clone()).collect();
+                NaturalCubicSpline::new(knots.clone(), values)
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        Ok(NaturalSplineCurve { components })
+    }
+
+    /// The spline of coordinate c.
+    pub fn component(&self, c: usize) -> Option<&NaturalCubicSpline<T>> {
+        self.components.get(c)
+    }
+}
+
+impl<T: Field, const D: usize> ParamCurve<T, D> for NaturalSplineCurve<T, D> {
+    fn domain(&self) -> (T, T) {
+        self.components[0].domain()
+    }
+    fn derivatives(&self, t: &T, order: usize) -> Result<Vec<[T; D]>, CurveError> {
+        let jets = self
+            .components
+            .iter()
+            .map(|s| s.jet(t, order))
+            .collect::<Result<Vec<_>, _>>()?;
+        Ok((0..=order)
+            .map(|k| std::array::from_fn(|c| jets[c][k].clone()))
+            .collect())
+    }
+    fn breakpoints(&self) -> Vec<T> {
+        self.components[0].breakpoints()
+    }
+}
+
+impl<T: Real, const D: usize> ParamCurveArclen<T, D> for NaturalSplineCurve<T, D> {}
 
 #[cfg(test)]
 mod tests {

@@ -139,7 +139,7 @@ impl<T: Field> FreeParameters<T> {
 }
 
 /// Why the data have no interpolant of this form.
-#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum PhHermiteError {
     /// v_b + v_e = 0.
     #[error("v_b + v_e = 0: the data have no standard form (Definition 3)")]
@@ -165,6 +165,12 @@ pub enum PhHermiteError {
     /// Data that are not finite (the curve undefined or overflowing at a segment end).
     #[error("the Hermite data are not finite at segment end {0}")]
     NotFinite(usize),
+    /// A fit's tolerance that is not a positive finite number.
+    #[error("tolerance: must be a positive finite number")]
+    BadTolerance,
+    /// No number of segments up to the limit met a fit's tolerance: (segments, error).
+    #[error("tolerance: {0} segments still leave a conversion error of {1:e}")]
+    Tolerance(usize, f64),
 }
 
 /// How step 5 chooses A_m.

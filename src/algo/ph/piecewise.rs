@@ -22,6 +22,10 @@ pub use crate::curve::approx::{
     conversion_error, knot, refine_local_max, BernsteinPieces, CertifiedError, ConversionError,
     DEFAULT_SAMPLES,
 };
+use crate::curve::approx::{locate, pieces_breakpoints, pieces_derivatives};
+use crate::curve::parametric::{
+    check_domain, CurveError, Frame, ParamCurve, ParamCurveArclen, ParamCurveFrame,
+};
 use crate::curve::taylor::Taylor;
 use crate::curve::Curve;
 use crate::numeric::quat::{vec3, Quat};
@@ -29,18 +33,34 @@ use crate::scalar::ball::carried;
 use crate::scalar::{BigRational, Field, Float, Real};
 use rayon::prelude::*;
 
-/// A curve converted on N uniform segments of [a, b].
+/// A curve converted on N ≥ 1 uniform segments of [a, b], a < b (built by [`fit`] or
+/// [`convert`]; the fields are private so that no value breaks these invariants). As a curve
+/// of t ∈ [a, b] it implements [`ParamCurve`], [`ParamCurveArclen`] (exactly, from the
+/// polynomial speed) and [`ParamCurveFrame`] (the Euler–Rodrigues frame).
 #[derive(Clone, Debug)]
 pub struct PiecewisePh<T> {
-    /// The start of the interval.
-    pub a: T,
-    /// The end of the interval.
-    pub b: T,
-    /// The PH curve of each segment, in order.
-    pub segments: Vec<PhCurve<T>>,
+    a: T,
+    b: T,
+    segments: Vec<PhCurve<T>>,
 }
 
 impl<T: Real> PiecewisePh<T> {
+    /// The start a of the interval.
+    pub fn start(&self) -> &T {
+        &self.a
+    }
+    /// The end b of the interval.
+    pub fn end(&self) -> &T {
+        &self.b
+    }
+    /// The PH curve of each segment, in order, each in its local parameter ξ ∈ [0, 1].
+    pub fn segments(&self) -> &[PhCurve<T>] {
+        &self.segments
+    }
+    /// Apply the roll correction of Eq. (22) ([`align_roll`]) to every joint.
+    pub fn align_roll(&mut self) {
+        align_roll(&mut self.segments);
+    }
     /// Segment length h = (b − a)/N.
     pub fn step(&self) -> T {
         let ctx = self.a.ctx();
@@ -52,31 +72,7 @@ impl<T: Real> PiecewisePh<T> {
     }
     /// The segment containing t and the local parameter ξ ∈ [0, 1] (clamped to [a, b]).
     pub fn locate(&self, t: &T) -> (usize, T) {
-        let ctx = t.ctx();
-        let n = self.segments.len();
-        let u = (t.clone() - &self.a) / &self.step();
-        let mut k = 0usize;
-        // The floor of u, found by comparison so no conversion of huge values can overflow.
-        let nn = T::from_i64(n as i64, &ctx);
-        let u = if u < T::zero_in(&ctx) {
-            T::zero_in(&ctx)
-        } else if u > nn {
-            nn
-        } else {
-            u
-        };
-        let (mut lo, mut hi) = (0usize, n);
-        while hi - lo > 1 {
-            let mid = (lo + hi) / 2;
-            if u >= T::from_i64(mid as i64, &ctx) {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
-        k = k.max(lo);
-        let xi = u - &T::from_i64(k as i64, &ctx);
-        (k, xi)
+        locate(self, t)
     }
 }
 
@@ -172,6 +168,171 @@ pub fn convert<T: Real, C: Curve<T> + ?Sized>(
         b: b.clone(),
         segments: pieces,
     })
+}
+
+/// Options of [`fit`], with `Default` the paper's choices (Sec. 5F): C⁴ joints, φ* = 0,
+/// the roll correction on, 8 segments.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FitOptions<T> {
+    /// The number N of uniform segments, or with `tolerance` the first N tried. Default 8.
+    pub segments: usize,
+    /// When set, N is doubled (from `segments`, up to [`MAX_FIT_SEGMENTS`]) until the
+    /// conversion error E (Eq. 21; [`conversion_error`], a sampled maximum refined by
+    /// Newton's method: an estimate, not a bound) is at most this. Default `None`.
+    pub tolerance: Option<T>,
+    /// The derivatives m matched at every joint (the spline is Cᵐ, degree 2m + 1). Default 4.
+    pub derivatives: usize,
+    /// The free parameters of Algorithm 1 (θ and τ); `None`, the default, is φ* = 0.
+    pub free: Option<FreeParameters<T>>,
+    /// Apply the roll correction (Eq. 22) so A, the frame and ω are continuous. Default true.
+    pub roll: bool,
+}
+
+impl<T> Default for FitOptions<T> {
+    fn default() -> Self {
+        FitOptions {
+            segments: 8,
+            tolerance: None,
+            derivatives: 4,
+            free: None,
+            roll: true,
+        }
+    }
+}
+
+/// The most segments [`fit`] tries for a tolerance.
+pub const MAX_FIT_SEGMENTS: usize = 1 << 14;
+
+/// The piecewise PH spline of `curve` on [a, b] (Algorithm 2), with the number of segments,
+/// the continuity and the free parameters of `options`.
+///
+/// # Errors
+/// Those of [`convert`]; [`PhHermiteError::FreeCount`] for free parameters not sized for
+/// `options.derivatives`; [`PhHermiteError::BadTolerance`] for a tolerance that is not
+/// positive and finite; [`PhHermiteError::Tolerance`] when no N ≤ [`MAX_FIT_SEGMENTS`]
+/// meets the tolerance.
+///
+/// # Examples
+/// The helix (cos t, sin t, t/5) on [0, 6] with 32 C⁴ segments, in f64 and in MPFR:
+/// ```
+/// use trajverify::algo::ph::piecewise::{fit, FitOptions};
+/// use trajverify::curve::parametric::{ParamCurve, ParamCurveArclen};
+/// use trajverify::curve::ExprCurve;
+/// use trajverify::scalar::Float;
+///
+/// let helix = ExprCurve::parse("[cos(t), sin(t), t/5]").unwrap();
+/// let options = FitOptions { segments: 32, ..FitOptions::default() };
+/// let spline = fit(&helix.compile::<f64>(&()), &0.0, &6.0, &options).unwrap();
+/// let length = spline.length().unwrap(); // exact for the PH spline: 6·√(1 + 1/25)
+/// assert!((length - 6.0 * 1.04f64.sqrt()).abs() < 1e-6);
+///
+/// let (a, b) = (Float::with_val(256, 0), Float::with_val(256, 6));
+/// let precise = fit(&helix.compile::<Float>(&256), &a, &b, &FitOptions::default()).unwrap();
+/// let p = precise.point(&Float::with_val(256, 3)).unwrap();
+/// assert!((p[0].to_f64() - 3f64.cos()).abs() < 1e-5);
+/// ```
+pub fn fit<T: Real, C: Curve<T> + ?Sized>(
+    curve: &C,
+    a: &T,
+    b: &T,
+    options: &FitOptions<T>,
+) -> Result<PiecewisePh<T>, PhHermiteError> {
+    let m = options.derivatives;
+    if let Some(tol) = &options.tolerance {
+        if !(tol.is_finite() && *tol > T::zero_in(&tol.ctx())) {
+            return Err(PhHermiteError::BadTolerance);
+        }
+    }
+    let free = match &options.free {
+        Some(f) => f.clone(),
+        None => FreeParameters::zero(m, &a.ctx()),
+    };
+    let mut n = options.segments;
+    loop {
+        let pw = convert(curve, a, b, n, m, &free, options.roll)?;
+        let Some(tol) = &options.tolerance else {
+            return Ok(pw);
+        };
+        let error = conversion_error(curve, &pw, DEFAULT_SAMPLES).max;
+        if error <= *tol {
+            return Ok(pw);
+        }
+        if n >= MAX_FIT_SEGMENTS {
+            return Err(PhHermiteError::Tolerance(n, error.to_f64()));
+        }
+        n = (2 * n).min(MAX_FIT_SEGMENTS);
+    }
+}
+
+/// The antiderivative ∫₀^ξ σ of a Bernstein polynomial σ of degree m (coefficients σ_i):
+/// the Bernstein polynomial of degree m + 1 with coefficients c_0 = 0,
+/// c_{i+1} = c_i + σ_i/(m + 1), evaluated at ξ.
+fn integral_to<T: Real>(sigma: &[T], xi: &T) -> T {
+    let ctx = xi.ctx();
+    let inv = T::one_in(&ctx) / &T::from_i64(sigma.len() as i64, &ctx);
+    let mut c = vec![[T::zero_in(&ctx)]];
+    for s in sigma {
+        let next = c[c.len() - 1][0].clone() + &(s.clone() * &inv);
+        c.push([next]);
+    }
+    bernstein_jet(&c, xi, 0).swap_remove(0)[0].clone()
+}
+
+impl<T: Real> PiecewisePh<T> {
+    /// The segment and local parameter of a t in the domain, with the segment length h.
+    fn locate_checked(&self, t: &T) -> Result<(usize, T, T), CurveError> {
+        check_domain(t, (&self.a, &self.b))?;
+        let (k, xi) = self.locate(t);
+        Ok((k, xi, self.step()))
+    }
+}
+
+impl<T: Real> ParamCurve<T, 3> for PiecewisePh<T> {
+    fn domain(&self) -> (T, T) {
+        (self.a.clone(), self.b.clone())
+    }
+
+    fn derivatives(&self, t: &T, order: usize) -> Result<Vec<[T; 3]>, CurveError> {
+        pieces_derivatives(self, t, order)
+    }
+
+    fn breakpoints(&self) -> Vec<T> {
+        pieces_breakpoints(self)
+    }
+}
+
+impl<T: Real> ParamCurveArclen<T, 3> for PiecewisePh<T> {
+    /// Exact up to rounding: the lengths of the segments before t (each the mean of its
+    /// speed coefficients, Eq. 13a) plus ∫₀^ξ σ of the segment holding t.
+    fn arc_length(&self, t: &T) -> Result<T, CurveError> {
+        let (k, xi, _) = self.locate_checked(t)?;
+        let mut total = T::zero_in(&t.ctx());
+        for segment in &self.segments[..k] {
+            total += &segment.arc_length();
+        }
+        Ok(total + &integral_to(&self.segments[k].speed_coefficients(), &xi))
+    }
+}
+
+impl<T: Real> ParamCurveFrame<T> for PiecewisePh<T> {
+    /// The Euler–Rodrigues frame (Eq. 11) and ω (Eq. 12) divided by h, per unit of t.
+    fn frame(&self, t: &T) -> Result<Frame<T>, CurveError> {
+        let (k, xi, h) = self.locate_checked(t)?;
+        let segment = &self.segments[k];
+        let state = segment.frame_state(&segment.control_points(), &xi);
+        if state.speed.is_zero() {
+            return Err(CurveError::Frame {
+                t: t.to_f64(),
+                reason: "the preimage A(ξ) is zero".into(),
+            });
+        }
+        Ok(Frame {
+            point: state.point,
+            axes: state.frame,
+            omega: state.omega.map(|w| w / &h),
+            speed: state.speed / &h,
+        })
+    }
 }
 
 /// Make the preimage continuous at every joint (Eq. 22, as a right product): segment k+1

@@ -28,12 +28,9 @@ pub enum BernsteinError {
 /// A scalar polynomial of degree n = `control_points.len() − 1` on [t₀, t₁].
 #[derive(Clone, Debug, PartialEq)]
 pub struct Bernstein<T> {
-    /// The control points b_0 … b_n.
-    pub control_points: Vec<T>,
-    /// The start of the interval.
-    pub t0: T,
-    /// The end of the interval.
-    pub t1: T,
+    control_points: Vec<T>,
+    t0: T,
+    t1: T,
 }
 
 /// The value at `t` of the basis polynomial b̄ₖⁿ on [t₀, t₁] (Eq. 4).
@@ -86,6 +83,26 @@ impl<T: Field> Bernstein<T> {
             t0: self.t0.clone(),
             t1: self.t1.clone(),
         }
+    }
+
+    /// The control points b_0 … b_n.
+    pub fn control_points(&self) -> &[T] {
+        &self.control_points
+    }
+
+    /// The control points, by value.
+    pub fn into_control_points(self) -> Vec<T> {
+        self.control_points
+    }
+
+    /// The start t₀ of the interval.
+    pub fn t0(&self) -> &T {
+        &self.t0
+    }
+
+    /// The end t₁ of the interval.
+    pub fn t1(&self) -> &T {
+        &self.t1
     }
 
     /// The degree n.

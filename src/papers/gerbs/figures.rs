@@ -221,7 +221,7 @@ pub fn figure4(erbs: &[PathPoint<f64>]) -> String {
     let p = setup::erbs_path::<f64>(&(), ErbsSet::Smooth, ArcConvention::TurnDirection);
     let series = || {
         let mut series = vec![curve("ERBS path", xy(erbs), Style::Solid, 1)];
-        for (i, c) in p.curves.iter().enumerate() {
+        for (i, c) in p.curves().iter().enumerate() {
             let pts = (0..=50)
                 .map(|j| {
                     let q = c.at(&(j as f64 / 50.0));

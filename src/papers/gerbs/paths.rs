@@ -30,7 +30,7 @@ pub(super) fn knot_data<B: Blend<Float>>(path: &GerbsPath<Float, B>, bits: u32) 
     let mut kappa_jump = Float::with_val(bits, 0);
     let mut rate_jump = Float::with_val(bits, 0);
     for i in 0..n {
-        let t = path.knots.at(i + 2).clone();
+        let t = path.knots().at(i + 2).clone();
         let right = path
             .at(&t, if i == n - 1 { Side::Left } else { Side::Right })
             .expect("t within the knots");
@@ -43,7 +43,7 @@ pub(super) fn knot_data<B: Blend<Float>>(path: &GerbsPath<Float, B>, bits: u32) 
         if d > interp {
             interp = d;
         }
-        let m = &path.tangents.m[i];
+        let m = &path.tangents().m[i];
         let speed = (right.d1[0].clone().square() + right.d1[1].clone().square()).sqrt();
         along.push((right.d1[0].clone() * &m[0] + right.d1[1].clone() * &m[1]) / speed);
         if i > 0 && i < n - 1 {
@@ -275,7 +275,9 @@ pub fn bfbs_vs_erbs() -> (Outcome, Vec<PathPoint<f64>>, Vec<PathPoint<f64>>) {
 /// The Dubins path through the waypoint poses (headings atan2(m_i)).
 pub fn dubins_legs() -> Vec<DubinsPath<f64>> {
     let w = super::setup::waypoints::<f64>(&());
-    let tan = bfbs_path::<f64>(&(), ArcConvention::TurnDirection).tangents;
+    let tan = bfbs_path::<f64>(&(), ArcConvention::TurnDirection)
+        .tangents()
+        .clone();
     let headings: Vec<f64> = tan.m.iter().map(|m| m[1].atan2(m[0])).collect();
     // Every leg of the paper's waypoints exists; a missing one would empty the list, which
     // the Fig. 7 claim would show in its words.
@@ -309,7 +311,7 @@ pub fn against_dubins(erbs: &[PathPoint<f64>]) -> (Outcome, Vec<DubinsPath<f64>>
         .fold(0.0, f64::max);
     let dubins_len: f64 = legs.iter().map(|l| l.total()).sum();
     let ep = erbs_path::<f64>(&(), ErbsSet::Smooth, ArcConvention::TurnDirection);
-    let len = ep.length(&1e-12);
+    let len = ep.length_within(&1e-12);
     let words: Vec<String> = legs.iter().map(|l| l.word_name()).collect();
     let mut jumps = 0;
     for leg in &legs {
@@ -354,12 +356,13 @@ pub fn locality() -> Outcome {
     sp.waypoints[2] = [sp.waypoints[2][0] + 20.0, sp.waypoints[2][1] - 30.0];
     let (moved_curves, _) = local_curves(&sp, Some(&tan)).expect("valid");
     let kept = GerbsPath::from_parts(
-        base.knots.clone(),
-        base.blend.clone(),
+        base.knots().clone(),
+        base.blend().clone(),
         moved_curves,
         tan.clone(),
-    );
-    let rerun = GerbsPath::new(&sp, base.blend.clone()).expect("valid");
+    )
+    .expect("the base path's parts");
+    let rerun = GerbsPath::new(&sp, base.blend().clone()).expect("valid");
     let changed = |p: &GerbsPath<f64, crate::algo::gerbs::bfbs::Bfbs>| -> (f64, f64, f64) {
         let (mut lo, mut hi, mut outside) = (f64::INFINITY, f64::NEG_INFINITY, 0.0f64);
         for i in 0..=1000 {
@@ -404,7 +407,7 @@ fn bfbs_and_variant(
     let base = bfbs_path::<Float>(&HI, conv);
     let mut variant = spec::<Float>(&HI, conv);
     edit(&mut variant);
-    let built = GerbsPath::new(&variant, base.blend.clone()).ok();
+    let built = GerbsPath::new(&variant, base.blend().clone()).ok();
     (base, built)
 }
 
@@ -416,7 +419,7 @@ fn bfbs_and_variant(
 pub fn algorithm1_returns_s() -> Outcome {
     let (with_s, without) =
         bfbs_and_variant(|spec| spec.turns = Some(vec![1; spec.waypoints.len()]));
-    let s = with_s.tangents.s.clone();
+    let s = with_s.tangents().s.clone();
     let Some(without) = without else {
         return Outcome::new(
             "",

@@ -79,7 +79,7 @@ pub fn eq18_vector() -> Outcome {
         let data = random_problem(&mut rng, m);
         let a = transform_matrix(m, &data.t0, &data.t1, TransformKind::Transform);
         let solved = solve(&a, &data.boundary_vector());
-        let mapped = data.solve().map(|b| b.control_points);
+        let mapped = data.solve().map(|b| b.into_control_points());
         count += 1;
         mismatches += match (solved, mapped) {
             (Ok(x), Ok(y)) => (x != y) as usize,
@@ -132,7 +132,7 @@ pub fn eq16_17_index_ranges() -> (Outcome, String) {
     let p3 = |t1: i64| {
         HermiteData::new(vec![q(0), q(0), q(0)], vec![q(1), q(1), q(0)], q(0), q(t1))
             .and_then(|d| d.solve())
-            .map(|b| b.control_points[3].clone())
+            .map(|b| b.control_points()[3].clone())
     };
     let fig2 = match (p3(1), p3(2)) {
         (Ok(a), Ok(b)) => format!("in the Fig. 2 instance (m = 2) the start data are all zero, yet p_3 = {a} for duration 1 and {b} for duration 2"),
@@ -357,7 +357,7 @@ pub fn fig2(duration: i64, printed: &str) -> (Outcome, Bernstein<Q>) {
         );
     };
     let shown: Vec<String> = curve
-        .control_points
+        .control_points()
         .iter()
         .map(|x| x.to_plain_string())
         .collect();
@@ -365,10 +365,10 @@ pub fn fig2(duration: i64, printed: &str) -> (Outcome, Bernstein<Q>) {
         .split_whitespace()
         .map(|s| crate::scalar::parse::parse_rational(s).ok())
         .collect();
-    let equal = printed_values.len() == curve.control_points.len()
+    let equal = printed_values.len() == curve.control_points().len()
         && printed_values
             .iter()
-            .zip(&curve.control_points)
+            .zip(curve.control_points())
             .all(|(p, c)| p.as_ref() == Some(c));
     let h = HermiteData {
         start: vec![q(0), q(0), q(0)],

@@ -92,9 +92,9 @@ fn to_f64_curve<T: Field>(c: &Curve<T>) -> Curve<f64> {
     c.iter()
         .map(|b| {
             Bernstein::new(
-                b.control_points.iter().map(Field::to_f64).collect(),
-                b.t0.to_f64(),
-                b.t1.to_f64(),
+                b.control_points().iter().map(Field::to_f64).collect(),
+                b.t0().to_f64(),
+                b.t1().to_f64(),
             )
             .expect("the solved curve's interval, rounded to f64")
         })
@@ -102,7 +102,7 @@ fn to_f64_curve<T: Field>(c: &Curve<T>) -> Curve<f64> {
 }
 
 fn sample(c: &Curve<f64>, n: usize) -> Vec<Vec<f64>> {
-    let (t0, t1) = (c[0].t0, c[0].t1);
+    let (t0, t1) = (*c[0].t0(), *c[0].t1());
     (0..n)
         .map(|i| {
             let t = t0 + (t1 - t0) * i as f64 / (n - 1) as f64;

@@ -16,13 +16,13 @@ pub fn fig2_panels(fast: &Bernstein<BigRational>, slow: &Bernstein<BigRational>)
                 |b: &Bernstein<BigRational>, name: &str, style: Style, color: usize| {
                     let d = b.nth_derivative(j);
                     let f: Bernstein<f64> = Bernstein::new(
-                        d.control_points.iter().map(Field::to_f64).collect(),
-                        d.t0.to_f64(),
-                        d.t1.to_f64(),
+                        d.control_points().iter().map(Field::to_f64).collect(),
+                        d.t0().to_f64(),
+                        d.t1().to_f64(),
                     )
                     .expect("the solved curve's interval, rounded to f64");
                     let pts = (0..=200).map(|i| {
-                        let t = f.t1 * i as f64 / 200.0;
+                        let t = f.t1() * i as f64 / 200.0;
                         (t, f.eval(&t))
                     });
                     Series::new(name, pts.collect(), style, color)
@@ -30,7 +30,7 @@ pub fn fig2_panels(fast: &Bernstein<BigRational>, slow: &Bernstein<BigRational>)
             let ends = |b: &Bernstein<BigRational>| {
                 vec![
                     (0.0, b.derivative_at_start(j).to_f64()),
-                    (b.t1.to_f64(), b.derivative_at_end(j).to_f64()),
+                    (b.t1().to_f64(), b.derivative_at_end(j).to_f64()),
                 ]
             };
             Panel {

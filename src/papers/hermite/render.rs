@@ -140,7 +140,7 @@ fn landing(r: &Results, figures: &mut Vec<(String, String)>) -> String {
                 .map(|(name, b)| {
                     vec![
                         name.to_string(),
-                        b.control_points
+                        b.control_points()
                             .iter()
                             .map(|c| c.to_plain_string())
                             .collect::<Vec<_>>()

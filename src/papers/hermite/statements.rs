@@ -87,7 +87,7 @@ pub fn first_derivative_factor() -> Outcome {
         );
     };
     let n = curve.degree();
-    let p = &curve.control_points;
+    let p = &curve.control_points();
     let printed = q(n as i64) * (p[1].clone() - &p[0]);
     let actual = curve.derivative_at_start(1);
     let with_factor = printed.clone() / q(3);
@@ -131,7 +131,7 @@ pub fn order_count() -> Outcome {
 /// The extremes of x″ over [0, T] of an exact curve, sampled at 1001 points in rationals.
 fn acceleration_range(c: &Bernstein<Q>) -> (Q, Q) {
     let a = c.nth_derivative(2);
-    let (t0, t1) = (a.t0.clone(), a.t1.clone());
+    let (t0, t1) = (a.t0().clone(), a.t1().clone());
     (0..=1000)
         .map(|i| a.eval(&(t0.clone() + (t1.clone() - &t0) * Q::new(i.into(), 1000.into()))))
         .fold((q(0), q(0)), |(lo, hi), v| {

@@ -126,10 +126,10 @@ pub fn figure2b() -> String {
     let free = FreeParameters::zero(4, &());
     let raw = convert(&c, &0.0, &1.0, 2, 4, &free, false).expect("test curve");
     let mut fixed = raw.clone();
-    crate::algo::ph::piecewise::align_roll(&mut fixed.segments);
+    fixed.align_roll();
     let sample = |pw: &PiecewisePh<f64>, f: &QuatMap| {
         let mut out: Vec<Vec<(f64, f64)>> = vec![Vec::new(); 4];
-        for (k, seg) in pw.segments.iter().enumerate() {
+        for (k, seg) in pw.segments().iter().enumerate() {
             for i in 0..=100 {
                 let xi = i as f64 / 100.0;
                 let jet = seg.preimage_jet(&xi, 1);

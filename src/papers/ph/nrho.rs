@@ -9,9 +9,7 @@
 
 use super::super::{Outcome, Verdict};
 use crate::algo::ph::hermite::FreeParameters;
-use crate::algo::ph::piecewise::{
-    align_roll, certified_error, convert, CertifiedError, PiecewisePh,
-};
+use crate::algo::ph::piecewise::{certified_error, convert, CertifiedError, PiecewisePh};
 use crate::curve::spline::PeriodicSpline;
 use crate::curve::taylor::Taylor;
 use crate::curve::Curve;
@@ -163,7 +161,7 @@ pub fn compute() -> Nrho {
         false,
     )
     .expect("NRHO");
-    align_roll(&mut pw.segments);
+    pw.align_roll();
     let jumps_rotating = super::theorems::jumps_of(&pw)
         .iter()
         .map(|v| v[..3].iter().cloned().fold(0.0, f64::max))
@@ -189,7 +187,7 @@ pub type Sampled = Vec<(f64, f64)>;
 pub fn speed_and_turn_rate(pw: &PiecewisePh<f64>, per_segment: usize) -> (Sampled, Sampled) {
     let h = pw.step();
     let (mut sigma, mut omega) = (Vec::new(), Vec::new());
-    for (k, seg) in pw.segments.iter().enumerate() {
+    for (k, seg) in pw.segments().iter().enumerate() {
         for i in 0..per_segment {
             let xi = i as f64 / per_segment as f64;
             let jet = seg.preimage_jet(&xi, 1);

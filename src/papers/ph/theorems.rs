@@ -8,8 +8,7 @@ use crate::algo::ph::hermite::{
     interpolate, interpolate_with, FreeParameters, HermiteData, MiddleRule,
 };
 use crate::algo::ph::piecewise::{
-    align_roll, convert, frame_entries, joint_jumps, omega_components, preimage_components,
-    PiecewisePh,
+    convert, frame_entries, joint_jumps, omega_components, preimage_components, PiecewisePh,
 };
 use crate::algo::ph::{bernstein_jet, curvature_torsion, PhCurve};
 use crate::curve::taylor::Taylor;
@@ -320,7 +319,7 @@ pub fn continuity(segments: usize) -> Jumps {
     let free = FreeParameters::zero(4, &BITS);
     let raw = convert(&c, &a, &b, segments, 4, &free, false).expect("test curve");
     let mut fixed = raw.clone();
-    align_roll(&mut fixed.segments);
+    fixed.align_roll();
     Jumps {
         segments,
         corrected: jumps_of(&fixed),
@@ -369,35 +368,35 @@ pub fn left_product() -> Outcome {
     let free = FreeParameters::zero(4, &BITS);
     let raw = convert(&c, &a, &b, 2, 4, &free, false).expect("test curve");
     let mut right = raw.clone();
-    align_roll(&mut right.segments);
+    right.align_roll();
     // The left factor with the same effect at the joint: A_α A_1(0) = A_1(0) Q, i.e.
     // A_α = A_1(0) Q A_1(0)⁻¹, a rotation about the joint tangent.
-    let a10 = raw.segments[1].preimage[0].clone();
+    let a10 = raw.segments()[1].preimage[0].clone();
     let q = a10
         .conj()
-        .mul(&right.segments[1].preimage[0])
+        .mul(&right.segments()[1].preimage[0])
         .scale(&(Float::with_val(BITS, 1) / &a10.norm2()));
     let alpha = a10
         .mul(&q)
         .mul(&a10.conj())
         .scale(&(Float::with_val(BITS, 1) / &a10.norm2()));
     let left = PhCurve::new(
-        raw.segments[1]
+        raw.segments()[1]
             .preimage
             .iter()
             .map(|x| alpha.mul(x))
             .collect(),
-        raw.segments[1].start.clone(),
+        raw.segments()[1].start.clone(),
     )
     .expect("a preimage of degree ≤ 30");
-    let moved = max_distance(&left.control_points(), &raw.segments[1].control_points());
+    let moved = max_distance(&left.control_points(), &raw.segments()[1].control_points());
     let kept = max_distance(
-        &right.segments[1].control_points(),
-        &raw.segments[1].control_points(),
+        &right.segments()[1].control_points(),
+        &raw.segments()[1].control_points(),
     );
     let joint = vec3::norm(&vec3::sub(
         &left.preimage[0].star_square(),
-        &raw.segments[1].preimage[0].star_square(),
+        &raw.segments()[1].preimage[0].star_square(),
     ))
     .to_f64();
     Outcome::new(
@@ -491,7 +490,7 @@ pub fn geometry() -> (Vec<GeometryRow>, f64, Outcome) {
     for segments in [8usize, 64, 512] {
         let pw = convert(&c, &a, &b, segments, 4, &free, true).expect("test curve");
         let mut l = Float::with_val(bits, 0);
-        for s in &pw.segments {
+        for s in pw.segments() {
             l += &s.arc_length();
         }
         let dl = (l - &length).abs().to_f64();
@@ -500,7 +499,7 @@ pub fn geometry() -> (Vec<GeometryRow>, f64, Outcome) {
         for i in 0..=samples {
             let t = Float::with_val(bits, i) / samples as u32;
             let (k, xi) = pw.locate(&t);
-            let seg = &pw.segments[k];
+            let seg = &pw.segments()[k];
             let h = pw.step();
             let mut jet = bernstein_jet(&seg.control_points(), &xi, 3);
             let mut sc = Float::with_val(bits, 1);

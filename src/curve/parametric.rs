@@ -1,0 +1,238 @@
+//! One interface for every curve the library builds, in the spirit of kurbo's `ParamCurve`,
+//! `ParamCurveDeriv` and `ParamCurveArclen`, generic over the number type.
+//!
+//! A curve is a map γ: [t₀, t₁] → Tᴰ of its own parameter t, a point being `[T; D]` in every
+//! module (D = 3 for Hermite curves, PH splines and Marin's spline of 3-D points; D = 2 for a
+//! GERBS path; D = 1 for a spline fit of one coordinate).
+//! - [`ParamCurve`]: the domain [`ParamCurve::domain`], the derivatives
+//!   γ(t), γ′(t), …, γ⁽ᵏ⁾(t) ([`ParamCurve::derivatives`]), the point and one derivative, and
+//!   the parameters where the curve's polynomial pieces meet ([`ParamCurve::breakpoints`]).
+//!   Derivatives are per unit of t, whatever local parameter the curve uses inside.
+//!   Evaluation outside the domain, or at NaN, is [`CurveError::OutsideDomain`]: never an
+//!   extrapolated or made-up point.
+//! - [`ParamCurveArclen`]: the arc length s(t) = ∫_{t₀}^{t} |γ′(u)| du. The default is
+//!   tanh–sinh quadrature on each piece between break points, to the relative tolerance
+//!   2^(8−p) of the working precision p ([`crate::numeric::quadrature`]); that is an estimate,
+//!   not a certified value. PH curves override it with the exact integral of their polynomial
+//!   speed (paper 001, Eq. 13a).
+//! - [`ParamCurveFrame`]: an orthonormal frame along a space curve and its angular velocity ω
+//!   per unit of t (so ω = dθ/dt, not per unit of arc length or of a segment's local
+//!   parameter). The PH splines give their Euler–Rodrigues frame (paper 001, Eqs. 11–12).
+//! - [`curvature`]: κ = √(|γ′|²|γ″|² − (γ′·γ″)²)/|γ′|³ for any dimension, from the first two
+//!   derivatives (|γ′ × γ″|/|γ′|³ in 3-D).
+//!
+//! # Examples
+//! A cubic Bézier curve in the plane, in f64 and exactly in rationals:
+//! ```
+//! use trajverify::curve::bezier::BezierCurve;
+//! use trajverify::curve::parametric::{ParamCurve, ParamCurveArclen};
+//! use trajverify::scalar::BigRational;
+//!
+//! let fast = BezierCurve::new(vec![[0.0, 0.0], [1.0, 2.0], [3.0, 2.0], [4.0, 0.0]], 0.0, 2.0).unwrap();
+//! assert_eq!(fast.point(&1.0).unwrap(), [2.0, 1.5]);
+//! assert!(fast.point(&2.5).is_err()); // outside [0, 2]
+//! assert!(fast.arc_length(&2.0).unwrap() > 4.0); // longer than the chord
+//!
+//! let q = |n: i64| BigRational::from_integer(n.into());
+//! let exact = BezierCurve::new(vec![[q(0)], [q(1)], [q(3)], [q(4)]], q(0), q(1)).unwrap();
+//! let jet = exact.derivatives(&BigRational::new(1.into(), 2.into()), 1).unwrap();
+//! assert_eq!(jet[0][0], q(2));
+//! assert_eq!(jet[1][0], BigRational::new(15.into(), 2.into()));
+//! ```
+
+use crate::numeric::quadrature::{default_tolerance, TanhSinh};
+use crate::scalar::{Field, Real};
+
+/// Why a curve could not be evaluated.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum CurveError {
+    /// The parameter lies outside the curve's domain, or is NaN.
+    #[error("t: {t} is outside the curve's domain [{start}, {end}]")]
+    OutsideDomain {
+        /// The parameter asked for (as a double, for the message).
+        t: f64,
+        /// The start of the domain.
+        start: f64,
+        /// The end of the domain.
+        end: f64,
+    },
+    /// The frame is not defined at this parameter (zero speed).
+    #[error("t: the frame is not defined at t = {t} ({reason})")]
+    Frame {
+        /// The parameter asked for.
+        t: f64,
+        /// What makes it undefined.
+        reason: String,
+    },
+}
+
+/// A parametric curve t ↦ γ(t) ∈ Tᴰ on a closed domain [t₀, t₁].
+pub trait ParamCurve<T: Field, const D: usize> {
+    /// The domain (t₀, t₁), t₀ < t₁.
+    fn domain(&self) -> (T, T);
+
+    /// γ(t), γ′(t), …, γ⁽ᵒʳᵈᵉʳ⁾(t), derivatives per unit of t; `order + 1` points. At a break
+    /// point the piece that starts there is used (the end of the domain: the last piece).
+    ///
+    /// # Errors
+    /// [`CurveError::OutsideDomain`] for t outside [`ParamCurve::domain`] or NaN.
+    fn derivatives(&self, t: &T, order: usize) -> Result<Vec<[T; D]>, CurveError>;
+
+    /// γ(t).
+    ///
+    /// # Errors
+    /// As [`ParamCurve::derivatives`].
+    fn point(&self, t: &T) -> Result<[T; D], CurveError> {
+        let mut jet = self.derivatives(t, 0)?;
+        Ok(jet.swap_remove(0))
+    }
+
+    /// γ⁽ᵏ⁾(t).
+    ///
+    /// # Errors
+    /// As [`ParamCurve::derivatives`].
+    fn derivative(&self, t: &T, k: usize) -> Result<[T; D], CurveError> {
+        let mut jet = self.derivatives(t, k)?;
+        Ok(jet.swap_remove(k))
+    }
+
+    /// The parameters strictly inside the domain where polynomial (or analytic) pieces meet,
+    /// in increasing order; none for a curve of one piece.
+    fn breakpoints(&self) -> Vec<T> {
+        Vec::new()
+    }
+}
+
+/// `Ok` when t₀ ≤ t ≤ t₁ (false for NaN), else [`CurveError::OutsideDomain`].
+///
+/// # Errors
+/// [`CurveError::OutsideDomain`] as stated.
+pub fn check_domain<T: Field>(t: &T, (start, end): (&T, &T)) -> Result<(), CurveError> {
+    if *start <= *t && *t <= *end {
+        Ok(())
+    } else {
+        Err(CurveError::OutsideDomain {
+            t: t.to_f64(),
+            start: start.to_f64(),
+            end: end.to_f64(),
+        })
+    }
+}
+
+/// |v| of a point of any dimension.
+pub fn norm<T: Real, const D: usize>(v: &[T; D]) -> T {
+    dot(v, v).sqrt()
+}
+
+/// u · v.
+pub fn dot<T: Field, const D: usize>(u: &[T; D], v: &[T; D]) -> T {
+    let mut s = T::zero_in(&u[0].ctx());
+    for (a, b) in u.iter().zip(v) {
+        s.mul_add_assign(a, b);
+    }
+    s
+}
+
+/// The curvature κ(t) = √(|γ′|²|γ″|² − (γ′·γ″)²)/|γ′|³ (|γ′ × γ″|/|γ′|³ in 3-D, |x′y″ −
+/// y′x″|/|γ′|³ in the plane), unsigned; infinite or NaN where γ′ = 0.
+///
+/// # Errors
+/// As [`ParamCurve::derivatives`].
+pub fn curvature<T: Real, const D: usize, C: ParamCurve<T, D> + ?Sized>(
+    curve: &C,
+    t: &T,
+) -> Result<T, CurveError> {
+    let jet = curve.derivatives(t, 2)?;
+    let (d1, d2) = (&jet[1], &jet[2]);
+    let v2 = dot(d1, d1);
+    let mut area2 = v2.clone() * &dot(d2, d2);
+    let c = dot(d1, d2);
+    area2.mul_sub_assign(&c, &c);
+    // Rounding can make the Gram determinant slightly negative for a straight piece.
+    let zero = T::zero_in(&t.ctx());
+    let area2 = if area2 < zero { zero } else { area2 };
+    Ok(area2.sqrt() / &(v2.clone() * &v2.sqrt()))
+}
+
+/// The arc length of a curve.
+pub trait ParamCurveArclen<T: Real, const D: usize>: ParamCurve<T, D> {
+    /// s(t) = ∫_{t₀}^{t} |γ′(u)| du. The default integrates |γ′| by tanh–sinh on each piece
+    /// between [`ParamCurve::breakpoints`] to the relative tolerance 2^(8−p) of the working
+    /// precision p: an estimate whose error the quadrature does not bound.
+    ///
+    /// # Errors
+    /// [`CurveError::OutsideDomain`] for t outside the domain.
+    fn arc_length(&self, t: &T) -> Result<T, CurveError> {
+        quadrature_arc_length(self, t)
+    }
+
+    /// The length of the whole curve, s(t₁).
+    ///
+    /// # Errors
+    /// None for a well-formed curve; an implementation may fail as [`ParamCurve::derivatives`].
+    fn length(&self) -> Result<T, CurveError> {
+        self.arc_length(&self.domain().1)
+    }
+}
+
+/// The levels of step halving of the default arc-length quadrature.
+const ARC_LENGTH_LEVELS: usize = 12;
+
+/// ∫_{t₀}^{t} |γ′| by tanh–sinh on each piece between break points (the default of
+/// [`ParamCurveArclen::arc_length`]).
+///
+/// # Errors
+/// [`CurveError::OutsideDomain`] for t outside the domain.
+pub fn quadrature_arc_length<T: Real, const D: usize, C: ParamCurve<T, D> + ?Sized>(
+    curve: &C,
+    t: &T,
+) -> Result<T, CurveError> {
+    let (start, end) = curve.domain();
+    check_domain(t, (&start, &end))?;
+    let ctx = t.ctx();
+    let rule = TanhSinh::<T>::new(&ctx, ARC_LENGTH_LEVELS);
+    let tol = default_tolerance::<T>(&ctx);
+    let zero = T::zero_in(&ctx);
+    let mut cuts = vec![start];
+    cuts.extend(curve.breakpoints().into_iter().filter(|b| b < t));
+    cuts.push(t.clone());
+    let mut total = zero.clone();
+    for w in cuts.windows(2) {
+        if w[0] >= w[1] {
+            continue;
+        }
+        // Every node lies inside [w0, w1] ⊂ the domain, so the evaluation cannot fail; a
+        // failure would count as zero speed rather than panic.
+        let speed = |near: &T, _: &T| {
+            let u = w[0].clone() + near;
+            curve
+                .derivative(&u, 1)
+                .map_or_else(|_| zero.clone(), |d| norm(&d))
+        };
+        total += &rule.integrate(&w[0], &w[1], speed, &tol, &zero).value;
+    }
+    Ok(total)
+}
+
+/// An orthonormal frame along a space curve and how it turns.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Frame<T> {
+    /// γ(t).
+    pub point: [T; 3],
+    /// The frame vectors e₁, e₂, e₃ (e₁ the unit tangent).
+    pub axes: [[T; 3]; 3],
+    /// The angular velocity ω per unit of t, in world coordinates: ėₖ = ω × eₖ.
+    pub omega: [T; 3],
+    /// The parametric speed |γ′(t)|.
+    pub speed: T,
+}
+
+/// A space curve with an adapted frame.
+pub trait ParamCurveFrame<T: Real>: ParamCurve<T, 3> {
+    /// The frame at t with its angular velocity per unit of t.
+    ///
+    /// # Errors
+    /// [`CurveError::OutsideDomain`] outside the domain; [`CurveError::Frame`] where the
+    /// frame is not defined.
+    fn frame(&self, t: &T) -> Result<Frame<T>, CurveError>;
+}
