@@ -4,9 +4,11 @@ use clap::error::ErrorKind;
 use clap::Parser;
 use std::io::Write;
 use std::process::ExitCode;
-use trajverify::cli::{execute, Cli};
+use std::time::Duration;
+use trajverify::cli::{budget, execute, Cli, Command, Failure};
 
 fn main() -> ExitCode {
+    budget::mark_start();
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
         Err(e) => match e.kind() {
@@ -25,7 +27,15 @@ fn main() -> ExitCode {
             }
         },
     };
-    match execute(cli) {
+    // A `run` answers within its budget or is stopped (cli::budget::run_with_deadline).
+    let result = if matches!(cli.command, Command::Run { .. }) {
+        let deadline = Duration::from_secs_f64(budget::DEADLINE_SECONDS);
+        budget::run_with_deadline(move || execute(cli), deadline)
+            .unwrap_or_else(|message| Err(Failure::Usage(message)))
+    } else {
+        execute(cli)
+    };
+    match result {
         Ok(text) => {
             // A closed pipe (e.g. `| head`) is not worth a panic.
             let _ = std::io::stdout().lock().write_all(text.as_bytes());

@@ -36,6 +36,7 @@ fn allowed(module: &str) -> Option<Vec<&'static str>> {
             "numeric::linalg",
             "numeric::poly",
             "numeric::quat",
+            "numeric::quadrature",
         ],
         m if ALGORITHMS.contains(&m) => BUILDING_BLOCKS.to_vec(),
         // A study built on the algorithms (the PHODCOS and Hermite methods side by side).

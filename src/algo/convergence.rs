@@ -125,6 +125,10 @@ pub struct ExpectedOrder {
 
 impl Method {
     /// `"phodcos"` or `"hermite:M"` (M = 0 … [`MAX_HERMITE_DERIVATIVES`]).
+    ///
+    /// # Errors
+    /// [`StudyError::Method`] for any other text (matched exactly, untrimmed), including
+    /// `hermite:M` with M above [`MAX_HERMITE_DERIVATIVES`].
     pub fn parse(text: &str) -> Result<Method, StudyError> {
         if text == "phodcos" {
             return Ok(Method::Phodcos);
@@ -497,6 +501,10 @@ pub struct Study {
 }
 
 /// Check and sort the levels: increasing, within 0 … [`MAX_LEVEL`], at least one.
+///
+/// # Errors
+/// [`StudyError::Levels`] when `levels` is empty, not strictly increasing, or has an entry
+/// above [`MAX_LEVEL`].
 pub fn check_levels(levels: &[u32]) -> Result<(), StudyError> {
     if levels.is_empty()
         || levels.windows(2).any(|w| w[1] <= w[0])
@@ -510,6 +518,12 @@ pub fn check_levels(levels: &[u32]) -> Result<(), StudyError> {
 }
 
 /// Run the study of `curve` on [a, b]; `progress(level, segments)` is called after each level.
+///
+/// # Errors
+/// [`StudyError::Interval`] unless a < b; [`StudyError::Levels`] as [`check_levels`];
+/// [`StudyError::Irregular`] when the regularity check fails (except `BeyondBallRange` without
+/// a proof); [`StudyError::Failed`] when a level's MPFR conversion (at `bits` or `2·bits`) or,
+/// with a proof, its ball conversion fails. A failing f64 conversion is not an error.
 pub fn study<C: StudyCurve + ?Sized>(
     curve: &C,
     (a, b): (&BigRational, &BigRational),

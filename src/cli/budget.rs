@@ -14,6 +14,8 @@
 
 use super::input::{fail, InputError};
 use crate::scalar::ScalarKind;
+use std::sync::{mpsc, Mutex, OnceLock};
+use std::time::{Duration, Instant};
 
 /// The longest an accepted run may take on the reference machine (two cores), in seconds.
 pub const BUDGET_SECONDS: f64 = 30.0;
@@ -28,11 +30,15 @@ pub const MAX_INPUT_BYTES: usize = 16 << 20;
 
 /// The cost of an MPFR run at `bits` (computed at `bits` and at 2·`bits`) relative to one at
 /// 256 bits: per precision, a fixed overhead plus a part growing as p^1.6 (GMP's
-/// multiplication in this range), fitted to κ₂ of paper 000 at m = 30 from 53 to 2048 bits.
+/// multiplication in this range), fitted to κ₂ of paper 000 at m = 30 from 256 to 2048 bits.
+/// Below 256 bits it stays 1: a lower precision makes each operation a little cheaper, but
+/// quadratures, searches and bisections then take more steps (measured: `run convergence`
+/// at level 16 took 42 s at mpfr:64 where level 12 at mpfr:128 took 0.9 s, 3× the per-segment
+/// cost; an ERBS path at mpfr:64 more than at mpfr:128).
 pub fn mpfr_factor(bits: u32) -> f64 {
     let one = |p: f64| 0.5 + 0.5 * (p / 256.0).powf(1.6);
     let pair = |p: f64| one(p) + one(2.0 * p);
-    pair(bits as f64) / pair(256.0)
+    pair(bits.max(256) as f64) / pair(256.0)
 }
 
 /// Seconds per unit of work for each number type (None: the number type is refused
@@ -73,10 +79,23 @@ impl Rates {
     }
 }
 
+/// The largest estimate accepted so far in this process, with the field and run it
+/// described: what the deadline's message names if the model was wrong.
+static ACCEPTED: Mutex<Option<(f64, String, String)>> = Mutex::new(None);
+
+/// The time after which a `run` is stopped ([`run_with_deadline`]): the budget less a margin
+/// for starting the process and printing.
+pub const DEADLINE_SECONDS: f64 = BUDGET_SECONDS - 1.0;
+
 /// Refuse a run whose estimate exceeds the budget, naming `field` (the size that drives the
 /// cost) and describing the run as `what` ("4096 segments at mpfr:1024").
 pub fn check_time(seconds: f64, field: &str, what: &str) -> Result<(), InputError> {
     if seconds.is_finite() && seconds <= BUDGET_SECONDS {
+        if let Ok(mut accepted) = ACCEPTED.lock() {
+            if accepted.as_ref().is_none_or(|(s, _, _)| seconds >= *s) {
+                *accepted = Some((seconds, field.to_string(), what.to_string()));
+            }
+        }
         return Ok(());
     }
     let shown = if seconds.is_finite() && seconds < 1e6 {
@@ -87,6 +106,65 @@ pub fn check_time(seconds: f64, field: &str, what: &str) -> Result<(), InputErro
     fail(format!(
         "field \"{field}\": {what} would take {shown} on two cores, beyond the {BUDGET_SECONDS} s budget of one run; make it smaller or lower the precision"
     ))
+}
+
+/// Run `job` (a whole `run` command) on a worker thread and wait at most
+/// [`DEADLINE_SECONDS`]: the cost models are fitted and err on the side of refusing, and this
+/// is the guarantee behind them. A run past the deadline ends with `Err(message)` naming the
+/// field of the largest estimate accepted; nothing has been printed (the caller prints the
+/// output only after the job returns), and returning from `main` ends the worker.
+pub fn run_with_deadline<R: Send + 'static>(
+    job: impl FnOnce() -> R + Send + 'static,
+    deadline: Duration,
+) -> Result<R, String> {
+    let (send, receive) = mpsc::channel();
+    // The main thread's stack size: expression nesting is limited for it.
+    let spawned = std::thread::Builder::new()
+        .stack_size(WORKER_STACK_BYTES)
+        .spawn(move || {
+            let _ = send.send(job());
+        });
+    if spawned.is_err() {
+        return Err("internal: could not start the worker thread".into());
+    }
+    match receive.recv_timeout(deadline) {
+        Ok(result) => Ok(result),
+        Err(mpsc::RecvTimeoutError::Timeout) => Err(deadline_message(deadline)),
+        Err(mpsc::RecvTimeoutError::Disconnected) => {
+            Err("internal: the run stopped without an answer".into())
+        }
+    }
+}
+
+/// When the process started its command ([`mark_start`]), for deadlines inside methods.
+static STARTED: OnceLock<Instant> = OnceLock::new();
+
+/// Record the start of the command (the first call wins).
+pub fn mark_start() {
+    let _ = STARTED.get_or_init(Instant::now);
+}
+
+/// The time by which a refining search (a proven enclosure's branch and bound) should stop
+/// and return the bounds it has, leaving time to print them inside the budget: 8 s before
+/// [`DEADLINE_SECONDS`].
+pub fn search_deadline() -> Instant {
+    *STARTED.get_or_init(Instant::now) + Duration::from_secs_f64(DEADLINE_SECONDS - 8.0)
+}
+
+/// The stack of the thread that runs a command (as the main thread's on Linux).
+const WORKER_STACK_BYTES: usize = 8 << 20;
+
+fn deadline_message(deadline: Duration) -> String {
+    let (seconds, field, what) = ACCEPTED.lock().ok().and_then(|a| a.clone()).unwrap_or((
+        0.0,
+        "input".into(),
+        "this run".into(),
+    ));
+    format!(
+        "field \"{field}\": {what} did not finish within {:.0} s (its cost model estimated about {} s), so it was stopped inside the {BUDGET_SECONDS} s budget of one run; make it smaller or change the precision",
+        deadline.as_secs_f64(),
+        seconds.ceil()
+    )
 }
 
 /// Refuse an output of more than [`MAX_OUTPUT_NUMBERS`] numbers, naming `field`.
@@ -112,7 +190,8 @@ mod tests {
     #[test]
     fn mpfr_factor_is_one_at_256_bits_and_grows() {
         assert!((mpfr_factor(256) - 1.0).abs() < 1e-12);
-        assert!(mpfr_factor(64) < 1.0 && mpfr_factor(64) > 0.2);
+        assert_eq!(mpfr_factor(64), 1.0);
+        assert_eq!(mpfr_factor(16), 1.0);
         // Measured: κ₂ at m = 30 costs 6.2× at 1024 bits and 19.8× at 2048 bits.
         assert!((5.0..8.0).contains(&mpfr_factor(1024)));
         assert!((15.0..25.0).contains(&mpfr_factor(2048)));
@@ -136,5 +215,19 @@ mod tests {
             .0
             .contains("field \"at\""));
         assert!(check_output(1e6, "at", "this").is_ok());
+    }
+
+    #[test]
+    fn a_run_past_its_deadline_is_stopped_with_the_field_named() {
+        check_time(2.0, "segments", "64 segments at ball:16").unwrap();
+        let quick = run_with_deadline(|| 7, Duration::from_secs(5));
+        assert_eq!(quick, Ok(7));
+        let slow = run_with_deadline(
+            || std::thread::sleep(Duration::from_secs(3)),
+            Duration::from_millis(100),
+        );
+        let message = slow.unwrap_err();
+        assert!(message.starts_with("field \""), "{message}");
+        assert!(message.contains("did not finish within"), "{message}");
     }
 }

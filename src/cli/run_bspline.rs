@@ -203,19 +203,20 @@ pub fn run_fit(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered,
     let data = read_fit(doc)?;
     // Dense elimination on max(M, N) unknowns per coordinate: (M or N)^3 operations in f64
     // and MPFR, ^4 in rationals, whose entries grow along the elimination. Measured: f64
-    // interpolation M = N = 1000 in 2.4 s; mpfr:256 M = N = 500 in 26.7 s (interpolation)
+    // interpolation M = N = 1000 in 2.4 s but M = N = 2000 (degree 5) in 56 s, beyond the
+    // cube (the matrices leave the cache), so the f64 rate is the larger one; mpfr:256 M = N = 500 in 26.7 s (interpolation)
     // and 3 s (smoothing); rationals M = N = 50 in 0.85 s and 0.26 s.
     let size = data.controls.max(data.times.len()) as f64;
     let dims = data.values[0].len() as f64;
     let rates = if data.weights.is_some() {
         Rates {
-            f64: 2.5e-9,
+            f64: 8e-9,
             mpfr256: 2.7e-8,
             rational: 4.2e-8,
         }
     } else {
         Rates {
-            f64: 2.5e-9,
+            f64: 8e-9,
             mpfr256: 2.1e-7,
             rational: 1.4e-7,
         }

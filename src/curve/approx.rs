@@ -411,6 +411,9 @@ impl CertifiedError {
 /// The error of the approximation `fit` builds, at `bits` over all segments, then the same
 /// local maximum recomputed from a fit at `hi_bits` (see [`CertifiedError`]). `make` builds
 /// the curve at a precision (numbers rounded once into it).
+///
+/// # Errors
+/// The first error of `fit`: on the curve built at `bits`, else on the curve at `hi_bits`.
 pub fn certified_max_error<C: Curve<Float>, P: BernsteinPieces<Float>, E>(
     make: impl Fn(u32) -> C,
     fit: impl Fn(&C, u32) -> Result<P, E>,

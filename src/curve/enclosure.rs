@@ -39,6 +39,7 @@ use crate::scalar::{Field, Float, Real};
 use rayon::prelude::*;
 use rug::float::Round;
 use std::collections::BinaryHeap;
+use std::time::Instant;
 
 /// The Taylor order of the models (the degree of the C⁴ PH interpolants): the highest degree
 /// of a piece [`proven_error`] accepts.
@@ -247,6 +248,7 @@ fn pieces<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
     pw: &P,
     whole: Model,
     tolerance: f64,
+    deadline: Option<Instant>,
 ) -> Vec<Model> {
     let bits = pw.interval().0.ctx();
     let k = whole.segment;
@@ -273,7 +275,9 @@ fn pieces<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
     let mut done = Vec::new();
     while let Some((a, b, depth, known)) = todo.pop() {
         let m = known.unwrap_or_else(|| model(curve, pw, (k, &points), (&a, &b)));
-        if m.remainder <= tolerance || depth >= MAX_PIECE_DEPTH {
+        // Past the deadline a piece is kept whole: its remainder is in both bounds, so the
+        // enclosure stays proven, only wider.
+        if m.remainder <= tolerance || depth >= MAX_PIECE_DEPTH || passed(deadline) {
             done.push(m);
         } else {
             let mid = Float::with_val(bits, &a + &b) / 2u32;
@@ -413,11 +417,41 @@ fn first_boxes(models: &[Model], bits: u32) -> (BinaryHeap<Candidate>, (f64, usi
 /// floor (about √(2^−p) times the size of the control points, where the squared norm the
 /// bounds come from is rounding noise: an error the method does not resolve at p bits, such
 /// as that of a curve it reproduces exactly), or `max_boxes` boxes were evaluated.
+///
+/// # Examples
+/// ```
+/// use trajverify::algo::ph::piecewise::{fit, FitOptions};
+/// use trajverify::curve::{enclosure::proven_error, ExprCurve};
+/// use trajverify::scalar::{ball::Ball, Field};
+/// let curve = ExprCurve::parse("[cos(t), sin(t), t]").unwrap().compile::<Ball>(&128);
+/// let (a, b) = (Ball::from_i64(0, &128), Ball::from_i64(1, &128));
+/// let spline = fit(&curve, &a, &b, &FitOptions { segments: 2, ..FitOptions::default() }).unwrap();
+/// let e = proven_error(&curve, &spline, 1e-6, 100_000);
+/// assert!(e.lower <= e.upper && e.upper < 1e-6);
+/// ```
 pub fn proven_error<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
     curve: &C,
     pw: &P,
     target: f64,
     max_boxes: usize,
+) -> ErrorEnclosure {
+    proven_error_until(curve, pw, target, max_boxes, None)
+}
+
+/// Whether the deadline (if any) has passed.
+fn passed(deadline: Option<Instant>) -> bool {
+    deadline.is_some_and(|d| Instant::now() >= d)
+}
+
+/// [`proven_error`] that also stops refining at `deadline`: the bounds found by then are
+/// returned, still proven (a piece left unsplit keeps its whole remainder in both bounds),
+/// only wider than `target`; the caller reads the width achieved from the result.
+pub fn proven_error_until<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
+    curve: &C,
+    pw: &P,
+    target: f64,
+    max_boxes: usize,
+    deadline: Option<Instant>,
 ) -> ErrorEnclosure {
     let bits = pw.interval().0.ctx();
     let n = pw.count();
@@ -443,7 +477,7 @@ pub fn proven_error<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
     let tolerance = tolerance_at(rough);
     let models: Vec<Model> = whole
         .into_par_iter()
-        .flat_map_iter(carried(|m| pieces(curve, pw, m, tolerance)))
+        .flat_map_iter(carried(|m| pieces(curve, pw, m, tolerance, deadline)))
         .collect();
     let (mut heap, mut best) = first_boxes(&models, bits);
     let mut boxes = models.len();
@@ -453,7 +487,7 @@ pub fn proven_error<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
         // it) and the precision floor: stop there too.
         let irreducible = 2.0 * (models[top.model].remainder + floor);
         let done = top.upper <= best.0 * (1.0 + target) || top.upper - best.0 <= irreducible;
-        if done || boxes >= max_boxes {
+        if done || boxes >= max_boxes || passed(deadline) {
             break top.upper;
         }
         let w = Float::with_val(bits, &top.half_width) / 2u32;

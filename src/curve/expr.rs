@@ -234,6 +234,10 @@ impl<X: Real> Compiled<X> {
 }
 
 /// Parse a single scalar expression.
+///
+/// # Errors
+/// [`ExprError`] at the first problem: a syntax error, an unknown name, a number
+/// [`parse_rational`] rejects, nesting deeper than [`MAX_DEPTH`], or text after the expression.
 pub fn parse_expr(text: &str) -> Result<Expr, ExprError> {
     let mut p = Parser::new(text);
     let e = p.expr()?;
@@ -242,6 +246,10 @@ pub fn parse_expr(text: &str) -> Result<Expr, ExprError> {
 }
 
 /// Parse a vector `[e1, e2, …]` of scalar expressions.
+///
+/// # Errors
+/// [`ExprError`] as [`parse_expr`] for each component, and when the text does not start with
+/// `[`, a component is not followed by `,` or `]`, or text follows the closing `]`.
 pub fn parse_vector(text: &str) -> Result<Vec<Expr>, ExprError> {
     let mut p = Parser::new(text);
     p.skip_space();

@@ -72,6 +72,10 @@ pub struct ExprCurve {
 
 impl ExprCurve {
     /// Parse `[x, y, z]`; exactly three components.
+    ///
+    /// # Errors
+    /// [`ExprError`] for a syntax or name error ([`parse_vector`]), or at position 1 when the
+    /// vector does not have exactly three components.
     pub fn parse(text: &str) -> Result<Self, ExprError> {
         let items = parse_vector(text)?;
         let n = items.len();

@@ -37,7 +37,7 @@
 //! let exact = BezierCurve::new(vec![[q(0)], [q(1)], [q(3)], [q(4)]], q(0), q(1)).unwrap();
 //! let jet = exact.derivatives(&BigRational::new(1.into(), 2.into()), 1).unwrap();
 //! assert_eq!(jet[0][0], q(2));
-//! assert_eq!(jet[1][0], BigRational::new(15.into(), 2.into()));
+//! assert_eq!(jet[1][0], BigRational::new(9.into(), 2.into())); // 3·(¼·1 + ½·2 + ¼·1)
 //! ```
 
 use crate::numeric::quadrature::{default_tolerance, TanhSinh};

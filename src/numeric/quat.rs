@@ -259,6 +259,10 @@ pub enum QuadraticError {
 /// When a is a negative multiple of i the formula divides by zero; the solutions are then
 /// √|a| j Q(φ) (j i j* = −i), which is what this function returns, so every non-zero a has
 /// its one-parameter family.
+///
+/// # Errors
+/// [`QuadraticError::Zero`] when the computed |a| is zero: a = 0, or in floating point an a
+/// so small that |a|² underflows.
 pub fn solve_quadratic<T: Real>(a: &[T; 3], phi: &T) -> Result<Quat<T>, QuadraticError> {
     let ctx = a[0].ctx();
     let norm = crate::numeric::quat::vec3::norm(a);

@@ -121,6 +121,9 @@ pub fn certify(lo: &Float, hi: &Float) -> Certified {
 
 /// Run `f` at `bits` and at `2·bits` and certify the second result against the first.
 /// Returns the certified value and both raw results.
+///
+/// # Errors
+/// The first error of `f`: at `bits` (then `f` is not run at `2·bits`), else at `2·bits`.
 pub fn at_two_precisions<E>(
     bits: u32,
     f: impl Fn(u32) -> Result<Float, E>,

@@ -33,6 +33,12 @@ pub enum ParseNumberError {
 }
 
 /// Parse a decimal or a fraction of two decimals exactly.
+///
+/// # Errors
+/// [`ParseNumberError::TooLong`] for more than [`MAX_DIGITS`] bytes after trimming;
+/// [`ParseNumberError::Malformed`] outside the syntax (empty, `NaN`, `inf`, hexadecimal, a sign
+/// or exponent without digits); [`ParseNumberError::ExponentTooLarge`] for an exponent beyond
+/// ±[`MAX_EXPONENT`]; [`ParseNumberError::ZeroDenominator`] for a fraction `n/0`.
 pub fn parse_rational(text: &str) -> Result<BigRational, ParseNumberError> {
     let s = text.trim();
     if s.len() > MAX_DIGITS {

@@ -56,6 +56,10 @@ pub fn terminal_residuals<T: Field>(switches: &[T; 3]) -> [T; 3] {
 pub struct NoSolution;
 
 /// The switching times (t₁, t₂, t₃) solving ẍ(4) = ẋ(4) = x(4) = 0, to the working precision.
+///
+/// # Errors
+/// [`NoSolution`] when a Newton step's Jacobian is singular, when 200 steps do not bring the
+/// largest step to 64ε, or when the converged times are not ordered 0 < t₁ < t₂ < t₃ < 4.
 pub fn switching_times<T: Real>(ctx: &T::Ctx) -> Result<[T; 3], NoSolution> {
     let i = |v: i64| T::from_i64(v, ctx);
     let mut t = [i(1), i(2), i(3)];

@@ -90,6 +90,9 @@ pub struct SplineSpace<T: Field> {
 
 impl<T: Field> SplineSpace<T> {
     /// The basis of `controls` shifted B-splines of degree `degree`.
+    ///
+    /// # Errors
+    /// [`FitError::DegreeTooLow`] for `degree` = 0.
     pub fn new(degree: usize, controls: usize, ctx: &T::Ctx) -> Result<Self, FitError> {
         if degree < 1 {
             return Err(FitError::DegreeTooLow(degree));
@@ -113,6 +116,10 @@ impl<T: Field> SplineSpace<T> {
     }
 
     /// The N×M collocation matrix for the data times (checked to lie inside the support).
+    ///
+    /// # Errors
+    /// [`FitError::NoData`] for no times; [`FitError::OutsideSupport`] for the first time found
+    /// ≤ 0 or ≥ M + k.
     pub fn collocation(&self, times: &[T]) -> Result<Matrix<T>, FitError> {
         let Some(first) = times.first() else {
             return Err(FitError::NoData);
@@ -170,6 +177,9 @@ impl<T: Field> SplineSpace<T> {
     }
 
     /// τ* of Eq. 14.
+    ///
+    /// # Errors
+    /// As [`SplineSpace::interpolate_with_condition`].
     pub fn interpolate(&self, times: &[T], values: &[T]) -> Result<Vec<T>, FitError> {
         self.interpolate_with_condition(times, values)
             .map(|(tau, _)| tau)
@@ -182,6 +192,12 @@ impl<T: Field> SplineSpace<T> {
     /// is the caller's to raise: rationals are exact). Whether B has full row rank is
     /// decided first, exactly ([`schoenberg_whitney`]), not by a pivot that rounding made
     /// small or non-zero.
+    ///
+    /// # Errors
+    /// [`FitError::LengthMismatch`], [`FitError::NoData`] or [`FitError::OutsideSupport`] for
+    /// the data's shape; [`FitError::TooFewControls`] for N > M; [`FitError::RankDeficient`]
+    /// when [`schoenberg_whitney`] fails; [`FitError::IllConditioned`] (condition ∞) when G or
+    /// BG⁻¹Bᵀ is singular at this precision.
     pub fn interpolate_with_condition(
         &self,
         times: &[T],
@@ -202,6 +218,10 @@ impl<T: Field> SplineSpace<T> {
     /// caller decided on their exact values ([`schoenberg_whitney`] on the exact times, as
     /// lengths and M ≥ N): `times` may be those values rounded, so nothing is decided on
     /// them again.
+    ///
+    /// # Errors
+    /// [`FitError::LengthMismatch`] for no times or unequal lengths; then those of
+    /// [`SplineSpace::interpolate_collocation`].
     pub fn interpolate_checked(&self, times: &[T], values: &[T]) -> Result<(Vec<T>, T), FitError> {
         if times.is_empty() || times.len() != values.len() {
             return Err(FitError::LengthMismatch {
@@ -216,6 +236,11 @@ impl<T: Field> SplineSpace<T> {
     /// caller that formed B exactly (in rationals, from exact times) and rounded it once:
     /// an entry B_k(tⱼ − i + 1) of a time 1e-40 inside the support's end is then ~1e-80 and
     /// accurate, where the same entry of the rounded time would be 0.
+    ///
+    /// # Errors
+    /// [`FitError::LengthMismatch`] when B has no row, not one row per value, or not M
+    /// columns; [`FitError::IllConditioned`] (condition ∞) when inverting G or BG⁻¹Bᵀ meets
+    /// a zero pivot.
     pub fn interpolate_collocation(
         &self,
         b: &Matrix<T>,
@@ -246,6 +271,12 @@ impl<T: Field> SplineSpace<T> {
     }
 
     /// τ̂* of Eq. 15 for weights wⱼ ≥ 0.
+    ///
+    /// # Errors
+    /// [`FitError::LengthMismatch`], [`FitError::NoData`] or [`FitError::OutsideSupport`] for
+    /// the data's shape; [`FitError::WeightsLength`] unless one weight per datum;
+    /// [`FitError::NegativeWeight`] for the first wⱼ < 0; [`FitError::RankDeficient`] when
+    /// elimination on G + BᵀWB meets a zero pivot.
     pub fn smooth(&self, times: &[T], values: &[T], weights: &[T]) -> Result<Vec<T>, FitError> {
         self.check(times, values)?;
         if weights.len() != times.len() {
@@ -263,6 +294,11 @@ impl<T: Field> SplineSpace<T> {
 
     /// [`SplineSpace::smooth`] for data the caller checked on their exact values (times in
     /// the support, weights ≥ 0, lengths): nothing is decided on `times` again.
+    ///
+    /// # Errors
+    /// [`FitError::LengthMismatch`] for no times or unequal lengths of times, values and weights
+    /// (a wrong weight count too, reported with the times' and values' lengths); then those of
+    /// [`SplineSpace::smooth_collocation`].
     pub fn smooth_checked(
         &self,
         times: &[T],
@@ -280,6 +316,11 @@ impl<T: Field> SplineSpace<T> {
 
     /// Eq. 15 from the collocation matrix B (formed exactly by the caller, see
     /// [`SplineSpace::interpolate_collocation`]).
+    ///
+    /// # Errors
+    /// [`FitError::LengthMismatch`] when B has no row or `values` and `weights` do not have
+    /// one entry per row; [`FitError::RankDeficient`] when elimination on G + BᵀWB meets a
+    /// zero pivot.
     pub fn smooth_collocation(
         &self,
         b: &Matrix<T>,
@@ -418,6 +459,11 @@ impl<T: Real> ParamCurveArclen<T, 1> for SplineFit<T> {}
 /// Splines*, XIII). The greedy match takes the leftmost basis function each time. The
 /// times are compared as exact rationals (every f64 and MPFR value is one), so a time
 /// within rounding of a support's end is placed on its true side.
+///
+/// # Errors
+/// [`FitError::RankDeficient`] when a time is not finite, two times are equal, or the sorted
+/// times cannot be matched to basis functions i₁ < … < i_N ≤ M as stated (a time outside
+/// (0, M + k) never can).
 pub fn schoenberg_whitney<T: Field>(
     times: &[T],
     degree: usize,
@@ -452,6 +498,11 @@ pub fn schoenberg_whitney<T: Field>(
 }
 
 /// The interpolating τ* from the KKT system of Problem 4, independently of Eq. 14.
+///
+/// # Errors
+/// [`FitError::LengthMismatch`] for unequal lengths, then [`FitError::NoData`] or
+/// [`FitError::OutsideSupport`] ([`SplineSpace::collocation`]); [`FitError::RankDeficient`]
+/// when elimination on the KKT matrix meets a zero pivot (exactly: B not of full row rank).
 pub fn interpolate_kkt<T: Field>(
     space: &SplineSpace<T>,
     times: &[T],

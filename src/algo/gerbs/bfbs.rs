@@ -34,6 +34,10 @@ pub const MAX_EXPONENT: u32 = 29;
 
 impl Bfbs {
     /// A BFBS with these exponents; refused when empty or zero.
+    ///
+    /// # Errors
+    /// [`GerbsError::Parameter`] (`params.i`) for no exponent, or one outside
+    /// 1..=[`MAX_EXPONENT`].
     pub fn new(exponents: Vec<u32>) -> Result<Self, GerbsError> {
         if exponents.is_empty() {
             return Err(GerbsError::Parameter {
@@ -51,6 +55,9 @@ impl Bfbs {
     }
 
     /// The same exponent i for n basis functions (i = 2: the curvature-continuous case).
+    ///
+    /// # Errors
+    /// [`GerbsError::Parameter`] (`params.i`) for n = 0 or i outside 1..=[`MAX_EXPONENT`].
     pub fn uniform(i: u32, n: usize) -> Result<Self, GerbsError> {
         Bfbs::new(vec![i; n])
     }

@@ -484,6 +484,12 @@ impl Candidate {
 
 /// The shortest word of `leg` (number `index` in error messages), decided on its exact
 /// input (see the module doc).
+///
+/// # Errors
+/// [`DubinsError::Degenerate`] for a radius ≤ 0, coincident points, or no word joining the
+/// poses; [`DubinsError::Undecided`] when the shortest word cannot be decided, and
+/// [`DubinsError::Tie`] when two different paths have equal lengths, at [`PLAN_BITS_CAP`] bits
+/// (precision doubles from 128 until then).
 pub fn plan(leg: &ExactLeg, index: usize) -> Result<DubinsPlan, DubinsError> {
     let zero = BigRational::from_integer(0.into());
     if leg.radius <= zero {
@@ -592,6 +598,9 @@ impl DubinsPlan {
 
 /// The shortest path of every leg, each decided on its exact input and evaluated in `T`;
 /// the first leg that cannot be decided is the error.
+///
+/// # Errors
+/// The error of [`plan`] for the first leg that fails, its 0-based index as `leg`.
 pub fn shortest_exact<T: Real>(
     legs: &[ExactLeg],
     ctx: &T::Ctx,
@@ -613,6 +622,10 @@ fn name(word: &[Step; 3]) -> String {
 }
 
 /// The headings Algorithm 1 gives the waypoints: atan2 of its tangent directions m_i.
+///
+/// # Errors
+/// [`GerbsError::Waypoints`] as [`tangents`] (fewer than 3, non-finite, repeated or collinear
+/// waypoints).
 pub fn algorithm1_headings<T: Real>(w: &[[T; 2]]) -> Result<Vec<T>, GerbsError> {
     Ok(tangents(w)?.m.iter().map(|m| m[1].atan2(&m[0])).collect())
 }

@@ -49,6 +49,10 @@ pub struct ErbsParams<T> {
 impl<T: Real> ErbsParams<T> {
     /// Parameters checked against the ranges of Eq. (4): α > 0, β > 0, γ > 0,
     /// 0 ≤ λ ≤ 1, σ ≥ 0.
+    ///
+    /// # Errors
+    /// [`GerbsError::Parameter`] naming the first parameter out of range (`params.alpha`,
+    /// `params.beta`, `params.gamma`, `params.lambda`, `params.sigma`); NaN is out of range.
     pub fn new(alpha: T, beta: T, gamma: T, lambda: T, sigma: T) -> Result<Self, GerbsError> {
         let p = ErbsParams::unchecked(alpha, beta, gamma, lambda, sigma);
         let ctx = p.alpha.ctx();
@@ -140,6 +144,10 @@ const MAX_LEVEL: usize = 14;
 impl<T: Real> Erbs<T> {
     /// The basis on `knots` with `params` (one set, or one per interval t_j…t_{j+1},
     /// j = 1 … n+1); computes every S_j by quadrature.
+    ///
+    /// # Errors
+    /// [`GerbsError::Parameter`] (`params`) unless one set or one per knot interval is given; the
+    /// sets themselves are not checked ([`ErbsParams::new`] does that).
     pub fn new(
         knots: &Knots<T>,
         params: Vec<ErbsParams<T>>,

@@ -78,6 +78,10 @@ pub struct Knots<T> {
 
 impl<T: Field> Knots<T> {
     /// Strictly increasing knots t_0 < … < t_n (at least two).
+    ///
+    /// # Errors
+    /// [`GerbsError::Knots`] for fewer than 3 knots, a non-finite knot, or knots that do not
+    /// increase (strictly, except that each end pair may be equal).
     pub fn new(t: Vec<T>) -> Result<Self, GerbsError> {
         if t.len() < 3 {
             return Err(GerbsError::Knots(format!(
@@ -112,6 +116,9 @@ impl<T: Field> Knots<T> {
 
     /// The knot vector of Algorithm 2 for n waypoints: t_1 = t_2 = 0, t_{n+1} = t_{n+2} = 1,
     /// uniform steps 1/(n−1) in between (Fig. 1 for n = 5: {0, 0, 1/4, 2/4, 3/4, 1, 1}).
+    ///
+    /// # Errors
+    /// [`GerbsError::Waypoints`] for n < 2.
     pub fn uniform(n: usize, ctx: &T::Ctx) -> Result<Self, GerbsError> {
         if n < 2 {
             return Err(GerbsError::Waypoints(format!(

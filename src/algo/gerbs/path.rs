@@ -61,6 +61,11 @@ pub fn turn_wedge<T: Field>(w: &[[T; 2]], i: usize) -> T {
 
 /// Check waypoints for Algorithm 1: at least 3, finite, no repeats of consecutive points,
 /// no interior triple whose turn sign is undefined (collinear, straight or reversing).
+///
+/// # Errors
+/// [`GerbsError::Waypoints`] for fewer than 3 waypoints, a non-finite coordinate, a waypoint
+/// equal to the one before, or an interior triple whose [`turn_wedge`] (computed in `T`) is
+/// zero.
 pub fn check_waypoints<T: Field>(w: &[[T; 2]]) -> Result<(), GerbsError> {
     if w.len() < 3 {
         return Err(GerbsError::Waypoints(format!(
@@ -105,6 +110,9 @@ pub fn check_waypoints<T: Field>(w: &[[T; 2]]) -> Result<(), GerbsError> {
 /// values as given (every f64 and MPFR number is a rational), so no rounding of the wedge
 /// can flip a sign. For waypoints that were themselves rounded from exact input, decide on
 /// the exact input and pass the signs in [`PathSpec::turns`].
+///
+/// # Errors
+/// [`GerbsError::Waypoints`] as [`check_waypoints`], on the values in `T` and again exactly.
 pub fn turn_signs<T: Field>(w: &[[T; 2]]) -> Result<Vec<i32>, GerbsError> {
     check_waypoints(w)?;
     let exact: Vec<[crate::scalar::BigRational; 2]> = w
@@ -121,6 +129,9 @@ pub fn turn_signs<T: Field>(w: &[[T; 2]]) -> Result<Vec<i32>, GerbsError> {
 }
 
 /// [`turn_signs`] on rational waypoints.
+///
+/// # Errors
+/// [`GerbsError::Waypoints`] as [`check_waypoints`].
 pub fn exact_turn_signs(w: &[[crate::scalar::BigRational; 2]]) -> Result<Vec<i32>, GerbsError> {
     check_waypoints(w)?;
     let n = w.len();
@@ -142,6 +153,9 @@ pub fn exact_turn_signs(w: &[[crate::scalar::BigRational; 2]]) -> Result<Vec<i32
 
 /// Algorithm 1, with the turn signs decided exactly on the waypoints as given
 /// ([`turn_signs`]).
+///
+/// # Errors
+/// As [`turn_signs`].
 pub fn tangents<T: Real>(w: &[[T; 2]]) -> Result<Tangents<T>, GerbsError> {
     let s = turn_signs(w)?;
     tangents_with_turns(w, s)
@@ -149,6 +163,10 @@ pub fn tangents<T: Real>(w: &[[T; 2]]) -> Result<Tangents<T>, GerbsError> {
 
 /// Algorithm 1 with turn signs `s` decided by the caller (one per waypoint, as
 /// [`exact_turn_signs`] returns them).
+///
+/// # Errors
+/// [`GerbsError::Waypoints`] as [`check_waypoints`]; [`GerbsError::Parameter`] (`turns`)
+/// unless `s` has one entry per waypoint (the signs' values are not checked).
 pub fn tangents_with_turns<T: Real>(w: &[[T; 2]], s: Vec<i32>) -> Result<Tangents<T>, GerbsError> {
     check_waypoints(w)?;
     let n = w.len();
@@ -302,6 +320,11 @@ impl<T: Real> PathSpec<T> {
 
 /// The local curves c_1 … c_n of Algorithm 2 (lines or arcs at the ends, [`EndCurves`]; arcs inside), with the
 /// tangents of Algorithm 1 (or the given ones).
+///
+/// # Errors
+/// Without `given`, those of [`tangents_with_turns`] or [`tangents`]; [`GerbsError::Parameter`]
+/// for a `radius` that is not positive and finite, θ_o = 0 or |θ_o| ≥ π (`theta_o`, NaN too),
+/// or a `line_length` that is not positive and finite.
 pub fn local_curves<T: Real>(
     spec: &PathSpec<T>,
     given: Option<&Tangents<T>>,

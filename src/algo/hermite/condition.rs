@@ -66,6 +66,10 @@ pub fn has_block_structure(
 
 /// κ₂ of the transform for m derivatives on [t₀, t₁], in the number type of t₀, computed on
 /// the start block (see the module doc for why that is exact).
+///
+/// # Errors
+/// [`NoConvergence`] when the Jacobi SVD of the start block does not converge
+/// ([`singular_values`]).
 pub fn condition<T: Real>(
     m: usize,
     t0: &T,
@@ -76,6 +80,10 @@ pub fn condition<T: Real>(
 }
 
 /// κ₂ of the whole (2m+2)×(2m+2) matrix, without using its block structure.
+///
+/// # Errors
+/// [`NoConvergence`] when the Jacobi SVD of the full matrix does not converge
+/// ([`singular_values`]).
 pub fn condition_full<T: Real>(
     m: usize,
     t0: &T,
@@ -86,6 +94,9 @@ pub fn condition_full<T: Real>(
 }
 
 /// κ₂ in MPFR at `bits` and `2·bits`, certified by their agreement; also the 2·bits value.
+///
+/// # Errors
+/// [`NoConvergence`] as [`condition`], at `bits` (`2·bits` is then not tried) or at `2·bits`.
 pub fn certified(
     m: usize,
     t0: &BigRational,

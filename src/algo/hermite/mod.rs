@@ -96,6 +96,10 @@ pub struct HermiteData<T> {
 
 impl<T: Field> HermiteData<T> {
     /// Check the shape: non-empty, equal lengths, t₁ > t₀.
+    ///
+    /// # Errors
+    /// [`HermiteError::Empty`] when `start` or `end` is empty; [`HermiteError::LengthMismatch`]
+    /// when their lengths differ; [`HermiteError::EmptyInterval`] unless t₀ < t₁ (NaN fails).
     pub fn new(start: Vec<T>, end: Vec<T>, t0: T, t1: T) -> Result<Self, HermiteError> {
         let data = HermiteData { start, end, t0, t1 };
         data.check()?;
@@ -131,6 +135,10 @@ impl<T: Field> HermiteData<T> {
     }
 
     /// The control points of the interpolating polynomial of degree 2m+1 (Eq. 18).
+    ///
+    /// # Errors
+    /// Those of [`HermiteData::new`] (checked again); [`HermiteError::ScaleNotRepresentable`] as
+    /// [`derivative_scales`].
     pub fn solve(&self) -> Result<Bernstein<T>, HermiteError> {
         self.check()?;
         let m = self.derivatives();
@@ -152,6 +160,11 @@ impl<T: Field> HermiteData<T> {
 /// The Hermite map for points in Rᵈ: `start[j]` and `end[j]` are the j-th derivative vectors
 /// (all of one dimension d ≥ 1). The map acts on each coordinate separately, so the result is
 /// the control polygon as points: `result[k][c]` is coordinate c of p_k.
+///
+/// # Errors
+/// [`HermiteError::DimensionMismatch`] when `start` is empty or its first vector has no
+/// coordinate, or any vector has another dimension; then, per coordinate, those of
+/// [`HermiteData::new`] (an empty `end`: [`HermiteError::Empty`]) and [`HermiteData::solve`].
 pub fn solve_points<T: Field>(
     start: &[Vec<T>],
     end: &[Vec<T>],
@@ -232,6 +245,11 @@ pub fn hermite_curve<T: Field, const D: usize>(
 }
 
 /// The scales Tʲ(n−j)!/n!, j = 0…m, n = 2m+1, that turn derivatives into differences.
+///
+/// # Errors
+/// [`HermiteError::ScaleNotRepresentable`] for the first j whose n!/(n−j)! is not finite,
+/// or whose scale (t₁ − t₀)ʲ(n−j)!/n! is not finite or is zero (overflow, underflow, or
+/// t₁ = t₀ for j ≥ 1).
 pub fn derivative_scales<T: Field>(m: usize, t0: &T, t1: &T) -> Result<Vec<T>, HermiteError> {
     let ctx = t0.ctx();
     let n = 2 * m + 1;
@@ -293,6 +311,10 @@ pub fn transform_matrix<T: Field>(m: usize, t0: &T, t1: &T, kind: TransformKind)
 
 /// The matrix of the Hermite map H → P itself, column by column (the map applied to unit
 /// boundary vectors). It is the inverse of [`transform_matrix`] with `Transform`.
+///
+/// # Errors
+/// [`HermiteError::EmptyInterval`] unless t₀ < t₁; [`HermiteError::ScaleNotRepresentable`] as
+/// [`derivative_scales`].
 pub fn hermite_matrix<T: Field>(m: usize, t0: &T, t1: &T) -> Result<Matrix<T>, HermiteError> {
     let ctx = t0.ctx();
     let size = 2 * m + 2;

@@ -95,6 +95,9 @@ pub const NEWTON_MAX_STEPS: usize = 60;
 
 /// Stage one: gradient projection in f64 from `h0`, calling `observe(i, h⁽ⁱ⁾)` after every
 /// iteration (pass `&mut |_, _| {}` when nothing is observed).
+///
+/// # Errors
+/// As [`gradient_projection_observed`].
 pub fn descend(
     h0: Vec<f64>,
     z: &[Vec<f64>],
@@ -114,6 +117,9 @@ pub fn descend(
 }
 
 /// Stage two: Newton's method in the number type of `z` from the f64 descent's end point.
+///
+/// # Errors
+/// Those of [`check_problem`] for `rough.h`, `z` and `alpha`; then those of [`newton_polish`].
 pub fn polish<T: Real>(
     rough: &Descent<f64>,
     z: &[Vec<T>],
@@ -141,6 +147,11 @@ pub struct Minimum<T> {
 
 /// Stage two with its summary: [`polish`] in the number type of `z`, then G there and at
 /// chord length, and the norm of the projected gradient at the result.
+///
+/// # Errors
+/// As [`polish`]; with [`Objective::Exact`] also [`SplineError::NotIncreasing`] when the
+/// polished h, or the chord-length spacing of `z` (coincident consecutive points), has a
+/// spacing ≤ 0.
 pub fn refine<T: Real>(
     rough: &Descent<f64>,
     z: &[Vec<T>],
@@ -166,6 +177,9 @@ pub fn refine<T: Real>(
 }
 
 /// Minimize G from `h0` (a point of B with all hᵢ > 0).
+///
+/// # Errors
+/// As [`gradient_projection_observed`].
 pub fn gradient_projection<T: Real>(
     h0: Vec<T>,
     z: &[Vec<T>],
@@ -186,6 +200,11 @@ pub fn gradient_projection<T: Real>(
 }
 
 /// [`gradient_projection`], calling `observe(i, h⁽ⁱ⁾)` after every iteration.
+///
+/// # Errors
+/// Those of [`check_problem`] for `h0`, `z` and `alpha`; with [`Objective::Exact`] also
+/// [`SplineError::NotIncreasing`] when `h0` or an iterate has a spacing ≤ 0 (e.g. a
+/// chord-length start for coincident consecutive points).
 pub fn gradient_projection_observed<T: Real>(
     h0: Vec<T>,
     z: &[Vec<T>],
@@ -310,6 +329,12 @@ fn illinois<T: Real>(
 /// [[∇²G, 1], [1ᵀ, 0]]·[δh; δμ] = [μ1 − ∇G; 1 − Σhᵢ], with the Hessian's columns obtained exactly
 /// (to the working precision) by evaluating the gradient in dual numbers. Stops after
 /// `steps` steps or when a step no longer changes h at the working precision.
+///
+/// # Errors
+/// With [`Objective::Exact`], [`SplineError::LengthMismatch`] for a component whose length is
+/// not `h.len()` + 1 and [`SplineError::NotIncreasing`] when `h` or an iterate has a spacing
+/// ≤ 0; the shape is not otherwise checked ([`check_problem`]). A singular Newton system ends
+/// the iteration without an error.
 pub fn newton_polish<T: Real>(
     mut h: Vec<T>,
     z: &[Vec<T>],

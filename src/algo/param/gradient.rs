@@ -21,6 +21,11 @@ use super::objective::{knots_from_spacing, Objective};
 use crate::scalar::Field;
 
 /// ∇G(h) for components `z[l]` with weights α_l.
+///
+/// # Errors
+/// As [`super::objective::objective`]: with [`Objective::Exact`],
+/// [`SplineError::LengthMismatch`] or [`SplineError::NotIncreasing`]; the approximate form
+/// never fails.
 pub fn gradient<T: Field>(
     h: &[T],
     z: &[Vec<T>],

@@ -67,6 +67,11 @@ fn check_lengths<T>(knots: &[T], values: &[T]) -> Result<(), SplineError> {
 
 impl<T: Field> NaturalCubicSpline<T> {
     /// The natural cubic spline (zero second derivative at both ends) through (knots, values).
+    ///
+    /// # Errors
+    /// [`SplineError::TooFewKnots`] for fewer than two knots; [`SplineError::LengthMismatch`]
+    /// unless one value per knot; [`SplineError::NotIncreasing`] for the first knot not greater
+    /// than the one before.
     pub fn new(knots: Vec<T>, values: Vec<T>) -> Result<Self, SplineError> {
         check_lengths(&knots, &values)?;
         if let Some(i) = (1..knots.len()).find(|&i| knots[i] <= knots[i - 1]) {
@@ -78,6 +83,10 @@ impl<T: Field> NaturalCubicSpline<T> {
     /// As [`NaturalCubicSpline::new`] for knots the caller knows to increase (decided on
     /// exact values they were rounded from): the order is not compared again, so a ball
     /// whose knots overlap after rounding still gets its enclosure.
+    ///
+    /// # Errors
+    /// [`SplineError::TooFewKnots`] or [`SplineError::LengthMismatch`] as
+    /// [`NaturalCubicSpline::new`]; never [`SplineError::NotIncreasing`].
     pub fn with_increasing_knots(knots: Vec<T>, values: Vec<T>) -> Result<Self, SplineError> {
         check_lengths(&knots, &values)?;
         let second = second_derivatives(&knots, &values);

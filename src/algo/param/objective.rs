@@ -35,6 +35,12 @@ fn q_times<T: Field>(h: &[T], z: &[T]) -> Vec<T> {
 }
 
 /// G(h) for K components `z[l]` (each of length N+1) with weights α_l.
+///
+/// # Errors
+/// With [`Objective::Exact`], those of [`NaturalCubicSpline::new`] on the knots of `h`:
+/// [`SplineError::LengthMismatch`] for a component longer than `h.len()` + 1,
+/// [`SplineError::NotIncreasing`] for a knot not above the one before (a spacing hᵢ ≤ 0).
+/// [`Objective::Approximate`] never fails.
 pub fn objective<T: Field>(
     h: &[T],
     z: &[Vec<T>],

@@ -71,6 +71,10 @@ pub struct Shape {
 
 impl Shape {
     /// The shape of rational ordinates (an error for fewer than two points or a repeat).
+    ///
+    /// # Errors
+    /// [`ParamError::TooFewPoints`] for fewer than two ordinates; [`ParamError::RepeatedPoint`]
+    /// for the first two consecutive equal ones.
     pub fn of_exact(z: &[BigRational]) -> Result<Shape, ParamError> {
         let zero = BigRational::from_integer(0.into());
         Ok(Shape {
@@ -82,6 +86,9 @@ impl Shape {
     /// MPFR number is one), so no rounding of a difference can flip a sign. For ordinates
     /// that were themselves rounded from exact input, decide on that input
     /// ([`Shape::of_exact`]) and use [`parametrization_with_shape`].
+    ///
+    /// # Errors
+    /// As [`Shape::of_exact`].
     pub fn of<T: Field>(z: &[T]) -> Result<Shape, ParamError> {
         let exact: Option<Vec<BigRational>> = z.iter().map(Field::to_rational).collect();
         match exact {
@@ -120,12 +127,18 @@ fn positive<T: Field>(x: &T) -> bool {
 }
 
 /// Which case the ordinates fall in (decided exactly, [`Shape::of`]).
+///
+/// # Errors
+/// As [`Shape::of`].
 pub fn classify<T: Field>(z: &[T]) -> Result<Case, ParamError> {
     Ok(Shape::of(z)?.case())
 }
 
 /// Indices of the endpoints and interior relative extremes, 0 = i₀ < … < i_M = N (Eq. 13),
 /// decided exactly ([`Shape::of`]).
+///
+/// # Errors
+/// As [`Shape::of`].
 pub fn extreme_indices<T: Field>(z: &[T]) -> Result<Vec<usize>, ParamError> {
     Ok(Shape::of(z)?.extremes())
 }
@@ -145,6 +158,9 @@ fn magnitudes<T: Field>(z: &[T], rising: &[bool]) -> Vec<T> {
 }
 
 /// Case I (Eq. 7), exact in any field: tᵢ = Σ_{j≤i} |Δⱼ| / Σ |Δⱼ|.
+///
+/// # Errors
+/// As [`Shape::of`].
 pub fn chord_length_1d<T: Field>(z: &[T]) -> Result<Vec<T>, ParamError> {
     let shape = Shape::of(z)?;
     Ok(chord_length_with(z, &shape.rising))
@@ -172,6 +188,9 @@ fn chord_length_from<T: Field>(d: &[T], ctx: &T::Ctx) -> Vec<T> {
 }
 
 /// Case II (Eq. 9) for alternating ordinates.
+///
+/// # Errors
+/// As [`Shape::of`].
 pub fn alternating<T: Real>(z: &[T]) -> Result<Vec<T>, ParamError> {
     let shape = Shape::of(z)?;
     Ok(alternating_with(z, &shape.rising))
@@ -214,6 +233,9 @@ fn alternating_from<T: Real>(d: &[T], ctx: &T::Ctx) -> Vec<T> {
 
 /// The minimizing parametrization of scalar ordinates and its case, the shape decided
 /// exactly on the ordinates as given ([`Shape::of`]).
+///
+/// # Errors
+/// As [`Shape::of`].
 pub fn minimizing_parametrization<T: Real>(z: &[T]) -> Result<(Vec<T>, Case), ParamError> {
     let shape = Shape::of(z)?;
     parametrization_with_shape(z, &shape)
@@ -222,6 +244,10 @@ pub fn minimizing_parametrization<T: Real>(z: &[T]) -> Result<(Vec<T>, Case), Pa
 /// The minimizing parametrization with the shape (case, extremes) decided by the caller on
 /// the exact ordinates: every discrete choice comes from `shape`, none from comparing the
 /// values of `z`, so ordinates rounded from exact input take the exact input's case.
+///
+/// # Errors
+/// [`ParamError::TooFewPoints`] for fewer than two ordinates or a `shape` without one entry
+/// per difference. Repeated points are not detected here (the shape is trusted).
 pub fn parametrization_with_shape<T: Real>(
     z: &[T],
     shape: &Shape,
@@ -236,6 +262,10 @@ pub fn parametrization_with_shape<T: Real>(
 /// formed exactly from exact ordinates and rounded once, a difference of 1e-40 between
 /// values near 1 keeps its relative accuracy (the difference of the rounded ordinates
 /// would be 0).
+///
+/// # Errors
+/// [`ParamError::TooFewPoints`] for fewer than two ordinates, or a `shape` or `magnitudes`
+/// without one entry per difference. Repeated points are not detected here.
 pub fn parametrization_exact<T: Real>(
     z: &[T],
     magnitudes: &[T],

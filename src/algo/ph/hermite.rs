@@ -183,6 +183,9 @@ pub enum MiddleRule {
 }
 
 /// The interpolant with free parameters `free` (Algorithm 1).
+///
+/// # Errors
+/// As [`interpolate_with`].
 pub fn interpolate<T: Real>(
     data: &HermiteData<T>,
     free: &FreeParameters<T>,
@@ -191,6 +194,12 @@ pub fn interpolate<T: Real>(
 }
 
 /// [`interpolate`] with a choice of the rule for the middle control point.
+///
+/// # Errors
+/// [`PhHermiteError::Shape`] for m = 0 or unequal derivative counts;
+/// [`PhHermiteError::FreeCount`] unless m − 1 τ at each end; [`PhHermiteError::ZeroTangent`]
+/// for v_b or v_e = 0 (or no Lemma 2 solution at that end);
+/// [`PhHermiteError::NoStandardForm`] for v_b + v_e = 0.
 pub fn interpolate_with<T: Real>(
     data: &HermiteData<T>,
     free: &FreeParameters<T>,
@@ -330,6 +339,9 @@ fn middle_preimage<T: Real>(
 
 /// The unit quaternion U with U d U* a positive multiple of i: the shortest rotation
 /// (1 + d̂·i + d̂×i, normalized), or j when d points along −i.
+///
+/// # Errors
+/// [`PhHermiteError::NoStandardForm`] when the computed |d| is zero (d = 0, or |d|² underflows).
 pub fn standard_rotation<T: Real>(d: &[T; 3]) -> Result<Quat<T>, PhHermiteError> {
     let ctx = d[0].ctx();
     let len = vec3::norm(d);

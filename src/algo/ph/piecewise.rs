@@ -130,8 +130,12 @@ pub fn segment_data<T: Real, C: Curve<T> + ?Sized>(
 /// PHODCOS; m = 2: the C² baseline) and free parameters `free` on every segment; with
 /// `roll`, apply the roll correction of Eq. (22) so A, R and ω are continuous.
 ///
+/// [`fit`] with [`FitOptions`] is the entry point with named options and documented
+/// defaults; `convert` is the positional form the paper checks use.
+///
 /// # Errors
-/// [`PhHermiteError::NoSegments`] for `segments` = 0, [`PhHermiteError::Interval`] unless
+/// [`PhHermiteError::NoSegments`] for `segments` = 0, [`PhHermiteError::Shape`] unless
+/// 1 ≤ m ≤ [`MAX_DERIVATIVES`], [`PhHermiteError::Interval`] unless
 /// a < b, [`PhHermiteError::NotFinite`] where the curve or its derivatives are not finite at
 /// a segment end (e.g. `sqrt(t − 10)` on [0, 1]), or the first segment's interpolation error.
 pub fn convert<T: Real, C: Curve<T> + ?Sized>(
@@ -145,6 +149,9 @@ pub fn convert<T: Real, C: Curve<T> + ?Sized>(
 ) -> Result<PiecewisePh<T>, PhHermiteError> {
     if segments == 0 {
         return Err(PhHermiteError::NoSegments);
+    }
+    if m == 0 || m > MAX_DERIVATIVES {
+        return Err(PhHermiteError::Shape);
     }
     if a.partial_cmp(b) != Some(std::cmp::Ordering::Less) {
         return Err(PhHermiteError::Interval);
@@ -199,6 +206,11 @@ impl<T> Default for FitOptions<T> {
         }
     }
 }
+
+/// The most derivatives m a conversion matches at a joint: the weights of Algorithm 1 are
+/// tabulated in `i64` (their falling factorials overflow from m = 13) and the preimage
+/// degree 2m + 1 must stay within `MAX_PREIMAGE_DEGREE`.
+pub const MAX_DERIVATIVES: usize = 12;
 
 /// The most segments [`fit`] tries for a tolerance.
 pub const MAX_FIT_SEGMENTS: usize = 1 << 14;
@@ -368,6 +380,10 @@ pub type Converted<T> = (PiecewisePh<T>, ConversionError<T>);
 /// tolerance in a few steps and bisection then finds the smallest N that meets it, assuming
 /// the error decreases with N between the bracketing powers of two (the paper notes the update
 /// strategy "could be further tailored").
+///
+/// # Errors
+/// Those of [`convert`] (m = 4, φ* = 0) at the first N tried that fails; no N ≤ `max_segments`
+/// meeting the tolerance is `Ok(None)`, not an error.
 pub fn phodcos<T: Real, C: Curve<T> + ?Sized>(
     curve: &C,
     a: &T,
@@ -570,6 +586,10 @@ fn segment_at<C: Curve<Float>>(
 /// every point at `bits`, then the points whose distance comes within the evaluation noise of
 /// the largest (2^(10−bits) relative to the curve's size) again at `hi_bits`, each on its
 /// segment interpolated at `hi_bits`. Returns the two maxima.
+///
+/// # Errors
+/// Those of [`convert`] at `bits` (a, b rounded to `bits`); those of [`interpolate`] for a
+/// segment rebuilt at `hi_bits` (its data are not checked for finiteness there).
 pub fn certified_grid_error<C: Curve<Float>>(
     make: impl Fn(u32) -> C,
     interval: (&BigRational, &BigRational),
@@ -627,6 +647,10 @@ pub fn observed_order<T: Real>(coarse: &T, fine: &T) -> Option<(T, T)> {
 /// discrete choice made at `bits`; only its value is recomputed, so the certified digits say
 /// how much rounding affected the value, not whether another maximum was missed (the
 /// sampling and the refinement are the same at both precisions).
+///
+/// # Errors
+/// Those of [`convert`] at `bits` (a, b rounded to `bits`); those of [`interpolate`] for the
+/// maximum's segment rebuilt at `hi_bits` (its data are not checked for finiteness there).
 #[allow(clippy::too_many_arguments)]
 pub fn certified_error<C: Curve<Float>>(
     make: impl Fn(u32) -> C,

@@ -65,6 +65,11 @@ impl<T: Field> Banded<T> {
     }
 
     /// Solve A X = B for every column of `rhs` (n × k) by elimination with partial pivoting.
+    ///
+    /// # Errors
+    /// [`SingularMatrix`] for the first column whose candidate pivots (the diagonal entry and the
+    /// `lower` entries below it, after elimination) are all exactly zero; a nearly singular band
+    /// is not detected in floating point.
     pub fn solve(mut self, mut rhs: Matrix<T>) -> Result<Matrix<T>, SingularMatrix> {
         let n = self.n;
         assert_eq!(rhs.rows(), n, "right-hand side of the wrong height");
@@ -156,6 +161,11 @@ impl<T: Field> Cyclic<T> {
 
     /// Solve A X = B (Woodbury: one banded elimination and a dense solve of the size of the
     /// number of corner columns).
+    ///
+    /// # Errors
+    /// [`SingularMatrix`] when the elimination of the band B without its corners, or the dense
+    /// solve of I + VᵀZ, finds no non-zero pivot in a column (then a column of B or of that small
+    /// matrix, not of A): a singular B fails even where A itself is invertible.
     pub fn solve(self, rhs: Matrix<T>) -> Result<Matrix<T>, SingularMatrix> {
         let n = self.band.n;
         let k = rhs.cols();

@@ -89,6 +89,11 @@ fn swap_rows<T: Field>(m: &mut Matrix<T>, i: usize, j: usize) {
 }
 
 /// The solution x of `A x = b`.
+///
+/// # Errors
+/// [`SingularMatrix`] for the first column in which elimination finds only exactly zero
+/// candidate pivots: a singular `a` in exact arithmetic; in floating point only when rounding
+/// leaves exact zeros, not for a merely ill-conditioned matrix.
 pub fn solve<T: Field>(a: &Matrix<T>, b: &[T]) -> Result<Vec<T>, SingularMatrix> {
     let mut work = a.clone();
     let mut rhs = Matrix::from_fn(b.len(), 1, |i, _| b[i].clone());
@@ -97,6 +102,9 @@ pub fn solve<T: Field>(a: &Matrix<T>, b: &[T]) -> Result<Vec<T>, SingularMatrix>
 }
 
 /// The inverse `A⁻¹`.
+///
+/// # Errors
+/// [`SingularMatrix`] as [`solve`].
 pub fn inverse<T: Field>(a: &Matrix<T>) -> Result<Matrix<T>, SingularMatrix> {
     let ctx = a[(0, 0)].ctx();
     let mut work = a.clone();

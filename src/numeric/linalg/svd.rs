@@ -24,6 +24,10 @@ pub struct NoConvergence {
 const MAX_SWEEPS: usize = 60;
 
 /// The singular values of `a`, largest first (min(rows, cols) of them).
+///
+/// # Errors
+/// [`NoConvergence`] when some pair of rows is still not orthogonal to the tolerance after
+/// 60 sweeps (non-finite entries, for instance).
 pub fn singular_values<T: Real>(a: &Matrix<T>) -> Result<Vec<T>, NoConvergence> {
     // Orthogonalise the shorter side: rows of A when rows ≤ cols, else rows of Aᵀ.
     let work = if a.rows() <= a.cols() {
@@ -93,6 +97,9 @@ pub fn singular_values<T: Real>(a: &Matrix<T>) -> Result<Vec<T>, NoConvergence> 
 }
 
 /// The spectral condition number κ₂ = σ_max/σ_min (infinite when σ_min = 0).
+///
+/// # Errors
+/// [`NoConvergence`] as [`singular_values`].
 pub fn condition_number<T: Real>(a: &Matrix<T>) -> Result<T, NoConvergence> {
     let sigma = singular_values(a)?;
     let max = sigma[0].clone();
