@@ -162,8 +162,7 @@ pub fn run_condition(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Ren
         // The proof's exact LDLᵀ works on integers whose size grows with m and with the
         // derivative scales (t1 − t0)^−j. Measured: m = 30 on [0, 1] in 0.6 s, m = 60 in 14 s;
         // m = 30 on [0, 1e-3] in 1.2–4.6 s, m = 60 there in over 2 minutes.
-        let span = (t1.clone() - &t0).to_f64().abs();
-        let scale_bits = m as f64 * span.log2().abs();
+        let scale_bits = m as f64 * condition::log2_abs(&(t1.clone() - &t0)).abs();
         let seconds =
             14.0 * ((m as f64 + 1.0) / 61.0).powf(4.5) * (1.0 + scale_bits / 600.0).powi(3);
         budget::check_time(
@@ -172,24 +171,23 @@ pub fn run_condition(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Ren
             &format!("a proven κ₂ for {m} derivatives on this interval at {scalar}"),
         )?;
     }
-    let (low, high) = scale_range(m, &(t1.clone() - &t0), kind, scalar)?;
-    // JSON has no infinity: null when the f64 matrix overflows or nalgebra's σ_min is 0.
-    let raw_reference = if high > 1100.0 || low < -1200.0 {
-        None
-    } else {
-        condition::f64_reference(m, &t0, &t1, kind)
-    };
+    let scale = scale_range(m, &(t1.clone() - &t0), kind, scalar)?;
+    // JSON has no infinity: null when the f64 matrix leaves f64's range or nalgebra's σ_min
+    // is 0.
+    let raw_reference = condition::f64_reference(m, &t0, &t1, kind);
     let reference = raw_reference.filter(|k| k.is_finite());
-    let f64_note = match raw_reference {
-        None => "the f64 matrix overflows",
-        Some(k) if k.is_infinite() => "nalgebra's f64 SVD returns σmin = 0",
-        Some(_) => "nalgebra's f64 SVD of the correctly rounded matrix",
+    let f64_note = match (raw_reference, condition::f64_out_of_range(m, scale)) {
+        (None, Some(why)) => why,
+        (None, None) => "the f64 matrix overflows",
+        (Some(k), _) if k.is_infinite() => "nalgebra's f64 SVD returns σmin = 0",
+        (Some(_), _) => "nalgebra's f64 SVD of the correctly rounded matrix",
     };
     let job = ConditionJob {
         m,
         t0,
         t1,
         kind,
+        scale,
         reference,
         f64_note,
     };
@@ -206,6 +204,9 @@ struct ConditionJob {
     t0: BigRational,
     t1: BigRational,
     kind: TransformKind,
+    /// The least and greatest binary exponents of the scale factors
+    /// ([`condition::scale_exponents`]).
+    scale: (f64, f64),
     /// nalgebra's f64 κ₂ (`None`: overflow or σmin = 0), and what it is.
     reference: Option<f64>,
     f64_note: &'static str,
@@ -266,7 +267,7 @@ impl TwoPrecisionJob for ConditionJob {
         // log₂κ₂ + 64 bits to resolve σ_min (below that the brackets do not close, and at
         // ball:64 with m = 60 the search ran for minutes). log₂κ₂ is about the spread of the
         // scale exponents plus 4 bits per derivative (m = 30 on [0, 1]: 197 bits).
-        let (low, high) = scale_exponents(self.m, &(self.t1.clone() - &self.t0), self.kind);
+        let (low, high) = self.scale;
         let needed = 64.0 + (high - low) + 4.0 * self.m as f64;
         let locate = bits.max(needed.min(f64::from(u32::MAX)) as u32);
         let Some((lo, hi)) = condition::proven(self.m, &self.t0, &self.t1, self.kind, locate)
@@ -317,20 +318,18 @@ impl TwoPrecisionJob for ConditionJob {
     }
 }
 
-/// Our generic Jacobi in f64 on the f64 matrix, or `None` when an entry is not finite.
-/// The binary exponents (least, greatest) of the scale factors n!/(n−j)!/(t1 − t0)^j,
-/// decided on the exact width before any exact matrix is built: its entries have about
-/// m·|log₂(t1 − t0)| bits, so a width like 1e-9999 would make the f64 reference alone take
-/// minutes. In f64 an interval whose factors leave f64's range is refused, naming it.
+/// The binary exponents (least, greatest) of the scale factors n!/(n−j)!/(t1 − t0)^j
+/// ([`condition::scale_exponents`]); in f64 an interval whose factors leave f64's range is
+/// refused, naming it.
 fn scale_range(
     m: usize,
     width: &BigRational,
     kind: TransformKind,
     scalar: ScalarKind,
 ) -> Result<(f64, f64), InputError> {
-    let (low, high) = scale_exponents(m, width, kind);
+    let (low, high) = condition::scale_exponents(m, width, kind);
     if scalar == ScalarKind::F64 && (high > 1023.0 || low < -1022.0) {
-        let w = log2_abs(width);
+        let w = condition::log2_abs(width);
         let what = if !(-1074.0..=1024.0).contains(&w) {
             format!("t1 − t0 ≈ 2^{w:.0} is itself beyond the range of f64")
         } else {
@@ -346,40 +345,7 @@ fn scale_range(
     Ok((low, high))
 }
 
-/// log₂|q| to within a few units in the last place of f64, for any size of q (0: −∞).
-fn log2_abs(q: &BigRational) -> f64 {
-    let bits_log2 = |n: &num_bigint::BigInt| {
-        let b = n.bits();
-        let shift = b.saturating_sub(60);
-        let top: num_bigint::BigInt = n.magnitude().clone().into();
-        let top = top >> shift as usize;
-        num_traits::ToPrimitive::to_f64(&top).map_or(f64::NAN, f64::log2) + shift as f64
-    };
-    if q.numer().bits() == 0 {
-        return f64::NEG_INFINITY;
-    }
-    bits_log2(q.numer()) - bits_log2(q.denom())
-}
-
-/// The least and greatest log₂ of the scale factors n!/(n−j)!/w^j, j = 0 … m, n = 2m + 1,
-/// of the transform on an interval of width w (all 0 for the binomial matrix, which has no
-/// scale factors).
-fn scale_exponents(m: usize, width: &BigRational, kind: TransformKind) -> (f64, f64) {
-    if kind == TransformKind::Binomial {
-        return (0.0, 0.0);
-    }
-    let w = log2_abs(width);
-    let n = 2 * m + 1;
-    let (mut low, mut high, mut falling) = (0.0f64, 0.0f64, 0.0f64);
-    for j in 1..=m {
-        falling += ((n - j + 1) as f64).log2();
-        let e = falling - j as f64 * w;
-        low = low.min(e);
-        high = high.max(e);
-    }
-    (low, high)
-}
-
+/// Our generic Jacobi in f64 on the f64 matrix, or `None` when an entry is not finite.
 fn f64_matrix_condition(
     m: usize,
     t0: &BigRational,

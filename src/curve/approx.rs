@@ -74,6 +74,18 @@ pub fn locate<T: Real, P: BernsteinPieces<T> + ?Sized>(pieces: &P, t: &T) -> (us
     (lo, xi)
 }
 
+/// [`locate`] for a t in [a, b] only.
+///
+/// # Errors
+/// [`CurveError::OutsideDomain`] for t outside [a, b] or NaN.
+pub fn locate_in_domain<T: Real, P: BernsteinPieces<T> + ?Sized>(
+    pieces: &P,
+    t: &T,
+) -> Result<(usize, T), CurveError> {
+    check_domain(t, pieces.interval())?;
+    Ok(locate(pieces, t))
+}
+
 /// γ(t), γ′(t), … per unit of t for pieces in Bernstein form ([`ParamCurve::derivatives`]):
 /// the derivatives in ξ divided by hᵏ.
 ///
@@ -84,8 +96,7 @@ pub fn pieces_derivatives<T: Real, P: BernsteinPieces<T> + ?Sized>(
     t: &T,
     order: usize,
 ) -> Result<Vec<[T; 3]>, CurveError> {
-    check_domain(t, pieces.interval())?;
-    let (k, xi) = locate(pieces, t);
+    let (k, xi) = locate_in_domain(pieces, t)?;
     let mut jet = bernstein_jet(&pieces.control_points(k), &xi, order);
     let inv = T::one_in(&t.ctx()) / &pieces.step();
     let mut scale = T::one_in(&t.ctx());

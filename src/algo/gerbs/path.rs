@@ -784,9 +784,11 @@ impl<T: Real, B: Blend<T>> ParamCurve<T, 2> for GerbsPath<T, B> {
     /// The inner knots and the points where a basis function is less smooth.
     fn breakpoints(&self) -> Vec<T> {
         let knots = self.knots.as_slice();
+        let (first, last) = (&knots[0], &knots[knots.len() - 1]);
         let mut out = Vec::new();
         for j in 1..knots.len() {
-            if j > 1 && knots[j - 1] > knots[0] {
+            // Inner knots only (a double end knot is no break inside the domain).
+            if *first < knots[j - 1] && knots[j - 1] < *last {
                 out.push(knots[j - 1].clone());
             }
             if knots[j - 1] < knots[j] {

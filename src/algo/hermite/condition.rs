@@ -115,14 +115,70 @@ pub fn certified(
     .map(|(c, _, hi)| (c, hi))
 }
 
+/// log₂|q| to within a few units in the last place of f64, for any size of q (0: −∞).
+pub fn log2_abs(q: &BigRational) -> f64 {
+    let bits_log2 = |n: &num_bigint::BigInt| {
+        let b = n.bits();
+        let shift = b.saturating_sub(60);
+        let top: num_bigint::BigInt = n.magnitude().clone().into();
+        let top = top >> shift as usize;
+        num_traits::ToPrimitive::to_f64(&top).map_or(f64::NAN, f64::log2) + shift as f64
+    };
+    if q.numer().bits() == 0 {
+        return f64::NEG_INFINITY;
+    }
+    bits_log2(q.numer()) - bits_log2(q.denom())
+}
+
+/// The least and greatest log₂ of the scale factors n!/(n−j)!/w^j, j = 0 … m, n = 2m + 1,
+/// of the transform on an interval of width w (all 0 for the binomial matrix, which has no
+/// scale factors). Decided on the exact width, before any exact matrix is built: its entries
+/// have about m·|log₂ w| bits.
+pub fn scale_exponents(m: usize, width: &BigRational, kind: TransformKind) -> (f64, f64) {
+    if kind == TransformKind::Binomial {
+        return (0.0, 0.0);
+    }
+    let w = log2_abs(width);
+    let n = 2 * m + 1;
+    let (mut low, mut high, mut falling) = (0.0f64, 0.0f64, 0.0f64);
+    for j in 1..=m {
+        falling += ((n - j + 1) as f64).log2();
+        let e = falling - j as f64 * w;
+        low = low.min(e);
+        high = high.max(e);
+    }
+    (low, high)
+}
+
+/// Whether the f64 matrix of the transform leaves f64's range, from its scale exponents
+/// (`low`, `high`, [`scale_exponents`]), as a note: it overflows above 2^1100 (the entries
+/// of a row are its scale factor times integers ≥ 1 where they are not 0); it underflows when
+/// a row's factor is below 2^−1200 and 2^(−1076 − (2m+2)), so that the row rounds to 0 (the
+/// integers it multiplies stay under 2^(2m+1)); `None` when it may fit.
+pub fn f64_out_of_range(m: usize, (low, high): (f64, f64)) -> Option<&'static str> {
+    if high > 1100.0 {
+        Some("the f64 matrix overflows")
+    } else if low < (-1200.0f64).min(-1076.0 - (2 * m + 2) as f64) {
+        Some("the f64 matrix underflows (whole rows round to 0)")
+    } else {
+        None
+    }
+}
+
 /// κ₂ by nalgebra's f64 SVD of the full f64 matrix (entries correctly rounded from the exact
-/// ones); `None` when an entry overflows f64. It is +∞ when nalgebra's σ_min comes out as 0.
+/// ones); `None` when an entry overflows f64, or when the scale factors say the f64 matrix
+/// leaves f64's range ([`f64_out_of_range`]). That is decided before the exact matrix is
+/// built, whose entries would otherwise take minutes for a width like 1e-9999. It is +∞ when
+/// nalgebra's σ_min comes out as 0.
 pub fn f64_reference(
     m: usize,
     t0: &BigRational,
     t1: &BigRational,
     kind: TransformKind,
 ) -> Option<f64> {
+    if f64_out_of_range(m, scale_exponents(m, &(t1.clone() - t0), kind)).is_some() {
+        return None;
+    }
     let exact = transform_matrix(m, t0, t1, kind);
     let a = exact.map(|q| q.to_f64());
     if a.entries().iter().any(|x| !x.is_finite()) {

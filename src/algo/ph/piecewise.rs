@@ -22,10 +22,8 @@ pub use crate::curve::approx::{
     conversion_error, knot, refine_local_max, BernsteinPieces, CertifiedError, ConversionError,
     DEFAULT_SAMPLES,
 };
-use crate::curve::approx::{locate, pieces_breakpoints, pieces_derivatives};
-use crate::curve::parametric::{
-    check_domain, CurveError, Frame, ParamCurve, ParamCurveArclen, ParamCurveFrame,
-};
+use crate::curve::approx::{locate, locate_in_domain, pieces_breakpoints, pieces_derivatives};
+use crate::curve::parametric::{CurveError, Frame, ParamCurve, ParamCurveArclen, ParamCurveFrame};
 use crate::curve::taylor::Taylor;
 use crate::curve::Curve;
 use crate::numeric::quat::{vec3, Quat};
@@ -290,15 +288,6 @@ fn integral_to<T: Real>(sigma: &[T], xi: &T) -> T {
     bernstein_jet(&c, xi, 0).swap_remove(0)[0].clone()
 }
 
-impl<T: Real> PiecewisePh<T> {
-    /// The segment and local parameter of a t in the domain, with the segment length h.
-    fn locate_checked(&self, t: &T) -> Result<(usize, T, T), CurveError> {
-        check_domain(t, (&self.a, &self.b))?;
-        let (k, xi) = self.locate(t);
-        Ok((k, xi, self.step()))
-    }
-}
-
 impl<T: Real> ParamCurve<T, 3> for PiecewisePh<T> {
     fn domain(&self) -> (T, T) {
         (self.a.clone(), self.b.clone())
@@ -317,7 +306,7 @@ impl<T: Real> ParamCurveArclen<T, 3> for PiecewisePh<T> {
     /// Exact up to rounding: the lengths of the segments before t (each the mean of its
     /// speed coefficients, Eq. 13a) plus ∫₀^ξ σ of the segment holding t.
     fn arc_length(&self, t: &T) -> Result<T, CurveError> {
-        let (k, xi, _) = self.locate_checked(t)?;
+        let (k, xi) = locate_in_domain(self, t)?;
         let mut total = T::zero_in(&t.ctx());
         for segment in &self.segments[..k] {
             total += &segment.arc_length();
@@ -329,7 +318,8 @@ impl<T: Real> ParamCurveArclen<T, 3> for PiecewisePh<T> {
 impl<T: Real> ParamCurveFrame<T> for PiecewisePh<T> {
     /// The Euler–Rodrigues frame (Eq. 11) and ω (Eq. 12) divided by h, per unit of t.
     fn frame(&self, t: &T) -> Result<Frame<T>, CurveError> {
-        let (k, xi, h) = self.locate_checked(t)?;
+        let (k, xi) = locate_in_domain(self, t)?;
+        let h = self.step();
         let segment = &self.segments[k];
         let state = segment.frame_state(&segment.control_points(), &xi);
         if state.speed.is_zero() {
