@@ -47,7 +47,8 @@ use super::certify::format_float_digits;
 use super::mpfr::precision;
 use super::{BigRational, Field, Real};
 use rug::float::{Constant, Round};
-use rug::Float;
+use rug::ops::{AddAssignRound, DivAssignRound, MulAssignRound, SubAssignRound};
+use rug::{Assign, Float};
 use std::cmp::Ordering;
 use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 use std::sync::atomic::{AtomicU64, Ordering as AtomicOrdering};
@@ -207,8 +208,41 @@ fn down(x: f64) -> f64 {
     }
 }
 
-/// An upper bound for |x| as a double.
+/// The top 53 bits of |x| and its exponent e (|x| = 0.b₁b₂… × 2^e with b₁ = 1), read from
+/// the limbs without MPFR's conversion: `(mantissa, e, inexact)` with mantissa in
+/// [2⁵², 2⁵³) and `inexact` when bits beyond the 53rd are set. `None` for 0, ∞ and NaN.
+#[cfg(target_pointer_width = "64")]
+fn leading_bits(x: &Float) -> Option<(u64, i64, bool)> {
+    let significand = x.get_significand()?;
+    let (&top, rest) = significand.as_limbs().split_last()?;
+    let top = u64::from(top);
+    let inexact = top & 0x7ff != 0 || rest.iter().any(|&limb| limb != 0);
+    Some((top >> 11, i64::from(x.get_exp()?), inexact))
+}
+
+/// The double with 53-bit mantissa `mantissa` ∈ [2⁵², 2⁵³] times 2^(e − 53), when it is a
+/// normal double (`None` otherwise: the caller falls back to MPFR's conversion).
+fn normal_double(mut mantissa: u64, mut e: i64) -> Option<f64> {
+    if mantissa == 1 << 53 {
+        mantissa >>= 1;
+        e += 1;
+    }
+    // The value lies in [2^(e−1), 2^e): biased exponent e − 1 + 1023.
+    let biased = e - 1 + 1023;
+    (1..=2046)
+        .contains(&biased)
+        .then(|| f64::from_bits(((biased as u64) << 52) | (mantissa & ((1 << 52) - 1))))
+}
+
+/// An upper bound for |x| as a double: |x| rounded up to 53 bits (exactly what MPFR's
+/// `mpfr_get_d` rounding away from zero gives, read from the limbs on 64-bit targets).
 fn abs_up(x: &Float) -> f64 {
+    #[cfg(target_pointer_width = "64")]
+    if let Some(up) =
+        leading_bits(x).and_then(|(m, e, inexact)| normal_double(m + u64::from(inexact), e))
+    {
+        return up;
+    }
     let round = if x.is_sign_negative() {
         Round::Down
     } else {
@@ -217,9 +251,27 @@ fn abs_up(x: &Float) -> f64 {
     x.to_f64_round(round).abs()
 }
 
-/// A lower bound for |x| as a double.
+/// A lower bound for |x| as a double: |x| truncated to 53 bits.
 fn abs_down(x: &Float) -> f64 {
+    #[cfg(target_pointer_width = "64")]
+    if let Some(down) = leading_bits(x).and_then(|(m, e, _)| normal_double(m, e)) {
+        return down;
+    }
     x.to_f64_round(Round::Zero).abs()
+}
+
+/// 2^k as a double: exact from 2⁻¹⁰⁷⁴ to 2¹⁰²³ (built from its bits, no `powi`), the
+/// smallest subnormal below (an upper bound), ∞ above.
+fn pow2_up(k: i64) -> f64 {
+    if k > 1023 {
+        f64::INFINITY
+    } else if k >= -1022 {
+        f64::from_bits(((k + 1023) as u64) << 52)
+    } else if k >= -1074 {
+        f64::from_bits(1 << (k + 1074))
+    } else {
+        f64::from_bits(1)
+    }
 }
 
 /// A bound on the rounding error of `m`, the nearest p-bit value to an exact result:
@@ -231,16 +283,7 @@ fn rounding_error(m: &Float, direction: Ordering) -> f64 {
     match m.get_exp() {
         None if m.is_zero() => f64::from_bits(1),
         None => f64::INFINITY,
-        Some(e) => {
-            let k = i64::from(e) - i64::from(m.prec());
-            if k < -1074 {
-                f64::from_bits(1)
-            } else if k > 1023 {
-                f64::INFINITY
-            } else {
-                2f64.powi(k as i32)
-            }
-        }
+        Some(e) => pow2_up(i64::from(e) - i64::from(m.prec())),
     }
 }
 
@@ -448,68 +491,85 @@ impl Neg for Ball {
     }
 }
 
-impl Add<&Ball> for Ball {
-    type Output = Ball;
-    fn add(self, b: &Ball) -> Ball {
-        let mid = Float::with_val_round(self.mid.prec(), &self.mid + &b.mid, Round::Nearest);
-        Ball::rounded(mid, add_up(self.rad, b.rad))
+impl Ball {
+    /// Set the radius to `rad` plus the rounding error of the midpoint just computed in place
+    /// (MPFR's ternary value `direction`), as [`Ball::new`] does for a new ball.
+    fn set_rounded(&mut self, direction: Ordering, rad: f64) {
+        let rad = add_up(rad, rounding_error(&self.mid, direction));
+        self.rad = if rad.is_nan() { f64::INFINITY } else { rad };
     }
 }
 
-impl Sub<&Ball> for Ball {
-    type Output = Ball;
-    fn sub(self, b: &Ball) -> Ball {
-        let mid = Float::with_val_round(self.mid.prec(), &self.mid - &b.mid, Round::Nearest);
-        Ball::rounded(mid, add_up(self.rad, b.rad))
+// The arithmetic works on the midpoint in place (MPFR's `*_assign_round`, which returns the
+// ternary value), so an operation allocates nothing: the by-value operators reuse the left
+// operand's midpoint.
+impl AddAssign<&Ball> for Ball {
+    fn add_assign(&mut self, b: &Ball) {
+        let rad = add_up(self.rad, b.rad);
+        let direction = self.mid.add_assign_round(&b.mid, Round::Nearest);
+        self.set_rounded(direction, rad);
     }
 }
 
-impl Mul<&Ball> for Ball {
-    type Output = Ball;
-    fn mul(self, b: &Ball) -> Ball {
-        let rad = Ball::product_radius(&self, b);
-        let mid = Float::with_val_round(self.mid.prec(), &self.mid * &b.mid, Round::Nearest);
-        Ball::rounded(mid, rad)
+impl SubAssign<&Ball> for Ball {
+    fn sub_assign(&mut self, b: &Ball) {
+        let rad = add_up(self.rad, b.rad);
+        let direction = self.mid.sub_assign_round(&b.mid, Round::Nearest);
+        self.set_rounded(direction, rad);
     }
 }
 
-impl Div<&Ball> for Ball {
-    type Output = Ball;
-    fn div(self, b: &Ball) -> Ball {
-        let prec = self.mid.prec();
+impl MulAssign<&Ball> for Ball {
+    fn mul_assign(&mut self, b: &Ball) {
+        let rad = Ball::product_radius(self, b);
+        let direction = self.mid.mul_assign_round(&b.mid, Round::Nearest);
+        self.set_rounded(direction, rad);
+    }
+}
+
+impl DivAssign<&Ball> for Ball {
+    fn div_assign(&mut self, b: &Ball) {
         let denominator = down(abs_down(&b.mid) - b.rad);
         if b.mid.is_zero() || denominator <= 0.0 {
             // The divisor may be zero: the quotient is unbounded.
-            return Ball::new(Float::with_val(prec, 0), f64::INFINITY);
+            self.mid.assign(0);
+            self.rad = f64::INFINITY;
+            return;
         }
-        let (mid, direction) = Float::with_val_round(prec, &self.mid / &b.mid, Round::Nearest);
-        let err = rounding_error(&mid, direction);
-        let quotient = add_up(abs_up(&mid), err);
-        let rad = div_up(add_up(self.rad, mul_up(quotient, b.rad)), denominator);
-        Ball::new(mid, add_up(rad, err))
+        let numerator_rad = self.rad;
+        let direction = self.mid.div_assign_round(&b.mid, Round::Nearest);
+        let err = rounding_error(&self.mid, direction);
+        let quotient = add_up(abs_up(&self.mid), err);
+        let rad = div_up(add_up(numerator_rad, mul_up(quotient, b.rad)), denominator);
+        self.rad = add_up(rad, err);
+        if self.rad.is_nan() {
+            self.rad = f64::INFINITY;
+        }
     }
 }
 
-macro_rules! by_value_and_assign {
-    ($op:ident, $method:ident, $assign:ident, $assign_method:ident) => {
-        impl $op<Ball> for Ball {
+macro_rules! by_value {
+    ($op:ident, $method:ident, $assign_method:ident) => {
+        impl $op<&Ball> for Ball {
             type Output = Ball;
-            fn $method(self, b: Ball) -> Ball {
-                self.$method(&b)
+            fn $method(mut self, b: &Ball) -> Ball {
+                self.$assign_method(b);
+                self
             }
         }
-        impl $assign<&Ball> for Ball {
-            fn $assign_method(&mut self, b: &Ball) {
-                let a = std::mem::replace(self, Ball::exact(Float::new(2)));
-                *self = a.$method(b);
+        impl $op<Ball> for Ball {
+            type Output = Ball;
+            fn $method(mut self, b: Ball) -> Ball {
+                self.$assign_method(&b);
+                self
             }
         }
     };
 }
-by_value_and_assign!(Add, add, AddAssign, add_assign);
-by_value_and_assign!(Sub, sub, SubAssign, sub_assign);
-by_value_and_assign!(Mul, mul, MulAssign, mul_assign);
-by_value_and_assign!(Div, div, DivAssign, div_assign);
+by_value!(Add, add, add_assign);
+by_value!(Sub, sub, sub_assign);
+by_value!(Mul, mul, mul_assign);
+by_value!(Div, div, div_assign);
 
 impl Field for Ball {
     type Ctx = u32;
@@ -690,5 +750,50 @@ impl Real for Ball {
     }
     fn precision_bits(bits: &u32) -> u32 {
         *bits
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The bounds read from the limbs are exactly MPFR's directed conversions, across
+    /// precisions, signs, exponents, and the values just below a power of two (where rounding
+    /// up carries into the exponent).
+    #[test]
+    fn limb_bounds_equal_mpfr_directed_conversions() {
+        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        };
+        for bits in [24, 53, 54, 64, 65, 128, 256, 1000] {
+            for _ in 0..2000 {
+                let numerator = Float::with_val(bits, next() as i64);
+                let shift = (next() % 2400) as i32 - 1200;
+                let x = Float::with_val(bits, &numerator << shift) / 3u32;
+                let edge = Float::with_val(bits, 1u32 << 20) - Float::with_val(bits, 1) * 1e-12;
+                for y in [x.clone(), -x, edge] {
+                    let up = if y.is_sign_negative() {
+                        -y.to_f64_round(Round::Down)
+                    } else {
+                        y.to_f64_round(Round::Up)
+                    };
+                    assert_eq!(abs_up(&y).to_bits(), up.to_bits(), "{y} at {bits} bits");
+                    let down = y.to_f64_round(Round::Zero).abs();
+                    assert_eq!(abs_down(&y).to_bits(), down.to_bits(), "{y} at {bits} bits");
+                }
+            }
+        }
+        for k in -1100..1100 {
+            let expected = if k < -1074 {
+                f64::from_bits(1)
+            } else {
+                Float::with_val(64, Float::i_exp(1, k as i32)).to_f64()
+            };
+            assert_eq!(pow2_up(k), expected, "2^{k}");
+        }
     }
 }
