@@ -21,7 +21,7 @@ fn segment_data<T: Real>(ctx: &T::Ctx) -> HermiteData<T> {
     let c = ExprCurve::parse(CURVE).expect("curve").compile::<T>(ctx);
     let h = T::from_ratio(1, 256, ctx);
     let jet = |k: i64| segment_jet(&c, &T::from_ratio(k, 256, ctx), &h, 4);
-    HermiteData::from_jets(&jet(37), &jet(38))
+    HermiteData::from_jets(&jet(37), &jet(38)).expect("two jets of 5")
 }
 
 fn conversion(c: &mut Criterion) {

@@ -382,3 +382,167 @@ fn a_ph_fit_checks_its_options() {
         "{n} is not the first N that meets it"
     );
 }
+
+/// The lower-level public functions a second reading of the API found panicking: the
+/// smoothness objective and its gradient on short data, spline fits without controls or with
+/// NaN data, the solvers on empty or misshapen systems, PH interpolation above the supported
+/// order and GERBS local curves with too few given tangents.
+#[test]
+fn lower_level_functions_check_their_inputs() {
+    use trajverify::algo::bspline::fit::{FitError, SplineSpace};
+    use trajverify::algo::gerbs::path::{local_curves, Tangents};
+    use trajverify::algo::param::descent::newton_polish;
+    use trajverify::algo::param::gradient::{gradient, project};
+    use trajverify::algo::param::objective::objective;
+    use trajverify::algo::ph::hermite::interpolate_with;
+    use trajverify::algo::ph::hermite::MiddleRule;
+    use trajverify::numeric::linalg::banded::{Banded, Cyclic};
+    use trajverify::numeric::linalg::{
+        condition_number, determinant, inverse, singular_values, solve, Matrix,
+    };
+
+    // Marin's objective: a component shorter than h + 1, no h, a NaN or negative spacing.
+    let z = vec![vec![0.0, 1.0, 0.0]];
+    for form in [Objective::Exact, Objective::Approximate] {
+        for h in [
+            vec![0.5, 0.5, 0.5],
+            vec![],
+            vec![0.5, f64::NAN],
+            vec![1.5, -0.5],
+        ] {
+            let g = no_panic("objective", || objective(&h, &z, &[1.0], form));
+            assert!(g.is_err(), "objective on h = {h:?} gave {g:?}");
+            let d = no_panic("gradient", || gradient(&h, &z, &[1.0], form));
+            assert!(d.is_err(), "gradient on h = {h:?} gave {d:?}");
+            let n = no_panic("newton_polish", || {
+                newton_polish(h.clone(), &z, &[1.0], form, 3)
+            });
+            assert!(n.is_err(), "newton_polish on h = {h:?} gave {n:?}");
+        }
+    }
+    assert!(no_panic("project(&[])", || project::<f64>(&[])).is_empty());
+
+    // Spline fits: M = 0, NaN times, values and weights, a B with the wrong column count.
+    assert_eq!(
+        SplineSpace::<f64>::new(3, 0, &()).err(),
+        Some(FitError::NoControls)
+    );
+    let space = SplineSpace::<f64>::new(3, 6, &()).unwrap();
+    let good = [3.0, 4.0, 5.0, 6.0];
+    let r = no_panic("interpolate NaN time", || {
+        space.interpolate(&[3.0, f64::NAN, 5.0, 6.0], &good)
+    });
+    assert!(
+        matches!(
+            r,
+            Err(FitError::NotFinite {
+                what: "time",
+                index: 1
+            })
+        ),
+        "{r:?}"
+    );
+    let r = no_panic("interpolate NaN value", || {
+        space.interpolate(&good, &[0.0, 1.0, f64::NAN, 2.0])
+    });
+    assert!(
+        matches!(
+            r,
+            Err(FitError::NotFinite {
+                what: "value",
+                index: 2
+            })
+        ),
+        "{r:?}"
+    );
+    let r = no_panic("smooth NaN weight", || {
+        space.smooth(&good, &good, &[1.0, f64::NAN, 1.0, 1.0])
+    });
+    assert!(
+        matches!(
+            r,
+            Err(FitError::NotFinite {
+                what: "weight",
+                index: 1
+            })
+        ),
+        "{r:?}"
+    );
+    let r = no_panic("smooth_checked short weights", || {
+        space.smooth_checked(&good, &good, &[1.0])
+    });
+    assert!(matches!(r, Err(FitError::WeightsLength { .. })), "{r:?}");
+    let narrow = Matrix::zeros(4, 2, &());
+    let r = no_panic("smooth_collocation 4×2", || {
+        space.smooth_collocation(&narrow, &good, &[1.0; 4])
+    });
+    assert!(r.is_err(), "{r:?}");
+    let r = no_panic("interpolate_collocation 4×2", || {
+        space.interpolate_collocation(&narrow, &good)
+    });
+    assert!(r.is_err(), "{r:?}");
+
+    // Solvers: empty, not square, a right-hand side of the wrong height, the zero matrix.
+    let empty = Matrix::<f64>::zeros(0, 0, &());
+    assert_eq!(no_panic("solve 0×0", || solve(&empty, &[])), Ok(vec![]));
+    assert_eq!(
+        no_panic("inverse 0×0", || inverse(&empty)),
+        Ok(empty.clone())
+    );
+    assert!(no_panic("determinant 0×0", || determinant(&empty)).is_err());
+    assert_eq!(
+        no_panic("singular values 0×0", || singular_values(&empty)),
+        Ok(vec![])
+    );
+    assert!(no_panic("κ 0×0", || condition_number(&empty)).is_err());
+    let wide = Matrix::<f64>::zeros(2, 3, &());
+    assert!(no_panic("solve 2×3", || solve(&wide, &[1.0, 2.0])).is_err());
+    assert!(no_panic("inverse 2×3", || inverse(&wide)).is_err());
+    let square = Matrix::<f64>::identity(2, &());
+    assert!(no_panic("solve short b", || solve(&square, &[1.0])).is_err());
+    let kappa = no_panic("κ of 0", || {
+        condition_number(&Matrix::<f64>::zeros(2, 2, &()))
+    });
+    assert_eq!(kappa, Ok(f64::INFINITY));
+    let mut band = Banded::<f64>::zeros(3, 1, 1, &());
+    assert!(
+        band.add(0, 2, &1.0).is_err(),
+        "an entry outside the band was accepted"
+    );
+    let r = no_panic("banded short rhs", || band.solve(Matrix::zeros(2, 1, &())));
+    assert!(r.is_err());
+    let mut cyclic = Cyclic::<f64>::zeros(0, 1, 1, &());
+    assert!(cyclic.add(0, 0, &1.0).is_err());
+    let r = no_panic("cyclic n = 0", || cyclic.solve(Matrix::zeros(0, 1, &())));
+    assert!(r.is_ok_and(|x| x.rows() == 0));
+
+    // PH Hermite interpolation above MAX_DERIVATIVES, and from empty jets.
+    let m = 13;
+    use trajverify::algo::ph::hermite::HermiteData as PhData;
+    let data = PhData {
+        p_b: [0.0, 0.0, 0.0],
+        p_e: [1.0, 0.0, 0.0],
+        start: vec![[1.0, 0.0, 0.0]; m],
+        end: vec![[1.0, 0.0, 0.0]; m],
+    };
+    let r = no_panic("interpolate_with m = 13", || {
+        interpolate_with(&data, &FreeParameters::zero(m, &()), MiddleRule::Derived)
+    });
+    assert!(matches!(r, Err(PhHermiteError::Shape)), "{r:?}");
+    assert!(no_panic("from_jets(&[], …)", || PhData::<f64>::from_jets(
+        &[],
+        &[[0.0; 3]]
+    ))
+    .is_err());
+
+    // GERBS local curves with given tangents for fewer waypoints than the path has.
+    let spec = PathSpec::new(vec![[0.0, 0.0], [1.0, 1.0], [2.0, 0.0]], 0.5, &());
+    let short = Tangents {
+        m: vec![[1.0, 0.0]],
+        s: vec![1],
+    };
+    let r = no_panic("local_curves short tangents", || {
+        local_curves(&spec, Some(&short))
+    });
+    assert!(r.is_err());
+}

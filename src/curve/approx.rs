@@ -24,7 +24,8 @@ use rayon::prelude::*;
 pub trait BernsteinPieces<T: Real>: Sync {
     /// a and b.
     fn interval(&self) -> (&T, &T);
-    /// N, the number of segments.
+    /// N ≥ 1, the number of segments (every implementation in the library has at least one;
+    /// [`conversion_error`] relies on it).
     fn count(&self) -> usize;
     /// The control points of piece k.
     fn control_points(&self, k: usize) -> Vec<[T; 3]>;
@@ -186,6 +187,10 @@ pub const DEFAULT_SAMPLES: usize = 16;
 
 /// E = max_ξ ‖γ(ξ) − p(ξ)‖ over all segments (paper 001, Eq. 21), sampled with `samples`
 /// intervals per segment, then refined.
+///
+/// # Panics
+/// If `pw.count()` is 0, which breaks [`BernsteinPieces::count`]'s contract (no pieces built
+/// by the library have it).
 pub fn conversion_error<T: Real, C: Curve<T> + ?Sized, P: BernsteinPieces<T> + ?Sized>(
     curve: &C,
     pw: &P,
@@ -423,6 +428,9 @@ impl CertifiedError {
 /// local maximum recomputed from a fit at `hi_bits` (see [`CertifiedError`]). `make` builds
 /// the curve at a precision (numbers rounded once into it).
 ///
+/// When `fit` does not split both curves into the same segments, the maximum at `hi_bits` is
+/// searched again over every segment rather than refined on the segment found at `bits`.
+///
 /// # Errors
 /// The first error of `fit`: on the curve built at `bits`, else on the curve at `hi_bits`.
 pub fn certified_max_error<C: Curve<Float>, P: BernsteinPieces<Float>, E>(
@@ -432,10 +440,23 @@ pub fn certified_max_error<C: Curve<Float>, P: BernsteinPieces<Float>, E>(
     hi_bits: u32,
 ) -> Result<CertifiedError, E> {
     let lo_curve = make(bits);
-    let e = conversion_error(&lo_curve, &fit(&lo_curve, bits)?, DEFAULT_SAMPLES);
+    let lo_fit = fit(&lo_curve, bits)?;
+    let e = conversion_error(&lo_curve, &lo_fit, DEFAULT_SAMPLES);
     let hi_curve = make(hi_bits);
     let hi_fit = fit(&hi_curve, hi_bits)?;
     let k = e.segment;
+    if hi_fit.count() != lo_fit.count() {
+        // Not the same partition at both precisions: the maximum is searched again over the
+        // whole fit at hi_bits instead of refined on the segment found at bits.
+        let hi = conversion_error(&hi_curve, &hi_fit, DEFAULT_SAMPLES);
+        return Ok(CertifiedError {
+            lo: e.max,
+            hi: hi.max,
+            sampled: e.sampled,
+            segment: e.segment,
+            xi: e.xi,
+        });
+    }
     Ok(recertify(
         e,
         &hi_curve,

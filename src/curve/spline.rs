@@ -107,7 +107,7 @@ impl PeriodicSpline {
             let (first, values) = spline.basis_derivatives(&t, 0);
             for (j, v) in values[0].iter().enumerate() {
                 let col = (first + j as i64).rem_euclid(n as i64) as usize;
-                a.add(i, col, v);
+                a.add(i, col, v).map_err(|_| SplineError::Singular)?;
             }
         }
         let c = a
@@ -463,7 +463,7 @@ impl ClampedSpline {
         );
         for (i, (first, values)) in rows.iter().enumerate() {
             for (j, v) in values.iter().enumerate() {
-                a.add(i, first + j, v);
+                a.add(i, first + j, v).map_err(|_| SplineError::Singular)?;
             }
         }
         let c = a

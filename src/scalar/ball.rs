@@ -215,7 +215,6 @@ fn down(x: f64) -> f64 {
 fn leading_bits(x: &Float) -> Option<(u64, i64, bool)> {
     let significand = x.get_significand()?;
     let (&top, rest) = significand.as_limbs().split_last()?;
-    let top = u64::from(top);
     let inexact = top & 0x7ff != 0 || rest.iter().any(|&limb| limb != 0);
     Some((top >> 11, i64::from(x.get_exp()?), inexact))
 }

@@ -62,6 +62,17 @@ pub enum FitError {
         /// The unit roundoff of the number type.
         unit: f64,
     },
+    #[error("{what} #{index} is not a finite number")]
+    /// A time, value or weight that is NaN or infinite.
+    NotFinite {
+        /// "time", "value" or "weight".
+        what: &'static str,
+        /// Index of the offending entry.
+        index: usize,
+    },
+    #[error("a spline space needs at least one control point")]
+    /// M = 0: no basis function.
+    NoControls,
     #[error("weight #{index} is negative")]
     /// A negative weight.
     NegativeWeight {
@@ -92,10 +103,14 @@ impl<T: Field> SplineSpace<T> {
     /// The basis of `controls` shifted B-splines of degree `degree`.
     ///
     /// # Errors
-    /// [`FitError::DegreeTooLow`] for `degree` = 0.
+    /// [`FitError::DegreeTooLow`] for `degree` = 0, [`FitError::NoControls`] for
+    /// `controls` = 0.
     pub fn new(degree: usize, controls: usize, ctx: &T::Ctx) -> Result<Self, FitError> {
         if degree < 1 {
             return Err(FitError::DegreeTooLow(degree));
+        }
+        if controls == 0 {
+            return Err(FitError::NoControls);
         }
         Ok(SplineSpace {
             basis: CardinalBSpline::from_algorithm1(degree, ctx),
@@ -118,18 +133,19 @@ impl<T: Field> SplineSpace<T> {
     /// The N×M collocation matrix for the data times (checked to lie inside the support).
     ///
     /// # Errors
-    /// [`FitError::NoData`] for no times; [`FitError::OutsideSupport`] for the first time found
-    /// ≤ 0 or ≥ M + k.
+    /// [`FitError::NoData`] for no times; [`FitError::NotFinite`] for a NaN or infinite time;
+    /// [`FitError::OutsideSupport`] for the first time found ≤ 0 or ≥ M + k.
     pub fn collocation(&self, times: &[T]) -> Result<Matrix<T>, FitError> {
         let Some(first) = times.first() else {
             return Err(FitError::NoData);
         };
+        check_finite("time", times)?;
         let ctx = first.ctx();
-        let end = T::from_i64((self.controls + self.degree()) as i64, &ctx);
-        if let Some(index) = times
-            .iter()
-            .position(|t| *t <= T::zero_in(&ctx) || *t >= end)
-        {
+        let (zero, end) = (
+            T::zero_in(&ctx),
+            T::from_i64((self.controls + self.degree()) as i64, &ctx),
+        );
+        if let Some(index) = times.iter().position(|t| !(*t > zero && *t < end)) {
             return Err(FitError::OutsideSupport { index });
         }
         Ok(self.collocation_of(times))
@@ -139,10 +155,10 @@ impl<T: Field> SplineSpace<T> {
     /// their exact values: a time within rounding of the support's end gives the basis's
     /// continuous value there).
     pub fn collocation_of(&self, times: &[T]) -> Matrix<T> {
-        let ctx = times[0].ctx();
+        let ctx = &self.ctx;
         Matrix::from_fn(times.len(), self.controls, |j, i| {
             self.basis
-                .eval(&(times[j].clone() - &T::from_i64(i as i64, &ctx)))
+                .eval(&(times[j].clone() - &T::from_i64(i as i64, ctx)))
         })
     }
 
@@ -173,6 +189,7 @@ impl<T: Field> SplineSpace<T> {
                 values: values.len(),
             });
         }
+        check_finite("value", values)?;
         self.collocation(times)
     }
 
@@ -239,8 +256,9 @@ impl<T: Field> SplineSpace<T> {
     ///
     /// # Errors
     /// [`FitError::LengthMismatch`] when B has no row, not one row per value, or not M
-    /// columns; [`FitError::IllConditioned`] (condition ∞) when inverting G or BG⁻¹Bᵀ meets
-    /// a zero pivot.
+    /// columns; [`FitError::NotFinite`] for a NaN or infinite value or entry of B;
+    /// [`FitError::IllConditioned`] (condition ∞) when inverting G or BG⁻¹Bᵀ meets a zero
+    /// pivot.
     pub fn interpolate_collocation(
         &self,
         b: &Matrix<T>,
@@ -252,6 +270,8 @@ impl<T: Field> SplineSpace<T> {
                 values: values.len(),
             });
         }
+        check_finite("value", values)?;
+        check_finite("collocation entry", b.entries())?;
         let ctx = values[0].ctx();
         let gram = self.gram(&ctx);
         // B has full row rank (decided exactly), so a singular system here is singular only
@@ -273,10 +293,10 @@ impl<T: Field> SplineSpace<T> {
     /// τ̂* of Eq. 15 for weights wⱼ ≥ 0.
     ///
     /// # Errors
-    /// [`FitError::LengthMismatch`], [`FitError::NoData`] or [`FitError::OutsideSupport`] for
-    /// the data's shape; [`FitError::WeightsLength`] unless one weight per datum;
-    /// [`FitError::NegativeWeight`] for the first wⱼ < 0; [`FitError::RankDeficient`] when
-    /// elimination on G + BᵀWB meets a zero pivot.
+    /// [`FitError::LengthMismatch`], [`FitError::NoData`], [`FitError::NotFinite`] or
+    /// [`FitError::OutsideSupport`] for the data's shape; [`FitError::WeightsLength`] unless
+    /// one weight per datum; [`FitError::NegativeWeight`] for the first wⱼ < 0;
+    /// [`FitError::RankDeficient`] when elimination on G + BᵀWB meets a zero pivot.
     pub fn smooth(&self, times: &[T], values: &[T], weights: &[T]) -> Result<Vec<T>, FitError> {
         self.check(times, values)?;
         if weights.len() != times.len() {
@@ -285,8 +305,9 @@ impl<T: Field> SplineSpace<T> {
                 data: times.len(),
             });
         }
-        let ctx = times[0].ctx();
-        if let Some(index) = weights.iter().position(|w| *w < T::zero_in(&ctx)) {
+        check_finite("weight", weights)?;
+        let zero = T::zero_in(&self.ctx);
+        if let Some(index) = weights.iter().position(|w| *w < zero) {
             return Err(FitError::NegativeWeight { index });
         }
         self.smooth_checked(times, values, weights)
@@ -296,8 +317,8 @@ impl<T: Field> SplineSpace<T> {
     /// the support, weights ≥ 0, lengths): nothing is decided on `times` again.
     ///
     /// # Errors
-    /// [`FitError::LengthMismatch`] for no times or unequal lengths of times, values and weights
-    /// (a wrong weight count too, reported with the times' and values' lengths); then those of
+    /// [`FitError::LengthMismatch`] for no times or times and values of unequal lengths,
+    /// [`FitError::WeightsLength`] unless one weight per time; then those of
     /// [`SplineSpace::smooth_collocation`].
     pub fn smooth_checked(
         &self,
@@ -305,10 +326,16 @@ impl<T: Field> SplineSpace<T> {
         values: &[T],
         weights: &[T],
     ) -> Result<Vec<T>, FitError> {
-        if times.is_empty() || times.len() != values.len() || weights.len() != times.len() {
+        if times.is_empty() || times.len() != values.len() {
             return Err(FitError::LengthMismatch {
                 times: times.len(),
                 values: values.len(),
+            });
+        }
+        if weights.len() != times.len() {
+            return Err(FitError::WeightsLength {
+                weights: weights.len(),
+                data: times.len(),
             });
         }
         self.smooth_collocation(&self.collocation_of(times), values, weights)
@@ -318,21 +345,31 @@ impl<T: Field> SplineSpace<T> {
     /// [`SplineSpace::interpolate_collocation`]).
     ///
     /// # Errors
-    /// [`FitError::LengthMismatch`] when B has no row or `values` and `weights` do not have
-    /// one entry per row; [`FitError::RankDeficient`] when elimination on G + BᵀWB meets a
-    /// zero pivot.
+    /// [`FitError::LengthMismatch`] when B has no row, not M columns, or `values` does not
+    /// have one entry per row; [`FitError::WeightsLength`] unless one weight per row;
+    /// [`FitError::NotFinite`] for a NaN or infinite value, weight or entry of B;
+    /// [`FitError::RankDeficient`] when elimination on G + BᵀWB meets a zero pivot.
     pub fn smooth_collocation(
         &self,
         b: &Matrix<T>,
         values: &[T],
         weights: &[T],
     ) -> Result<Vec<T>, FitError> {
-        if b.rows() == 0 || b.rows() != values.len() || weights.len() != values.len() {
+        if b.rows() == 0 || b.rows() != values.len() || b.cols() != self.controls {
             return Err(FitError::LengthMismatch {
                 times: b.rows(),
                 values: values.len(),
             });
         }
+        if weights.len() != values.len() {
+            return Err(FitError::WeightsLength {
+                weights: weights.len(),
+                data: values.len(),
+            });
+        }
+        check_finite("value", values)?;
+        check_finite("weight", weights)?;
+        check_finite("collocation entry", b.entries())?;
         let ctx = values[0].ctx();
         let wb = Matrix::from_fn(b.rows(), b.cols(), |j, i| weights[j].clone() * &b[(j, i)]);
         let bt = b.transpose();
@@ -354,6 +391,14 @@ impl<T: Field> SplineSpace<T> {
             })
             .collect();
         solve(&lhs, &rhs).map_err(|_| FitError::RankDeficient)
+    }
+}
+
+/// [`FitError::NotFinite`] naming the first NaN or infinite entry of `xs`.
+fn check_finite<T: Field>(what: &'static str, xs: &[T]) -> Result<(), FitError> {
+    match xs.iter().position(|x| !x.is_finite()) {
+        Some(index) => Err(FitError::NotFinite { what, index }),
+        None => Ok(()),
     }
 }
 

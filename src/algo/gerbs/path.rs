@@ -318,13 +318,41 @@ impl<T: Real> PathSpec<T> {
     }
 }
 
+/// The line length l of the end lines after checking R, θ_o and l: the given l, or 2R|θ_o|.
+fn checked_line_length<T: Real>(spec: &PathSpec<T>) -> Result<T, GerbsError> {
+    let ctx = spec.radius.ctx();
+    let zero = T::zero_in(&ctx);
+    if !(spec.radius > zero) || !spec.radius.is_finite() {
+        return Err(GerbsError::Parameter {
+            field: "radius",
+            message: "the arc radius R must be a positive number".into(),
+        });
+    }
+    if !(spec.theta_o.clone().abs() < T::pi(&ctx)) || spec.theta_o.is_zero() {
+        return Err(GerbsError::Parameter {
+            field: "theta_o",
+            message: "theta_o must lie in (-pi, pi) and not be 0".into(),
+        });
+    }
+    match &spec.line_length {
+        Some(l) if !(*l > zero) || !l.is_finite() => Err(GerbsError::Parameter {
+            field: "line_length",
+            message: "the line length l must be a positive number".into(),
+        }),
+        Some(l) => Ok(l.clone()),
+        None => Ok(T::from_i64(2, &ctx) * &spec.radius * &spec.theta_o.clone().abs()),
+    }
+}
+
 /// The local curves c_1 … c_n of Algorithm 2 (lines or arcs at the ends, [`EndCurves`]; arcs inside), with the
 /// tangents of Algorithm 1 (or the given ones).
 ///
 /// # Errors
-/// Without `given`, those of [`tangents_with_turns`] or [`tangents`]; [`GerbsError::Parameter`]
-/// for a `radius` that is not positive and finite, θ_o = 0 or |θ_o| ≥ π (`theta_o`, NaN too),
-/// or a `line_length` that is not positive and finite.
+/// Without `given`, those of [`tangents_with_turns`] or [`tangents`]; with it,
+/// [`GerbsError::Parameter`] (`tangents`) unless it has one tangent and one turn sign per
+/// waypoint; [`GerbsError::Parameter`] for a `radius` that is not positive and finite,
+/// θ_o = 0 or |θ_o| ≥ π (`theta_o`, NaN too), or a `line_length` that is not positive and
+/// finite.
 pub fn local_curves<T: Real>(
     spec: &PathSpec<T>,
     given: Option<&Tangents<T>>,
@@ -336,32 +364,20 @@ pub fn local_curves<T: Real>(
             None => tangents(&spec.waypoints)?,
         },
     };
-    let ctx = spec.radius.ctx();
-    let zero = T::zero_in(&ctx);
-    if !(spec.radius > zero) || !spec.radius.is_finite() {
-        return Err(GerbsError::Parameter {
-            field: "radius",
-            message: "the arc radius R must be a positive number".into(),
-        });
-    }
-    let pi = T::pi(&ctx);
-    if !(spec.theta_o.clone().abs() < pi) || spec.theta_o.is_zero() {
-        return Err(GerbsError::Parameter {
-            field: "theta_o",
-            message: "theta_o must lie in (-pi, pi) and not be 0".into(),
-        });
-    }
-    let length = match &spec.line_length {
-        Some(l) if !(*l > zero) || !l.is_finite() => {
-            return Err(GerbsError::Parameter {
-                field: "line_length",
-                message: "the line length l must be a positive number".into(),
-            })
-        }
-        Some(l) => l.clone(),
-        None => T::from_i64(2, &ctx) * &spec.radius * &spec.theta_o.clone().abs(),
-    };
     let n = spec.waypoints.len();
+    if tan.m.len() != n || tan.s.len() != n {
+        return Err(GerbsError::Parameter {
+            field: "tangents",
+            message: format!(
+                "{} tangents and {} turn signs for {n} waypoints: one of each per waypoint",
+                tan.m.len(),
+                tan.s.len()
+            ),
+        });
+    }
+    let length = checked_line_length(spec)?;
+    let ctx = spec.radius.ctx();
+    let pi = T::pi(&ctx);
     let half_pi = pi / &T::from_i64(2, &ctx);
     let mut curves = Vec::with_capacity(n);
     for (i, w) in spec.waypoints.iter().enumerate() {

@@ -198,7 +198,7 @@ pub fn proven(
     bits: u32,
 ) -> Option<(Float, Float)> {
     let b = start_block::<BigRational>(m, t0, t1, kind);
-    let gram = IntegerSymmetric::new(&b.transpose().mul(&b));
+    let gram = IntegerSymmetric::new(&b.transpose().mul(&b))?;
     let sigma = singular_values(&b.map(|q| Float::from_rational(q, &bits))).ok()?;
     let square = |s: &Float| Float::with_val(bits, s * s);
     let (largest, smallest) = (square(sigma.first()?), square(sigma.last()?));

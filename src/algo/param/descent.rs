@@ -331,10 +331,9 @@ fn illinois<T: Real>(
 /// `steps` steps or when a step no longer changes h at the working precision.
 ///
 /// # Errors
-/// With [`Objective::Exact`], [`SplineError::LengthMismatch`] for a component whose length is
-/// not `h.len()` + 1 and [`SplineError::NotIncreasing`] when `h` or an iterate has a spacing
-/// ≤ 0; the shape is not otherwise checked ([`check_problem`]). A singular Newton system ends
-/// the iteration without an error.
+/// Those of [`super::objective::check_spacing`] for `h` or an iterate: the shape of the
+/// problem, or a spacing that is not positive and finite. A singular Newton system ends the
+/// iteration without an error.
 pub fn newton_polish<T: Real>(
     mut h: Vec<T>,
     z: &[Vec<T>],
@@ -344,7 +343,7 @@ pub fn newton_polish<T: Real>(
 ) -> Result<Vec<T>, SplineError> {
     use crate::numeric::linalg::{solve, Matrix};
     use crate::scalar::dual::Dual;
-    let ctx = h[0].ctx();
+    let ctx = super::objective::check_spacing(&h, z, alpha)?;
     let n = h.len();
     let zd: Vec<Vec<Dual<T>>> = z
         .iter()

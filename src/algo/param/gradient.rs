@@ -17,22 +17,20 @@
 //! central differences in MPFR.
 
 use super::natural::{NaturalCubicSpline, SplineError};
-use super::objective::{knots_from_spacing, Objective};
+use super::objective::{check_spacing, knots_from_spacing, Objective};
 use crate::scalar::Field;
 
 /// ∇G(h) for components `z[l]` with weights α_l.
 ///
 /// # Errors
-/// As [`super::objective::objective`]: with [`Objective::Exact`],
-/// [`SplineError::LengthMismatch`] or [`SplineError::NotIncreasing`]; the approximate form
-/// never fails.
+/// As [`super::objective::objective`] ([`check_spacing`]).
 pub fn gradient<T: Field>(
     h: &[T],
     z: &[Vec<T>],
     alpha: &[T],
     form: Objective,
 ) -> Result<Vec<T>, SplineError> {
-    let ctx = h[0].ctx();
+    let ctx = check_spacing(h, z, alpha)?;
     let n = h.len();
     let (two, three) = (T::from_i64(2, &ctx), T::from_i64(3, &ctx));
     let mut grad = vec![T::zero_in(&ctx); n];
@@ -68,9 +66,12 @@ pub fn gradient<T: Field>(
     Ok(grad)
 }
 
-/// The projection π_B(y) = y − (y·n̂)n̂ onto the plane Σ xᵢ = 0 (Eq. 30).
+/// The projection π_B(y) = y − (y·n̂)n̂ onto the plane Σ xᵢ = 0 (Eq. 30); empty for an
+/// empty `y`.
 pub fn project<T: Field>(y: &[T]) -> Vec<T> {
-    let ctx = y[0].ctx();
+    let Some(ctx) = y.first().map(Field::ctx) else {
+        return Vec::new();
+    };
     let mean =
         y.iter().fold(T::zero_in(&ctx), |acc, x| acc + x) / &T::from_i64(y.len() as i64, &ctx);
     y.iter().map(|x| x.clone() - &mean).collect()

@@ -27,6 +27,29 @@ pub fn knots_from_spacing<T: Field>(h: &[T], ctx: &T::Ctx) -> Vec<T> {
     t
 }
 
+/// Check what [`objective`] and its gradient read: at least two points, every component
+/// of `h.len()` + 1 points, one weight per component ([`super::descent::check_problem`]),
+/// and every spacing a positive finite number (knot i + 1 above knot i). Returns the
+/// context of `h`.
+///
+/// # Errors
+/// [`SplineError::TooFewKnots`], [`SplineError::LengthMismatch`] or
+/// [`SplineError::WeightCount`] for the shape; [`SplineError::NotIncreasing`] naming the
+/// knot after the first spacing that is not positive and finite.
+pub fn check_spacing<T: Field>(h: &[T], z: &[Vec<T>], alpha: &[T]) -> Result<T::Ctx, SplineError> {
+    super::descent::check_problem(h.len(), z, alpha)?;
+    // check_problem saw two points or more, so h has an entry.
+    let ctx = h.first().map(Field::ctx).ok_or(SplineError::TooFewKnots)?;
+    let zero = T::zero_in(&ctx);
+    if let Some(i) = h
+        .iter()
+        .position(|hi| !hi.is_finite() || zero.decide_lt(hi) != Some(true))
+    {
+        return Err(SplineError::NotIncreasing { index: i + 1 });
+    }
+    Ok(ctx)
+}
+
 /// (Qz)ᵢ, i = 1…N−1: the second divided differences times their spacing structure.
 fn q_times<T: Field>(h: &[T], z: &[T]) -> Vec<T> {
     (1..h.len())
@@ -37,17 +60,16 @@ fn q_times<T: Field>(h: &[T], z: &[T]) -> Vec<T> {
 /// G(h) for K components `z[l]` (each of length N+1) with weights α_l.
 ///
 /// # Errors
-/// With [`Objective::Exact`], those of [`NaturalCubicSpline::new`] on the knots of `h`:
-/// [`SplineError::LengthMismatch`] for a component longer than `h.len()` + 1,
-/// [`SplineError::NotIncreasing`] for a knot not above the one before (a spacing hᵢ ≤ 0).
-/// [`Objective::Approximate`] never fails.
+/// Those of [`check_spacing`]: the shape of the problem ([`SplineError::TooFewKnots`],
+/// [`SplineError::LengthMismatch`], [`SplineError::WeightCount`]) and
+/// [`SplineError::NotIncreasing`] for a spacing hᵢ that is not a positive finite number.
 pub fn objective<T: Field>(
     h: &[T],
     z: &[Vec<T>],
     alpha: &[T],
     form: Objective,
 ) -> Result<T, SplineError> {
-    let ctx = h[0].ctx();
+    let ctx = check_spacing(h, z, alpha)?;
     let t = knots_from_spacing(h, &ctx);
     let mut total = T::zero_in(&ctx);
     for (zl, al) in z.iter().zip(alpha) {

@@ -43,12 +43,19 @@ impl<T: Field> HermiteData<T> {
         self.start.len()
     }
     /// The data of a curve jet at both ends: `jet[k]` is the k-th derivative.
-    pub fn from_jets(start: &[[T; 3]], end: &[[T; 3]]) -> Self {
-        HermiteData {
-            p_b: start[0].clone(),
-            p_e: end[0].clone(),
-            start: start[1..].to_vec(),
-            end: end[1..].to_vec(),
+    ///
+    /// # Errors
+    /// [`PhHermiteError::Shape`] when a jet is empty (no point) or the two jets differ in
+    /// length.
+    pub fn from_jets(start: &[[T; 3]], end: &[[T; 3]]) -> Result<Self, PhHermiteError> {
+        match (start.split_first(), end.split_first()) {
+            (Some((p_b, start)), Some((p_e, end))) if start.len() == end.len() => Ok(HermiteData {
+                p_b: p_b.clone(),
+                p_e: p_e.clone(),
+                start: start.to_vec(),
+                end: end.to_vec(),
+            }),
+            _ => Err(PhHermiteError::Shape),
         }
     }
     /// Apply x ↦ f(x) to every vector and g to both points.
@@ -196,8 +203,8 @@ pub fn interpolate<T: Real>(
 /// [`interpolate`] with a choice of the rule for the middle control point.
 ///
 /// # Errors
-/// [`PhHermiteError::Shape`] for m = 0 or unequal derivative counts;
-/// [`PhHermiteError::FreeCount`] unless m − 1 τ at each end; [`PhHermiteError::ZeroTangent`]
+/// [`PhHermiteError::Shape`] for m = 0, m above [`super::piecewise::MAX_DERIVATIVES`] or
+/// unequal derivative counts; [`PhHermiteError::FreeCount`] unless m − 1 τ at each end; [`PhHermiteError::ZeroTangent`]
 /// for v_b or v_e = 0 (or no Lemma 2 solution at that end);
 /// [`PhHermiteError::NoStandardForm`] for v_b + v_e = 0.
 pub fn interpolate_with<T: Real>(
@@ -206,7 +213,7 @@ pub fn interpolate_with<T: Real>(
     middle: MiddleRule,
 ) -> Result<PhCurve<T>, PhHermiteError> {
     let m = data.order();
-    if m == 0 || data.end.len() != m {
+    if m == 0 || m > super::piecewise::MAX_DERIVATIVES || data.end.len() != m {
         return Err(PhHermiteError::Shape);
     }
     if free.tau_start.len() != m - 1 || free.tau_end.len() != m - 1 {

@@ -119,8 +119,9 @@ pub fn segment_data<T: Real, C: Curve<T> + ?Sized>(
             segment_jet(curve, &knot(a, b, segments, k), &h, m)
         }))
         .collect();
+    // Every jet holds m + 1 ≥ 1 vectors, so from_jets cannot refuse one.
     (0..segments)
-        .map(|k| HermiteData::from_jets(&jets[k], &jets[k + 1]))
+        .filter_map(|k| HermiteData::from_jets(&jets[k], &jets[k + 1]).ok())
         .collect()
 }
 
@@ -568,7 +569,7 @@ fn segment_at<C: Curve<Float>>(
     let free = free.map(|x| Float::from_rational(x, &bits));
     let h = (b.clone() - &a) / &Float::from_i64(segments as i64, &bits);
     let jet_at = |j: usize| segment_jet(curve, &knot(&a, &b, segments, j), &h, m);
-    let seg = interpolate(&HermiteData::from_jets(&jet_at(k), &jet_at(k + 1)), &free)?;
+    let seg = interpolate(&HermiteData::from_jets(&jet_at(k), &jet_at(k + 1))?, &free)?;
     Ok((seg, knot(&a, &b, segments, k), h))
 }
 

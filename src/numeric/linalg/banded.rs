@@ -15,7 +15,7 @@
 //! column); then x = y − Z (I + Vᵀ Z)⁻¹ Vᵀ y with B y = b and B Z = U (Woodbury), one banded
 //! elimination for all right-hand sides and a small dense solve.
 
-use super::{gauss, Matrix, SingularMatrix};
+use super::{gauss, LinalgError, Matrix};
 use crate::scalar::Field;
 
 /// A square banded matrix.
@@ -57,22 +57,28 @@ impl<T: Field> Banded<T> {
         i < self.n && j < self.n && j + self.lower >= i && j <= i + self.upper
     }
 
-    /// Add v to entry (i, j), which must be inside the band.
-    pub fn add(&mut self, i: usize, j: usize, v: &T) {
-        assert!(self.in_band(i, j), "entry ({i}, {j}) is outside the band");
+    /// Add v to entry (i, j).
+    ///
+    /// # Errors
+    /// [`LinalgError::OutsideBand`] for an entry outside the band (nothing is added).
+    pub fn add(&mut self, i: usize, j: usize, v: &T) -> Result<(), LinalgError> {
+        if !self.in_band(i, j) {
+            return Err(LinalgError::OutsideBand { row: i, col: j });
+        }
         let k = self.at(i, j);
         self.data[k] += v;
+        Ok(())
     }
 
     /// Solve A X = B for every column of `rhs` (n × k) by elimination with partial pivoting.
     ///
     /// # Errors
-    /// [`SingularMatrix`] for the first column whose candidate pivots (the diagonal entry and the
+    /// [`LinalgError`] for the first column whose candidate pivots (the diagonal entry and the
     /// `lower` entries below it, after elimination) are all exactly zero; a nearly singular band
     /// is not detected in floating point.
-    pub fn solve(mut self, mut rhs: Matrix<T>) -> Result<Matrix<T>, SingularMatrix> {
+    pub fn solve(mut self, mut rhs: Matrix<T>) -> Result<Matrix<T>, LinalgError> {
         let n = self.n;
-        assert_eq!(rhs.rows(), n, "right-hand side of the wrong height");
+        gauss::check_shape(n, n, rhs.rows())?;
         for c in 0..n {
             let last_row = (c + self.lower).min(n - 1);
             let last_col = (c + self.lower + self.upper).min(n - 1);
@@ -80,13 +86,18 @@ impl<T: Field> Banded<T> {
             let mut best_abs = self.data[self.at(c, c)].abs();
             for r in c + 1..=last_row {
                 let v = self.data[self.at(r, c)].abs();
-                if v > best_abs {
+                // A rounding heuristic, as in `gauss`: overlapping balls are ordered by their
+                // midpoints, uncounted.
+                let larger = best_abs
+                    .decide_lt(&v)
+                    .unwrap_or_else(|| v.to_f64() > best_abs.to_f64());
+                if larger {
                     best = r;
                     best_abs = v;
                 }
             }
             if best_abs.is_zero() {
-                return Err(SingularMatrix { column: c });
+                return Err(LinalgError::Singular { column: c });
             }
             if best != c {
                 for j in c..=last_col {
@@ -151,28 +162,39 @@ impl<T: Field> Cyclic<T> {
     }
 
     /// Add v to entry (i, j): into the band when inside it, else as a corner entry.
-    pub fn add(&mut self, i: usize, j: usize, v: &T) {
+    ///
+    /// # Errors
+    /// [`LinalgError::OutsideBand`] for an entry outside the n × n matrix.
+    pub fn add(&mut self, i: usize, j: usize, v: &T) -> Result<(), LinalgError> {
+        if i >= self.band.n || j >= self.band.n {
+            return Err(LinalgError::OutsideBand { row: i, col: j });
+        }
         if self.band.in_band(i, j) {
-            self.band.add(i, j, v);
+            self.band.add(i, j, v)?;
         } else if !v.is_zero() {
             self.corners.push((i, j, v.clone()));
         }
+        Ok(())
     }
 
     /// Solve A X = B (Woodbury: one banded elimination and a dense solve of the size of the
     /// number of corner columns).
     ///
     /// # Errors
-    /// [`SingularMatrix`] when the elimination of the band B without its corners, or the dense
+    /// [`LinalgError`] when the elimination of the band B without its corners, or the dense
     /// solve of I + VᵀZ, finds no non-zero pivot in a column (then a column of B or of that small
     /// matrix, not of A): a singular B fails even where A itself is invertible.
-    pub fn solve(self, rhs: Matrix<T>) -> Result<Matrix<T>, SingularMatrix> {
+    pub fn solve(self, rhs: Matrix<T>) -> Result<Matrix<T>, LinalgError> {
         let n = self.band.n;
+        gauss::check_shape(n, n, rhs.rows())?;
         let k = rhs.cols();
+        let Some(ctx) = rhs.entries().first().map(Field::ctx) else {
+            // No equation, or no right-hand side: nothing to solve.
+            return Ok(rhs);
+        };
         let mut columns: Vec<usize> = self.corners.iter().map(|c| c.1).collect();
         columns.sort_unstable();
         columns.dedup();
-        let ctx = rhs[(0, 0)].ctx();
         // [B | U]: the right-hand sides, then one column of U per corner column.
         let m = columns.len();
         let mut stacked = Matrix::zeros(n, k + m, &ctx);
@@ -254,7 +276,7 @@ mod tests {
                         entry(i, j)
                     };
                     dense[(i, j)] = q(v);
-                    system.add(i, j, &q(v));
+                    system.add(i, j, &q(v)).unwrap();
                 }
             }
             let rhs = Matrix::from_fn(n, 2, |i, j| q(entry(j, i) + 1));
@@ -275,8 +297,8 @@ mod tests {
     #[test]
     fn a_singular_band_is_reported() {
         let mut b = Banded::zeros(3, 1, 1, &());
-        b.add(0, 0, &q(1));
-        b.add(1, 0, &q(1));
+        b.add(0, 0, &q(1)).unwrap();
+        b.add(1, 0, &q(1)).unwrap();
         let rhs = Matrix::from_fn(3, 1, |_, _| q(1));
         assert!(b.solve(rhs).is_err());
     }

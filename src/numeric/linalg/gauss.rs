@@ -7,13 +7,47 @@
 use super::Matrix;
 use crate::scalar::Field;
 
-/// The matrix has no inverse (in exact arithmetic), or every candidate pivot of some column
-/// was exactly zero in floating point.
+/// Why a linear system could not be solved or built.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("the matrix is singular (no non-zero pivot in column {column})")]
-pub struct SingularMatrix {
-    /// The column where no pivot was found.
-    pub column: usize,
+pub enum LinalgError {
+    /// The matrix has no inverse (in exact arithmetic), or every candidate pivot of some
+    /// column was exactly zero in floating point.
+    #[error("the matrix is singular (no non-zero pivot in column {column})")]
+    Singular {
+        /// The column where no pivot was found.
+        column: usize,
+    },
+    /// The matrix is not square, or the right-hand side does not have one row per equation.
+    #[error("a {rows}×{cols} system with a right-hand side of {rhs} rows: the matrix must be square and the right-hand side as tall")]
+    Shape {
+        /// Rows of the matrix.
+        rows: usize,
+        /// Columns of the matrix.
+        cols: usize,
+        /// Rows of the right-hand side.
+        rhs: usize,
+    },
+    /// The determinant of a matrix without entries (1) has no context to be made in.
+    #[error("the matrix is empty")]
+    Empty,
+    /// An entry added outside the matrix or, for a [`super::banded::Banded`] matrix,
+    /// outside its band.
+    #[error("entry ({row}, {col}) lies outside the stored matrix")]
+    OutsideBand {
+        /// Row of the entry.
+        row: usize,
+        /// Column of the entry.
+        col: usize,
+    },
+}
+
+/// The shape check of every solver: `a` square and `rhs_rows` tall.
+pub(crate) fn check_shape(rows: usize, cols: usize, rhs: usize) -> Result<(), LinalgError> {
+    if rows == cols && rhs == rows {
+        Ok(())
+    } else {
+        Err(LinalgError::Shape { rows, cols, rhs })
+    }
 }
 
 /// Eliminate in place on `a` (n × n) and `b` (n × k); on success `b` holds `A⁻¹B`.
@@ -23,12 +57,9 @@ fn eliminate<T: Field>(
     a: &mut Matrix<T>,
     b: &mut Matrix<T>,
     pivots: &mut Vec<T>,
-) -> Result<bool, SingularMatrix> {
+) -> Result<bool, LinalgError> {
     let n = a.rows();
-    assert!(
-        a.is_square() && b.rows() == n,
-        "elimination needs a square system"
-    );
+    check_shape(n, a.cols(), b.rows())?;
     let mut swapped_odd = false;
     for col in 0..n {
         // Largest magnitude pivot: exactness does not need it, floating point does.
@@ -47,7 +78,7 @@ fn eliminate<T: Field>(
             }
         }
         if best_abs.is_zero() {
-            return Err(SingularMatrix { column: col });
+            return Err(LinalgError::Singular { column: col });
         }
         if best != col {
             swap_rows(a, best, col);
@@ -88,25 +119,30 @@ fn swap_rows<T: Field>(m: &mut Matrix<T>, i: usize, j: usize) {
     }
 }
 
-/// The solution x of `A x = b`.
+/// The solution x of `A x = b` (empty for a 0 × 0 system).
 ///
 /// # Errors
-/// [`SingularMatrix`] for the first column in which elimination finds only exactly zero
-/// candidate pivots: a singular `a` in exact arithmetic; in floating point only when rounding
-/// leaves exact zeros, not for a merely ill-conditioned matrix.
-pub fn solve<T: Field>(a: &Matrix<T>, b: &[T]) -> Result<Vec<T>, SingularMatrix> {
+/// [`LinalgError::Singular`] for the first column in which elimination finds only exactly
+/// zero candidate pivots: a singular `a` in exact arithmetic; in floating point only when
+/// rounding leaves exact zeros, not for a merely ill-conditioned matrix.
+/// [`LinalgError::Shape`] when `a` is not square or `b` is not as long as `a` is tall.
+pub fn solve<T: Field>(a: &Matrix<T>, b: &[T]) -> Result<Vec<T>, LinalgError> {
     let mut work = a.clone();
     let mut rhs = Matrix::from_fn(b.len(), 1, |i, _| b[i].clone());
     eliminate(&mut work, &mut rhs, &mut Vec::new())?;
     Ok(rhs.entries().to_vec())
 }
 
-/// The inverse `A⁻¹`.
+/// The inverse `A⁻¹` (the 0 × 0 matrix is its own inverse).
 ///
 /// # Errors
-/// [`SingularMatrix`] as [`solve`].
-pub fn inverse<T: Field>(a: &Matrix<T>) -> Result<Matrix<T>, SingularMatrix> {
-    let ctx = a[(0, 0)].ctx();
+/// [`LinalgError::Singular`] as [`solve`]; [`LinalgError::Shape`] for a matrix that
+/// is not square.
+pub fn inverse<T: Field>(a: &Matrix<T>) -> Result<Matrix<T>, LinalgError> {
+    check_shape(a.rows(), a.cols(), a.rows())?;
+    let Some(ctx) = a.entries().first().map(Field::ctx) else {
+        return Ok(a.clone());
+    };
     let mut work = a.clone();
     let mut rhs = Matrix::identity(a.rows(), &ctx);
     eliminate(&mut work, &mut rhs, &mut Vec::new())?;
@@ -114,12 +150,19 @@ pub fn inverse<T: Field>(a: &Matrix<T>) -> Result<Matrix<T>, SingularMatrix> {
 }
 
 /// The determinant (zero for a singular matrix).
-pub fn determinant<T: Field>(a: &Matrix<T>) -> T {
-    let ctx = a[(0, 0)].ctx();
+///
+/// # Errors
+/// [`LinalgError::Shape`] for a matrix that is not square, [`LinalgError::Empty`]
+/// for the 0 × 0 matrix.
+pub fn determinant<T: Field>(a: &Matrix<T>) -> Result<T, LinalgError> {
+    check_shape(a.rows(), a.cols(), a.rows())?;
+    let Some(ctx) = a.entries().first().map(Field::ctx) else {
+        return Err(LinalgError::Empty);
+    };
     let mut work = a.clone();
     let mut rhs = Matrix::zeros(a.rows(), 0, &ctx);
     let mut pivots = Vec::new();
-    match eliminate(&mut work, &mut rhs, &mut pivots) {
+    Ok(match eliminate(&mut work, &mut rhs, &mut pivots) {
         Err(_) => T::zero_in(&ctx),
         Ok(odd) => {
             let mut det = T::one_in(&ctx);
@@ -132,13 +175,16 @@ pub fn determinant<T: Field>(a: &Matrix<T>) -> T {
                 det
             }
         }
-    }
+    })
 }
 
 /// The pivots d₁…d_M of the LDLᵀ factorisation of a symmetric matrix (without pivoting).
 /// The matrix is positive definite exactly when every pivot is positive; `None` if a zero
-/// pivot stops the factorisation.
+/// pivot stops the factorisation, or the matrix is not square.
 pub fn ldl_pivots<T: Field>(a: &Matrix<T>) -> Option<Vec<T>> {
+    if !a.is_square() {
+        return None;
+    }
     let n = a.rows();
     let mut work = a.clone();
     let mut pivots = Vec::with_capacity(n);
@@ -186,14 +232,14 @@ mod tests {
     #[test]
     fn determinant_sign_and_singularity() {
         let a = Matrix::from_rows(vec![vec![q(0), q(1)], vec![q(1), q(0)]]);
-        assert_eq!(determinant(&a), q(-1));
+        assert_eq!(determinant(&a), Ok(q(-1)));
         let s = Matrix::from_rows(vec![vec![q(1), q(2)], vec![q(2), q(4)]]);
-        assert_eq!(determinant(&s), q(0));
-        assert_eq!(inverse(&s), Err(SingularMatrix { column: 1 }));
+        assert_eq!(determinant(&s), Ok(q(0)));
+        assert_eq!(inverse(&s), Err(LinalgError::Singular { column: 1 }));
         // det of the Hilbert matrix of order 3 is 1/2160.
         assert_eq!(
             determinant(&hilbert(3)),
-            BigRational::new(1.into(), 2160.into())
+            Ok(BigRational::new(1.into(), 2160.into()))
         );
     }
 

@@ -10,8 +10,11 @@ use super::{ldl_pivots, Matrix};
 use crate::scalar::Field;
 
 /// The number of eigenvalues of the symmetric `a` below `shift`; `None` when a zero pivot
-/// stops the factorisation of a − shift·I (then a nearby shift decides).
+/// stops the factorisation of a − shift·I (then a nearby shift decides), or `a` is not square.
 pub fn eigenvalues_below<T: Field>(a: &Matrix<T>, shift: &T) -> Option<usize> {
+    if !a.is_square() {
+        return None;
+    }
     let n = a.rows();
     let shifted = Matrix::from_fn(n, n, |i, j| {
         if i == j {
@@ -32,8 +35,12 @@ pub struct IntegerSymmetric {
 }
 
 impl IntegerSymmetric {
-    /// The matrix `a` (exact rationals) as integers over their common denominator.
-    pub fn new(a: &Matrix<crate::scalar::BigRational>) -> Self {
+    /// The matrix `a` (exact rationals) as integers over their common denominator; `None`
+    /// for a matrix that is not square.
+    pub fn new(a: &Matrix<crate::scalar::BigRational>) -> Option<Self> {
+        if !a.is_square() {
+            return None;
+        }
         let n = a.rows();
         let gmp: Vec<Vec<rug::Rational>> = (0..n)
             .map(|i| {
@@ -54,7 +61,7 @@ impl IntegerSymmetric {
                     .collect()
             })
             .collect();
-        IntegerSymmetric { entries, scale }
+        Some(IntegerSymmetric { entries, scale })
     }
 
     /// The number of eigenvalues below the rational `shift`: the sign changes along the
@@ -159,7 +166,7 @@ mod tests {
         ]);
         let a = r.mul(&d).mul(&r.transpose());
         assert_eq!(eigenvalues_below(&a, &q(5, 1)), Some(2));
-        let fast = IntegerSymmetric::new(&a);
+        let fast = IntegerSymmetric::new(&a).unwrap();
         let estimate = |x: f64| rug::Float::with_val(64, x);
         let contains = |(lo, hi): (rug::Rational, rug::Rational), v: i32| lo <= v && v < hi;
         assert!(contains(

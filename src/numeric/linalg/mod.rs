@@ -22,7 +22,7 @@ pub mod svd;
 use crate::scalar::Field;
 use std::ops::{Index, IndexMut};
 
-pub use gauss::{determinant, inverse, ldl_pivots, solve, SingularMatrix};
+pub use gauss::{determinant, inverse, ldl_pivots, solve, LinalgError};
 pub use svd::{condition_number, singular_values};
 
 /// A dense `rows × cols` matrix stored row by row.
@@ -53,6 +53,12 @@ impl<T: Field> Matrix<T> {
     }
 
     /// A matrix from its rows, which must all have the same length.
+    ///
+    /// # Panics
+    /// For rows of different lengths. Shapes are the calling program's logic, not data, so
+    /// `Matrix` treats a mismatch as nalgebra and ndarray do: the solvers ([`solve`],
+    /// [`inverse`], [`banded`]) check shapes and return [`LinalgError`], the building blocks
+    /// (`from_rows`, `mul`, `mul_vec`, indexing) panic.
     pub fn from_rows(rows: Vec<Vec<T>>) -> Self {
         let cols = rows.first().map_or(0, Vec::len);
         assert!(
@@ -101,7 +107,10 @@ impl<T: Field> Matrix<T> {
         Self::from_fn(self.cols, self.rows, |i, j| self[(j, i)].clone())
     }
 
-    /// The product `self · other`. Panics if the inner dimensions differ or are zero.
+    /// The product `self · other`.
+    ///
+    /// # Panics
+    /// If the inner dimensions differ or `self` has no entry (see [`Matrix::from_rows`]).
     pub fn mul(&self, other: &Matrix<T>) -> Matrix<T> {
         assert_eq!(self.cols, other.rows, "inner dimensions differ");
         let ctx = self.data[0].ctx();
@@ -114,7 +123,10 @@ impl<T: Field> Matrix<T> {
         })
     }
 
-    /// The product `self · x`. Panics if the lengths differ or are zero.
+    /// The product `self · x`.
+    ///
+    /// # Panics
+    /// If the lengths differ or are zero (see [`Matrix::from_rows`]).
     pub fn mul_vec(&self, x: &[T]) -> Vec<T> {
         assert_eq!(
             self.cols,

@@ -11,14 +11,20 @@
 //! paper 000 is exactly such a matrix, its rows scaled by n!/(n−j)!/(t₁−t₀)^j.
 
 use super::Matrix;
-use crate::scalar::Real;
+use crate::scalar::{Field, Real};
 
-/// Jacobi stopped before convergence (after this many sweeps).
+/// Why the singular values could not be computed.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("one-sided Jacobi did not converge in {sweeps} sweeps")]
-pub struct NoConvergence {
-    /// The number of Jacobi sweeps used.
-    pub sweeps: usize,
+pub enum NoConvergence {
+    /// Jacobi stopped before convergence (after this many sweeps).
+    #[error("one-sided Jacobi did not converge in {sweeps} sweeps")]
+    Sweeps {
+        /// The number of Jacobi sweeps used.
+        sweeps: usize,
+    },
+    /// A matrix with no entry has no condition number (and no context to make one in).
+    #[error("the matrix is empty")]
+    Empty,
 }
 
 const MAX_SWEEPS: usize = 60;
@@ -27,8 +33,12 @@ const MAX_SWEEPS: usize = 60;
 ///
 /// # Errors
 /// [`NoConvergence`] when some pair of rows is still not orthogonal to the tolerance after
-/// 60 sweeps (non-finite entries, for instance).
+/// 60 sweeps (non-finite entries, for instance). An empty matrix has no singular value
+/// (`Ok` of an empty list).
 pub fn singular_values<T: Real>(a: &Matrix<T>) -> Result<Vec<T>, NoConvergence> {
+    let Some(ctx) = a.entries().first().map(Field::ctx) else {
+        return Ok(Vec::new());
+    };
     // Orthogonalise the shorter side: rows of A when rows ≤ cols, else rows of Aᵀ.
     let work = if a.rows() <= a.cols() {
         a.clone()
@@ -37,7 +47,6 @@ pub fn singular_values<T: Real>(a: &Matrix<T>) -> Result<Vec<T>, NoConvergence> 
     };
     let n = work.rows();
     let mut rows: Vec<Vec<T>> = (0..n).map(|i| work.row(i).to_vec()).collect();
-    let ctx = a[(0, 0)].ctx();
     let tolerance = T::epsilon(&ctx) * &T::from_i64(work.cols() as i64, &ctx);
     let one = T::one_in(&ctx);
     let zero = T::zero_in(&ctx);
@@ -93,18 +102,26 @@ pub fn singular_values<T: Real>(a: &Matrix<T>) -> Result<Vec<T>, NoConvergence> 
             return Ok(sigma);
         }
     }
-    Err(NoConvergence { sweeps: MAX_SWEEPS })
+    Err(NoConvergence::Sweeps { sweeps: MAX_SWEEPS })
 }
 
-/// The spectral condition number κ₂ = σ_max/σ_min (infinite when σ_min = 0).
+/// The spectral condition number κ₂ = σ_max/σ_min (infinite when σ_min = 0, the zero
+/// matrix included: +∞ in f64 and MPFR, the unbounded ball for balls).
 ///
 /// # Errors
-/// [`NoConvergence`] as [`singular_values`].
+/// [`NoConvergence::Sweeps`] as [`singular_values`]; [`NoConvergence::Empty`] for a matrix
+/// without entries.
 pub fn condition_number<T: Real>(a: &Matrix<T>) -> Result<T, NoConvergence> {
     let sigma = singular_values(a)?;
-    let max = sigma[0].clone();
-    let min = sigma[sigma.len() - 1].clone();
-    Ok(max / &min)
+    let (Some(max), Some(min)) = (sigma.first(), sigma.last()) else {
+        return Err(NoConvergence::Empty);
+    };
+    if min.is_zero() {
+        // σ_max/0, not 0/0 = NaN for the zero matrix.
+        let one = T::one_in(&min.ctx());
+        return Ok(one / min);
+    }
+    Ok(max.clone() / min)
 }
 
 #[cfg(test)]

@@ -199,7 +199,7 @@ pub fn figure3() -> String {
     let c = crate::curve::ExprCurve::parse("[1.5*sin(7.2*t), 0, exp(cos(1.8*t))]")
         .expect("planar curve")
         .compile::<f64>(&());
-    let data = HermiteData::from_jets(&c.jet(&0.0, 4), &c.jet(&1.0, 4));
+    let data = HermiteData::from_jets(&c.jet(&0.0, 4), &c.jet(&1.0, 4)).expect("two jets of 5");
     let free = FreeParameters::zero(4, &());
     let sample = |curve: &crate::algo::ph::PhCurve<f64>| {
         let pts = curve.control_points();
