@@ -2,9 +2,10 @@
 //! a documented answer), never panic, and never return `Ok` holding NaN.
 //!
 //! Every call found by trying the library as an engineer would. Struct literals of
-//! `Bernstein`, `BezierCurve`, `PiecewisePh`, `PiecewiseBernstein`, `GerbsPath`, `SplineFit`
-//! and `NaturalSplineCurve` no longer compile (their fields are private); `HermiteData` and
-//! `PathSpec` keep public fields and are re-checked where they are used. The one panic left
+//! `Bernstein`, `BezierCurve`, `PiecewisePh`, `PiecewiseBernstein`, `GerbsPath`, `SplineFit`,
+//! `NaturalSplineCurve`, the Hermite data of paper 000 and the data splines no longer compile
+//! (their fields are private); PH Hermite data and `PathSpec`, option-like records, keep
+//! public fields and are re-checked where they are used. The one panic left
 //! by design is `from_ratio(n, 0)` in the exact types (as `i64` division by zero), whose
 //! fallible form `try_from_ratio` is tested here.
 
@@ -123,14 +124,19 @@ fn bernstein_polynomials_need_points_and_an_interval() {
     let q = |n: i64| BigRational::from_integer(n.into());
     assert!(no_panic("t0 = t1", || Bernstein::new(vec![q(1)], q(1), q(1))).is_err());
     assert!(no_panic("NaN", || Bernstein::new(vec![1.0], 0.0, f64::NAN)).is_err());
-    // A struct literal of Hermite data with no points is refused when solved.
-    let data = HermiteData::<f64> {
-        start: vec![],
-        end: vec![],
-        t0: 0.0,
-        t1: 1.0,
-    };
-    assert!(no_panic("solve of empty data", || data.solve()).is_err());
+    // Hermite data with no points, or of unequal lengths, are refused (their fields are
+    // private: no struct literal skips `new`).
+    assert!(no_panic("empty data", || HermiteData::<f64>::new(
+        vec![],
+        vec![],
+        0.0,
+        1.0
+    ))
+    .is_err());
+    let r = no_panic("ragged data", || {
+        HermiteData::new(vec![0.0, 1.0], vec![1.0], 0.0, 1.0)
+    });
+    assert!(r.is_err());
 }
 
 #[test]

@@ -43,10 +43,10 @@ proptest! {
         prop_assert_eq!(curve.degree(), 2 * data.derivatives() + 1);
         let a = curve.to_power_basis();
         for j in 0..=data.derivatives() {
-            prop_assert_eq!(&power_basis_derivative(&a, j, &q(0, 1), &curve.duration()), &data.start[j]);
-            prop_assert_eq!(&power_basis_derivative(&a, j, &q(1, 1), &curve.duration()), &data.end[j]);
-            prop_assert_eq!(&curve.derivative_at_start(j), &data.start[j]);
-            prop_assert_eq!(&curve.derivative_at_end(j), &data.end[j]);
+            prop_assert_eq!(&power_basis_derivative(&a, j, &q(0, 1), &curve.duration()), &data.start()[j]);
+            prop_assert_eq!(&power_basis_derivative(&a, j, &q(1, 1), &curve.duration()), &data.end()[j]);
+            prop_assert_eq!(&curve.derivative_at_start(j), &data.start()[j]);
+            prop_assert_eq!(&curve.derivative_at_end(j), &data.end()[j]);
         }
     }
 
@@ -55,7 +55,7 @@ proptest! {
     #[test]
     fn hermite_reversal(data in hermite_data()) {
         let flip = |v: &[BigRational]| v.iter().enumerate().map(|(j, x)| if j % 2 == 1 { -x.clone() } else { x.clone() }).collect::<Vec<_>>();
-        let reversed = HermiteData::new(flip(&data.end), flip(&data.start), data.t0.clone(), data.t1.clone()).unwrap();
+        let reversed = HermiteData::new(flip(data.end()), flip(data.start()), data.interval().0.clone(), data.interval().1.clone()).unwrap();
         let mut p = data.solve().unwrap().into_control_points();
         p.reverse();
         prop_assert_eq!(reversed.solve().unwrap().into_control_points(), p);

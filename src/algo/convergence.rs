@@ -287,7 +287,7 @@ macro_rules! spline_study_curve {
             }
             fn smoothness(&self) -> Smoothness {
                 Smoothness::Piecewise {
-                    continuity: self.degree.saturating_sub(1),
+                    continuity: self.degree().saturating_sub(1),
                 }
             }
             fn regularity(

@@ -204,7 +204,8 @@ fn check_budget(r: &Request, curve: &Parsed, o: &Options) -> Result<(), InputErr
     let (per_segment, knots) = match curve {
         Parsed::Expression(_) => (if proven { 1.7e-3 } else { 6e-4 }, 0.0),
         Parsed::Closed(s, rows) => {
-            let period = s.period_end - s.times[0];
+            let (start, end) = s.domain();
+            let period = end - start;
             (
                 if proven { 3.4e-3 } else { 7e-4 },
                 *rows as f64 * (width / period).max(1.0),

@@ -40,6 +40,7 @@
 //! assert_eq!(jet[1][0], BigRational::new(9.into(), 2.into())); // 3·(¼·1 + ½·2 + ¼·1)
 //! ```
 
+use super::Curve;
 use crate::numeric::quadrature::{default_tolerance, TanhSinh};
 use crate::scalar::{Field, Real};
 
@@ -55,6 +56,21 @@ pub enum CurveError {
         start: f64,
         /// The end of the domain.
         end: f64,
+    },
+    /// A domain that is not an interval t₀ < t₁ of finite numbers.
+    #[error("domain: [{start}, {end}] is not an interval t0 < t1 of finite numbers")]
+    Domain {
+        /// The start asked for.
+        start: f64,
+        /// The end asked for.
+        end: f64,
+    },
+    /// The curve has no finite value at this parameter (an expression outside its real
+    /// domain, such as sqrt(t − 10) at t < 10).
+    #[error("t: the curve is not finite at t = {t}")]
+    NotFinite {
+        /// The parameter asked for.
+        t: f64,
     },
     /// The frame is not defined at this parameter (zero speed).
     #[error("t: the frame is not defined at t = {t} ({reason})")]
@@ -118,6 +134,83 @@ pub fn check_domain<T: Field>(t: &T, (start, end): (&T, &T)) -> Result<(), Curve
         })
     }
 }
+
+/// A curve given by its jet ([`Curve`]: an expression, a data spline) on a domain [t₀, t₁],
+/// as a [`ParamCurve`] of points `[T; 3]`: what makes the curves the paper checks read
+/// (`ExprCurve::compile`, [`crate::curve::spline`]'s splines through
+/// `ClampedSpline::on` / `PeriodicSpline::on`) usable through the one interface.
+///
+/// # Examples
+/// ```
+/// use trajverify::curve::parametric::{CurveOn, ParamCurve, ParamCurveArclen};
+/// use trajverify::curve::ExprCurve;
+///
+/// let helix = ExprCurve::parse("[cos(t), sin(t), 0.2*t]").unwrap().compile::<f64>(&());
+/// let on = CurveOn::new(helix, 0.0, 6.0).unwrap();
+/// let length = on.length().unwrap();
+/// assert!((length - 6.0 * 1.04f64.sqrt()).abs() < 1e-12);
+/// assert!(on.point(&7.0).is_err());
+/// ```
+#[derive(Clone, Debug)]
+pub struct CurveOn<C, T> {
+    curve: C,
+    domain: (T, T),
+}
+
+impl<C: Curve<T>, T: Real> CurveOn<C, T> {
+    /// `curve` on [start, end].
+    ///
+    /// # Errors
+    /// [`CurveError::Domain`] unless start < end, both finite.
+    pub fn new(curve: C, start: T, end: T) -> Result<Self, CurveError> {
+        if !(start.is_finite() && end.is_finite() && start.decide_lt(&end) == Some(true)) {
+            return Err(CurveError::Domain {
+                start: start.to_f64(),
+                end: end.to_f64(),
+            });
+        }
+        Ok(CurveOn::of_domain(curve, start, end))
+    }
+
+    /// `curve` on a domain its maker knows to be an interval.
+    pub(crate) fn of_domain(curve: C, start: T, end: T) -> Self {
+        CurveOn {
+            curve,
+            domain: (start, end),
+        }
+    }
+
+    /// The curve.
+    pub fn curve(&self) -> &C {
+        &self.curve
+    }
+}
+
+impl<C: Curve<T>, T: Real> ParamCurve<T, 3> for CurveOn<C, T> {
+    fn domain(&self) -> (T, T) {
+        self.domain.clone()
+    }
+    fn derivatives(&self, t: &T, order: usize) -> Result<Vec<[T; 3]>, CurveError> {
+        check_domain(t, (&self.domain.0, &self.domain.1))?;
+        let jet = self.curve.jet(t, order);
+        if jet.iter().flatten().any(|x| !x.is_finite()) {
+            return Err(CurveError::NotFinite { t: t.to_f64() });
+        }
+        Ok(jet)
+    }
+    fn breakpoints(&self) -> Vec<T> {
+        let (start, end) = &self.domain;
+        let ctx = start.ctx();
+        self.curve
+            .breakpoints(start.to_f64(), end.to_f64())
+            .into_iter()
+            .map(|b| T::from_f64(b, &ctx))
+            .filter(|b| b > start && b < end)
+            .collect()
+    }
+}
+
+impl<C: Curve<T>, T: Real> ParamCurveArclen<T, 3> for CurveOn<C, T> {}
 
 /// |v| of a point of any dimension.
 pub fn norm<T: Real, const D: usize>(v: &[T; D]) -> T {

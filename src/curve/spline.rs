@@ -28,6 +28,7 @@
 //! the knots. The proven enclosures of `curve::enclosure` split their pieces at the knots and
 //! add the sum to their Taylor remainders, which otherwise hold only within one piece.
 
+use super::parametric::CurveOn;
 use super::Curve;
 use crate::numeric::linalg::banded::{Banded, Cyclic};
 use crate::numeric::linalg::Matrix;
@@ -41,13 +42,13 @@ const FIT_BITS: u32 = 128;
 #[derive(Clone, Debug)]
 pub struct PeriodicSpline {
     /// Degree p (odd).
-    pub degree: usize,
+    degree: usize,
     /// Data times t_0 < … < t_{N−1}, and the period end t_N = t_0 + T.
-    pub times: Vec<f64>,
+    times: Vec<f64>,
     /// t_N = t_0 + T, the end of the period.
-    pub period_end: f64,
+    period_end: f64,
     /// B-spline coefficients, one per data time.
-    pub coefficients: Vec<[f64; 3]>,
+    coefficients: Vec<[f64; 3]>,
 }
 
 /// Why a spline could not be fitted.
@@ -321,6 +322,35 @@ fn ders_basis_funs<T: Field>(
     ders
 }
 
+impl PeriodicSpline {
+    /// The degree p (odd).
+    pub fn degree(&self) -> usize {
+        self.degree
+    }
+
+    /// The data times t_0 < … < t_{N−1}.
+    pub fn times(&self) -> &[f64] {
+        &self.times
+    }
+
+    /// The B-spline coefficients, one per data time.
+    pub fn coefficients(&self) -> &[[f64; 3]] {
+        &self.coefficients
+    }
+
+    /// One period [t_0, t_N], t_N = t_0 + T.
+    pub fn domain(&self) -> (f64, f64) {
+        (self.times[0], self.period_end)
+    }
+
+    /// One period of the spline as a [`ParamCurve`](crate::curve::parametric::ParamCurve)
+    /// of t on [`PeriodicSpline::domain`], evaluated in `T`.
+    pub fn on<T: Real>(&self, ctx: &T::Ctx) -> CurveOn<&Self, T> {
+        let (start, end) = self.domain();
+        CurveOn::of_domain(self, T::from_f64(start, ctx), T::from_f64(end, ctx))
+    }
+}
+
 impl<T: Real> Curve<T> for PeriodicSpline {
     fn jet(&self, t: &T, order: usize) -> Vec<[T; 3]> {
         let (first, ders) = self.basis_derivatives(t, order);
@@ -412,11 +442,11 @@ fn combine<'a, T: Real>(
 #[derive(Clone, Debug)]
 pub struct ClampedSpline {
     /// Degree p.
-    pub degree: usize,
+    degree: usize,
     /// The knot vector u_0 … u_{N+p} (N data points).
-    pub knots: Vec<f64>,
+    knots: Vec<f64>,
     /// B-spline coefficients, one per data point.
-    pub coefficients: Vec<[f64; 3]>,
+    coefficients: Vec<[f64; 3]>,
 }
 
 impl ClampedSpline {
@@ -471,6 +501,24 @@ impl ClampedSpline {
             .map_err(|_| SplineError::Singular)?;
         spline.coefficients = rounded_rows(&c);
         Ok(spline)
+    }
+
+    /// The degree p.
+    pub fn degree(&self) -> usize {
+        self.degree
+    }
+
+    /// The B-spline coefficients, one per data point.
+    pub fn coefficients(&self) -> &[[f64; 3]] {
+        &self.coefficients
+    }
+
+    /// The spline as a [`ParamCurve`](crate::curve::parametric::ParamCurve) of t on
+    /// [`ClampedSpline::domain`], evaluated in `T` (the coefficients are doubles, exact in
+    /// every number type with at least 53 bits).
+    pub fn on<T: Real>(&self, ctx: &T::Ctx) -> CurveOn<&Self, T> {
+        let (start, end) = self.domain();
+        CurveOn::of_domain(self, T::from_f64(start, ctx), T::from_f64(end, ctx))
     }
 
     /// The data's time range [t_0, t_{N−1}].

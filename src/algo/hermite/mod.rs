@@ -85,13 +85,13 @@ pub enum HermiteError {
 #[derive(Clone, Debug, PartialEq)]
 pub struct HermiteData<T> {
     /// x₀, x₀′, …, x₀⁽ᵐ⁾ at t₀.
-    pub start: Vec<T>,
+    start: Vec<T>,
     /// x₁, x₁′, …, x₁⁽ᵐ⁾ at t₁.
-    pub end: Vec<T>,
+    end: Vec<T>,
     /// The start of the interval.
-    pub t0: T,
+    t0: T,
     /// The end of the interval.
-    pub t1: T,
+    t1: T,
 }
 
 impl<T: Field> HermiteData<T> {
@@ -124,9 +124,31 @@ impl<T: Field> HermiteData<T> {
         Ok(())
     }
 
+    /// Data whose shape the caller built right (equal non-empty lengths, t₀ < t₁): the
+    /// paper checks' constants and random problems, which `new` would only re-check.
+    pub(crate) fn new_unchecked(start: Vec<T>, end: Vec<T>, t0: T, t1: T) -> Self {
+        debug_assert!(!start.is_empty() && start.len() == end.len());
+        HermiteData { start, end, t0, t1 }
+    }
+
     /// m, the highest derivative constrained at each end.
     pub fn derivatives(&self) -> usize {
         self.start.len() - 1
+    }
+
+    /// x₀, x₀′, …, x₀⁽ᵐ⁾ at t₀.
+    pub fn start(&self) -> &[T] {
+        &self.start
+    }
+
+    /// x₁, x₁′, …, x₁⁽ᵐ⁾ at t₁.
+    pub fn end(&self) -> &[T] {
+        &self.end
+    }
+
+    /// The interval (t₀, t₁), t₀ < t₁.
+    pub fn interval(&self) -> (&T, &T) {
+        (&self.t0, &self.t1)
     }
 
     /// The vector H of Eq. 11.

@@ -21,12 +21,7 @@ fn random_problem(rng: &mut SplitMix64, m: usize) -> HermiteData<Q> {
     let t0 = rng.rational();
     let t1 = t0.clone() + rng.positive();
     // The interval is non-empty by construction, so `new` cannot fail here.
-    HermiteData {
-        start: rng.rationals(m + 1),
-        end: rng.rationals(m + 1),
-        t0,
-        t1,
-    }
+    HermiteData::new_unchecked(rng.rationals(m + 1), rng.rationals(m + 1), t0, t1)
 }
 
 /// How many boundary conditions of `data` the curve `b` violates, judged by the
@@ -36,8 +31,8 @@ fn violated_conditions(data: &HermiteData<Q>, b: &Bernstein<Q>) -> usize {
     let width = b.duration();
     let mut bad = 0;
     for j in 0..=data.derivatives() {
-        bad += (power_basis_derivative(&a, j, &q(0), &width) != data.start[j]) as usize;
-        bad += (power_basis_derivative(&a, j, &q(1), &width) != data.end[j]) as usize;
+        bad += (power_basis_derivative(&a, j, &q(0), &width) != data.start()[j]) as usize;
+        bad += (power_basis_derivative(&a, j, &q(1), &width) != data.end()[j]) as usize;
     }
     bad
 }
@@ -77,7 +72,12 @@ pub fn eq18_vector() -> Outcome {
     let mut count = 0;
     for m in 0..=20 {
         let data = random_problem(&mut rng, m);
-        let a = transform_matrix(m, &data.t0, &data.t1, TransformKind::Transform);
+        let a = transform_matrix(
+            m,
+            data.interval().0,
+            data.interval().1,
+            TransformKind::Transform,
+        );
         let solved = solve(&a, &data.boundary_vector());
         let mapped = data.solve().map(|b| b.into_control_points());
         count += 1;
@@ -320,8 +320,8 @@ pub fn degree_elevation() -> Outcome {
             cases += 1;
             let same_curve = elevated.to_power_basis() == base;
             let meets = (0..=m).all(|j| {
-                elevated.derivative_at_start(j) == data.start[j]
-                    && elevated.derivative_at_end(j) == data.end[j]
+                elevated.derivative_at_start(j) == data.start()[j]
+                    && elevated.derivative_at_end(j) == data.end()[j]
             });
             bad += (!same_curve || !meets || violated_conditions(&data, &elevated) > 0) as usize;
         }
@@ -370,12 +370,12 @@ pub fn fig2(duration: i64, printed: &str) -> (Outcome, Bernstein<Q>) {
             .iter()
             .zip(curve.control_points())
             .all(|(p, c)| p.as_ref() == Some(c));
-    let h = HermiteData {
-        start: vec![q(0), q(0), q(0)],
-        end: vec![q(1), q(1), q(0)],
-        t0: q(0),
-        t1: q(duration),
-    };
+    let h = HermiteData::new_unchecked(
+        vec![q(0), q(0), q(0)],
+        vec![q(1), q(1), q(0)],
+        q(0),
+        q(duration),
+    );
     let violated = violated_conditions(&h, &curve);
     let verdict = match (equal, violated) {
         (_, v) if v > 0 => Verdict::Failed,

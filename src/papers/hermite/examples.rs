@@ -352,11 +352,13 @@ pub fn turn_claims(m: &[TurnMetrics]) -> [Outcome; 3] {
 pub fn landing_data() -> [HermiteData<BigRational>; 3] {
     let q = |v: i64| BigRational::from_integer(v.into());
     let (t0, t1) = (q(0), q(60));
-    let mk = |start: [i64; 3], end: [i64; 3]| HermiteData {
-        start: start.into_iter().map(q).collect(),
-        end: end.into_iter().map(q).collect(),
-        t0: t0.clone(),
-        t1: t1.clone(),
+    let mk = |start: [i64; 3], end: [i64; 3]| {
+        HermiteData::new_unchecked(
+            start.into_iter().map(q).collect(),
+            end.into_iter().map(q).collect(),
+            t0.clone(),
+            t1.clone(),
+        )
     };
     [
         mk([0, -60, 0], [0, 55, 0]),
@@ -391,8 +393,8 @@ pub fn landing() -> Option<LandingMetrics> {
             let one = BigRational::from_integer(1.into());
             conditions += 2;
             violated +=
-                (power_basis_derivative(&a, j, &zero, &b.duration()) != d.start[j]) as usize;
-            violated += (power_basis_derivative(&a, j, &one, &b.duration()) != d.end[j]) as usize;
+                (power_basis_derivative(&a, j, &zero, &b.duration()) != d.start()[j]) as usize;
+            violated += (power_basis_derivative(&a, j, &one, &b.duration()) != d.end()[j]) as usize;
         }
     }
     let c = to_f64_curve(&curve);
