@@ -7,8 +7,12 @@
 //! agreeing. Each operation rounds the midpoint to nearest (MPFR reports whether it was
 //! exact) and adds to the propagated radius a bound on that rounding error, one ulp of the
 //! result, 2^(e−p) for a result in [2^(e−1), 2^e). The radius arithmetic itself runs in f64
-//! round-to-nearest and steps each result one double up, which bounds it from
-//! above; an f64 radius has ample range for enclosures of numbers between 1e-300 and 1e300.
+//! round-to-nearest: the four arithmetic operations (and the fused multiply-add) evaluate
+//! their whole radius formula to nearest and multiply it once by 1 + 2⁻⁴⁸, which bounds the
+//! few roundings inside from above (`bound`); the rarer functions step each intermediate
+//! result one double up. |m| is bounded from the midpoint's leading limb, 2^k from its bits,
+//! and the midpoint is computed in place: an operation allocates nothing. An f64 radius has
+//! ample range for enclosures of numbers between 1e-300 and 1e300.
 //!
 //! | operation | midpoint | radius (before the rounding bound) |
 //! |---|---|---|
@@ -190,6 +194,43 @@ fn mul_up(a: f64, b: f64) -> f64 {
     }
 }
 
+/// 1 + 2⁻⁴⁸. A sum of products of non-negative doubles computed in round-to-nearest, with
+/// k ≤ 30 roundings each of relative error at most u = 2⁻⁵³, is at least (1 − u)ᵏ times the
+/// exact value; multiplied by this factor (and rounded once more) it is above the exact
+/// value, since (1 − u)³¹(1 + 32u) > 1. One multiplication bounds a whole radius formula
+/// instead of stepping every intermediate result one double up.
+const SLACK: f64 = 1.0 + 1.0 / 281_474_976_710_656.0;
+
+/// Below 2⁻⁹⁰⁰ the terms of a radius may have underflowed, each losing up to 2⁻¹⁰⁷⁵
+/// absolutely: [`bound`] adds eight of the smallest subnormals there.
+const UNDERFLOW_ZONE: f64 = f64::from_bits((1023 - 900) << 52);
+
+/// An upper bound of the exact non-negative value that `s`, a sum of products of
+/// non-negative doubles rounded to nearest (at most 30 roundings), approximates; `positive`
+/// says whether any exact term is positive (otherwise the value is an exact 0 and stays 0).
+/// NaN (∞ · 0 inside a radius) becomes ∞.
+fn bound(s: f64, positive: bool) -> f64 {
+    if !positive {
+        0.0
+    } else if s >= UNDERFLOW_ZONE {
+        s * SLACK
+    } else if s.is_nan() {
+        f64::INFINITY
+    } else {
+        s * SLACK + 8.0 * f64::from_bits(1)
+    }
+}
+
+/// a·b for a, b ≥ 0, exactly 0 when one is 0 even if the other is ∞ (to nearest otherwise;
+/// [`bound`] accounts for the rounding).
+fn times(a: f64, b: f64) -> f64 {
+    if a == 0.0 || b == 0.0 {
+        0.0
+    } else {
+        a * b
+    }
+}
+
 /// An upper bound of a/b for a ≥ 0, b > 0.
 fn div_up(a: f64, b: f64) -> f64 {
     if a == 0.0 {
@@ -213,10 +254,24 @@ fn down(x: f64) -> f64 {
 /// [2⁵², 2⁵³) and `inexact` when bits beyond the 53rd are set. `None` for 0, ∞ and NaN.
 #[cfg(target_pointer_width = "64")]
 fn leading_bits(x: &Float) -> Option<(u64, i64, bool)> {
-    let significand = x.get_significand()?;
-    let (&top, rest) = significand.as_limbs().split_last()?;
-    let inexact = top & 0x7ff != 0 || rest.iter().any(|&limb| limb != 0);
-    Some((top >> 11, i64::from(x.get_exp()?), inexact))
+    if !x.is_normal() {
+        return None;
+    }
+    // SAFETY: a normal MPFR number has ⌈prec/64⌉ limbs at `d`, the most significant last
+    // (MPFR's documented representation, the one `Float::get_significand` borrows); they are
+    // only read, while `x` is borrowed. Reading them directly avoids the borrowed-integer
+    // view and its checks: this runs twice per ball product.
+    unsafe {
+        let raw = &*x.as_raw();
+        let count = usize::try_from((raw.prec - 1) / 64 + 1).ok()?;
+        let limbs = std::slice::from_raw_parts(raw.d.as_ptr().cast_const(), count);
+        let (&top, rest) = limbs.split_last()?;
+        let inexact = top & 0x7ff != 0 || rest.iter().any(|&limb| limb != 0);
+        // MPFR's exponent type is a C long: i64 here, i32 on some 64-bit targets.
+        #[allow(clippy::useless_conversion)]
+        let exp = i64::from(raw.exp);
+        Some((top >> 11, exp, inexact))
+    }
 }
 
 /// The double with 53-bit mantissa `mantissa` ∈ [2⁵², 2⁵³] times 2^(e − 53), when it is a
@@ -425,11 +480,23 @@ impl Ball {
         *x >= self.lower() && *x <= self.upper()
     }
 
-    /// |m|·r-type products: an upper bound of |m_a|·r_b + |m_b|·r_a + r_a·r_b.
-    fn product_radius(a: &Ball, b: &Ball) -> f64 {
-        let first = mul_up(abs_up(&a.mid), b.rad);
-        let second = mul_up(abs_up(&b.mid), a.rad);
-        add_up(add_up(first, second), mul_up(a.rad, b.rad))
+    /// |m_a|·r_b + |m_b|·r_a + r_a·r_b rounded to nearest (five roundings, for [`bound`]),
+    /// and whether any of its exact terms is positive. |m| is read only for a positive
+    /// radius of the other operand (an exact operand's midpoint needs no bound).
+    fn product_terms(a: &Ball, b: &Ball) -> (f64, bool) {
+        let mut sum = 0.0;
+        let mut positive = false;
+        if b.rad != 0.0 {
+            let m = abs_up(&a.mid);
+            sum += times(m, b.rad);
+            positive |= m != 0.0;
+        }
+        if a.rad != 0.0 {
+            let m = abs_up(&b.mid);
+            sum += times(m, a.rad) + times(a.rad, b.rad);
+            positive |= m != 0.0 || b.rad != 0.0;
+        }
+        (sum, positive)
     }
 
     /// Whether the ball contains zero (and is not exactly zero).
@@ -491,11 +558,32 @@ impl Neg for Ball {
 }
 
 impl Ball {
-    /// Set the radius to `rad` plus the rounding error of the midpoint just computed in place
-    /// (MPFR's ternary value `direction`), as [`Ball::new`] does for a new ball.
-    fn set_rounded(&mut self, direction: Ordering, rad: f64) {
-        let rad = add_up(rad, rounding_error(&self.mid, direction));
-        self.rad = if rad.is_nan() { f64::INFINITY } else { rad };
+    /// Set the radius after an operation computed the midpoint in place: `terms` (rounded to
+    /// nearest, positive exactly when `positive`) plus the rounding error of the midpoint
+    /// (MPFR's ternary value `direction`), bounded from above once ([`bound`]).
+    fn set_rounded(&mut self, direction: Ordering, (terms, positive): (f64, bool)) {
+        let err = rounding_error(&self.mid, direction);
+        self.rad = bound(terms + err, positive || err != 0.0);
+    }
+
+    /// `self ← self·mul + add` with one rounding of the midpoint (MPFR's fma), in place: the
+    /// Horner step. The radius is that of the product plus `add`'s, plus one rounding.
+    pub fn mul_add_mut(&mut self, mul: &Ball, add: &Ball) {
+        let (product, positive) = Ball::product_terms(self, mul);
+        let terms = (product + add.rad, positive || add.rad != 0.0);
+        let direction = self.mid.mul_add_round(&mul.mid, &add.mid, Round::Nearest);
+        self.set_rounded(direction, terms);
+    }
+
+    /// The radius terms of a sum or difference: r_a + r_b.
+    fn sum_terms(a: &Ball, b: &Ball) -> (f64, bool) {
+        (a.rad + b.rad, a.rad != 0.0 || b.rad != 0.0)
+    }
+
+    /// The radius terms of self ± a·b: r_self + (the product's terms).
+    fn fused_terms(&self, a: &Ball, b: &Ball) -> (f64, bool) {
+        let (product, positive) = Ball::product_terms(a, b);
+        (self.rad + product, positive || self.rad != 0.0)
     }
 }
 
@@ -504,25 +592,25 @@ impl Ball {
 // operand's midpoint.
 impl AddAssign<&Ball> for Ball {
     fn add_assign(&mut self, b: &Ball) {
-        let rad = add_up(self.rad, b.rad);
+        let terms = Ball::sum_terms(self, b);
         let direction = self.mid.add_assign_round(&b.mid, Round::Nearest);
-        self.set_rounded(direction, rad);
+        self.set_rounded(direction, terms);
     }
 }
 
 impl SubAssign<&Ball> for Ball {
     fn sub_assign(&mut self, b: &Ball) {
-        let rad = add_up(self.rad, b.rad);
+        let terms = Ball::sum_terms(self, b);
         let direction = self.mid.sub_assign_round(&b.mid, Round::Nearest);
-        self.set_rounded(direction, rad);
+        self.set_rounded(direction, terms);
     }
 }
 
 impl MulAssign<&Ball> for Ball {
     fn mul_assign(&mut self, b: &Ball) {
-        let rad = Ball::product_radius(self, b);
+        let terms = Ball::product_terms(self, b);
         let direction = self.mid.mul_assign_round(&b.mid, Round::Nearest);
-        self.set_rounded(direction, rad);
+        self.set_rounded(direction, terms);
     }
 }
 
@@ -614,6 +702,17 @@ impl Field for Ball {
             Float::with_val_round(precision(*bits), v, Round::Nearest),
             0.0,
         )
+    }
+    fn mul_add_assign(&mut self, a: &Self, b: &Self) {
+        // self + a·b with one rounding (mpfr_fma), in place.
+        let terms = self.fused_terms(a, b);
+        let direction = self.mid.add_assign_round(&a.mid * &b.mid, Round::Nearest);
+        self.set_rounded(direction, terms);
+    }
+    fn mul_sub_assign(&mut self, a: &Self, b: &Self) {
+        let terms = self.fused_terms(a, b);
+        let direction = self.mid.sub_assign_round(&a.mid * &b.mid, Round::Nearest);
+        self.set_rounded(direction, terms);
     }
     fn abs(&self) -> Self {
         // ||x| − |m|| ≤ |x − m|: the same radius encloses every |x|.
@@ -786,6 +885,20 @@ mod tests {
                 }
             }
         }
+        // The single radius bound keeps exact zeros exact and tiny radii positive.
+        let zero = Ball::from_i64(0, &64);
+        let everything = Ball::new(Float::with_val(64, 0), f64::INFINITY);
+        assert!((zero.clone() * &everything).is_zero());
+        let three = Ball::from_i64(3, &64) * &Ball::from_i64(5, &64);
+        assert_eq!(three.rad(), 0.0);
+        let tiny = Ball::new(Float::with_val(64, 0), 1e-200);
+        assert!(
+            (tiny.clone() * &tiny).rad() > 0.0,
+            "an underflowed radius became 0"
+        );
+        let mut fused = Ball::from_i64(1, &64);
+        fused.mul_add_assign(&tiny, &tiny);
+        assert!(fused.rad() > 0.0 && fused.contains(&Float::with_val(64, 1)));
         for k in -1100..1100 {
             let expected = if k < -1074 {
                 f64::from_bits(1)
