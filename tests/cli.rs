@@ -1647,3 +1647,16 @@ fn regressions_of_the_soundness_review() {
         );
     }
 }
+
+/// A long chain of roll corrections in balls: the rotations are chained on the joints' own
+/// unit rotations, so 256 segments of the README's curve keep finite preimages (they used
+/// to reach a ball around 0 after about 230 joints), and the error is proven.
+#[test]
+fn phodcos_balls_stay_finite_over_many_segments() {
+    let input = r#"{"curve": "[sin(t), cos(t), t]", "interval": [0, 1], "segments": 256}"#;
+    let run = trajverify(&["run", "phodcos", "--scalar", "ball:256"], input);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let out = json(&run);
+    assert_eq!(out["preimages"].as_array().map(Vec::len), Some(256));
+    assert!(out["max_error"]["value"].as_str().is_some_and(|v| v.starts_with("3.25")));
+}

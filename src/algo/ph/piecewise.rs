@@ -340,9 +340,27 @@ impl<T: Real> ParamCurveFrame<T> for PiecewisePh<T> {
 
 /// Make the preimage continuous at every joint (Eq. 22, as a right product): segment k+1
 /// is multiplied on the right by the unit Q(α) = cos α + i sin α with A_{k+1}(0) Q(α) = A_k(1).
+///
+/// For balls the rotations are chained from the segments as converted: the joint's own
+/// rotation r_k = A_{k+1}(0)* A_k(1)/|·| (both unrotated) times the rotation C_k already
+/// applied to segment k, since A_{k+1}(0)*·A_k(1)C_k = (A_{k+1}(0)* A_k(1))·C_k. Reading the
+/// already rotated end instead, as floating point does, makes each joint's ball wider than
+/// the last by a constant factor, so past a few hundred segments the rotation's normalisation
+/// divides by a ball around 0; chained on unit rotations, the radii grow by at most √2 per
+/// joint. Floating point keeps the direct form, whose roundings the reports were made with.
 pub fn align_roll<T: Real>(segments: &mut [PhCurve<T>]) {
+    // Balls: segment k−1's end as converted, and the rotation C_{k−1} applied to it.
+    let mut converted_end = segments.first().and_then(|s| s.preimage.last().cloned());
+    let mut applied: Option<Quat<T>> = None;
     for k in 1..segments.len() {
-        let end = segments[k - 1].preimage.last().expect("preimage").clone();
+        let next_converted_end = segments[k].preimage.last().cloned();
+        let end = if T::ENCLOSURE {
+            converted_end.take()
+        } else {
+            segments[k - 1].preimage.last().cloned()
+        };
+        converted_end = next_converted_end;
+        let Some(end) = end else { continue };
         let start = &segments[k].preimage[0];
         // A_{k+1}(0)* A_k(1) = |A|² Q(α) when both solve X i X* = v; drop the j, k parts
         // left by rounding so the correction commutes with i exactly.
@@ -350,11 +368,18 @@ pub fn align_roll<T: Real>(segments: &mut [PhCurve<T>]) {
         let ctx = q.ctx();
         let len = (q.w.clone() * &q.w + &(q.x.clone() * &q.x)).sqrt();
         if len.is_zero() {
+            applied = None;
             continue;
         }
         let inv = T::one_in(&ctx) / &len;
         let z = T::zero_in(&ctx);
-        let rot = Quat::new(q.w.clone() * &inv, q.x.clone() * &inv, z.clone(), z);
+        let mut rot = Quat::new(q.w.clone() * &inv, q.x.clone() * &inv, z.clone(), z);
+        if T::ENCLOSURE {
+            if let Some(c) = &applied {
+                rot = rot.mul(c);
+            }
+            applied = Some(rot.clone());
+        }
         for a in segments[k].preimage.iter_mut() {
             *a = a.mul(&rot);
         }
