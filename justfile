@@ -25,6 +25,13 @@ soundness cases="200" seconds="600":
 bench:
     cargo bench
 
+# The performance figures of the README and docs/benchmarks.md, from one bench run.
+bench-report:
+    cargo build --release
+    cargo bench --bench scalar
+    cargo bench --bench ph -- ph_c4_segment
+    python3 scripts/bench_report.py
+
 # Regenerate the reports into a scratch directory and show any difference from reports/.
 report:
     out=$(mktemp -d) && cargo run --release -- verify --out "$out" && diff -r reports "$out" && echo "reports/ is current"
