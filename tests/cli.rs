@@ -1658,5 +1658,7 @@ fn phodcos_balls_stay_finite_over_many_segments() {
     assert_eq!(run.code, 0, "{}", run.stderr);
     let out = json(&run);
     assert_eq!(out["preimages"].as_array().map(Vec::len), Some(256));
-    assert!(out["max_error"]["value"].as_str().is_some_and(|v| v.starts_with("3.25")));
+    assert!(out["max_error"]["value"]
+        .as_str()
+        .is_some_and(|v| v.starts_with("3.25")));
 }

@@ -226,3 +226,41 @@ fn data_splines_and_expressions_are_curves_on_their_domain() {
     ));
     assert!(on_root.point(&12.0).is_ok());
 }
+
+/// The point-only evaluation (order 0) is bit for bit the value the Taylor path gives at a
+/// variable of order 0, in every number type, for every operation of the expression language.
+#[test]
+fn point_evaluation_equals_the_series_value_bit_for_bit() {
+    use trajverify::curve::taylor::Taylor;
+    use trajverify::curve::{CompiledCurve, Curve};
+    use trajverify::scalar::ball::Ball;
+    use trajverify::scalar::{Field, Real};
+    fn series_point<T: Real>(c: &CompiledCurve<T>, t: &T) -> Vec<T> {
+        let var = Taylor::variable(t.clone(), 0);
+        (0..3)
+            .map(|i| c.components[i].eval(&var).with_order(0).derivatives()[0].clone())
+            .collect()
+    }
+    let text = "[1.5*sin(7.2*t)/(2+t) + tan(t/3), t^-3 + t^2.5 - atan(t)*sqrt(t), exp(cos(1.8*t)) - ln(1+t)]";
+    let curve = ExprCurve::parse(text).unwrap();
+    let f = curve.compile::<f64>(&());
+    let m = curve.compile::<Float>(&256);
+    let b = curve.compile::<Ball>(&256);
+    for t in [0.3, 0.7, 1.9] {
+        let p = f.jet(&t, 0)[0].map(f64::to_bits);
+        let q: Vec<u64> = series_point(&f, &t).into_iter().map(f64::to_bits).collect();
+        assert_eq!(p.to_vec(), q, "f64 at {t}");
+        let tm = Float::with_val(256, t);
+        assert_eq!(
+            m.jet(&tm, 0)[0].to_vec(),
+            series_point(&m, &tm),
+            "MPFR at {t}"
+        );
+        let tb = Ball::from_f64(t, &256);
+        let (p, q) = (b.jet(&tb, 0), series_point(&b, &tb));
+        for i in 0..3 {
+            assert_eq!(p[0][i].mid(), q[i].mid(), "ball midpoint at {t}");
+            assert_eq!(p[0][i].rad(), q[i].rad(), "ball radius at {t}");
+        }
+    }
+}

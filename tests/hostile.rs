@@ -535,6 +535,16 @@ fn lower_level_functions_check_their_inputs() {
         interpolate_with(&data, &FreeParameters::zero(m, &()), MiddleRule::Derived)
     });
     assert!(matches!(r, Err(PhHermiteError::Shape)), "{r:?}");
+    let nan = PhData {
+        p_b: [f64::NAN, 0.0, 0.0],
+        p_e: [1.0, 0.0, 0.0],
+        start: vec![[1.0, 0.0, 0.0]],
+        end: vec![[1.0, 0.0, 0.0]],
+    };
+    let r = no_panic("interpolate_with NaN point", || {
+        interpolate_with(&nan, &FreeParameters::zero(1, &()), MiddleRule::Derived)
+    });
+    assert!(matches!(r, Err(PhHermiteError::NotFinite(_))), "{r:?}");
     assert!(no_panic("from_jets(&[], …)", || PhData::<f64>::from_jets(
         &[],
         &[[0.0; 3]]

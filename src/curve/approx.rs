@@ -257,9 +257,7 @@ fn horner_jet<T: Field>(c: &[[T; 3]], xi: &T, order: usize) -> [[T; 3]; 3] {
                 d2[d] = d2[d].clone() * xi + &two_d1;
                 d1[d] = d1[d].clone() * xi + &p[d];
             }
-            let mut next = ck[d].clone();
-            next.mul_add_assign(&p[d], xi);
-            p[d] = next;
+            p[d].horner_step(xi, &ck[d]);
         }
     }
     [p, d1, d2]

@@ -233,6 +233,51 @@ impl<X: Real> Compiled<X> {
     }
 }
 
+impl<T: Real> Compiled<Taylor<T>> {
+    /// The value at `t` alone, without series: the operations [`Compiled::eval`] performs on
+    /// the constant terms at a variable of order 0, in the same order and with the same
+    /// roundings (a quotient is a product with the reciprocal, as `Taylor`'s division by a
+    /// constant series is), so the result is bit for bit the value `eval` gives, without its
+    /// vectors. The error searches of paper 001 evaluate curves at millions of points.
+    pub fn eval_value(&self, t: &T) -> T {
+        let one = || T::one_in(&t.ctx());
+        let reciprocal_times = |x: T, d: &T| x * &(one() / d);
+        match self {
+            Compiled::Const(v) => v.value().clone(),
+            Compiled::T => t.clone(),
+            Compiled::Neg(a) => -a.eval_value(t),
+            Compiled::Add(a, b) => a.eval_value(t) + &b.eval_value(t),
+            Compiled::Sub(a, b) => a.eval_value(t) - &b.eval_value(t),
+            Compiled::Mul(a, b) => a.eval_value(t) * &b.eval_value(t),
+            Compiled::Div(a, b) => reciprocal_times(a.eval_value(t), &b.eval_value(t)),
+            Compiled::PowInt(a, n) => {
+                let p = powi(&a.eval_value(t), n.unsigned_abs() as u32);
+                if *n < 0 {
+                    reciprocal_times(one(), &p)
+                } else {
+                    p
+                }
+            }
+            Compiled::Pow(a, b) => (b.eval_value(t) * &a.eval_value(t).ln()).exp(),
+            Compiled::Call(f, a) => {
+                let x = a.eval_value(t);
+                match f {
+                    Func::Sin => x.sin_cos().0,
+                    Func::Cos => x.sin_cos().1,
+                    Func::Tan => {
+                        let (s, c) = x.sin_cos();
+                        reciprocal_times(s, &c)
+                    }
+                    Func::Exp => x.exp(),
+                    Func::Ln => x.ln(),
+                    Func::Sqrt => x.sqrt(),
+                    Func::Atan => x.atan2(&one()),
+                }
+            }
+        }
+    }
+}
+
 /// Parse a single scalar expression.
 ///
 /// # Errors

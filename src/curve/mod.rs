@@ -109,6 +109,13 @@ pub struct CompiledCurve<T> {
 
 impl<T: Real> Curve<T> for CompiledCurve<T> {
     fn jet(&self, t: &T, order: usize) -> Vec<[T; 3]> {
+        if order == 0 {
+            // The point alone: the series' constant terms without the series, times the 0! = 1
+            // that `Taylor::derivatives` multiplies by (bit for bit the general path's value).
+            let one = T::one_in(&t.ctx());
+            let point = std::array::from_fn(|i| self.components[i].eval_value(t) * &one);
+            return vec![point];
+        }
         let var = Taylor::variable(t.clone(), order);
         let d: Vec<Vec<T>> = self
             .components

@@ -709,6 +709,17 @@ impl Field for Ball {
         let direction = self.mid.add_assign_round(&a.mid * &b.mid, Round::Nearest);
         self.set_rounded(direction, terms);
     }
+    fn horner_step(&mut self, x: &Self, c: &Self) {
+        if self.mid.prec() == c.mid.prec() {
+            // c.rad + product is the same f64 sum as product + c.rad: bit for bit the
+            // default's c.mul_add_assign(self, x).
+            self.mul_add_mut(x, c);
+        } else {
+            let mut next = c.clone();
+            next.mul_add_assign(self, x);
+            *self = next;
+        }
+    }
     fn mul_sub_assign(&mut self, a: &Self, b: &Self) {
         let terms = self.fused_terms(a, b);
         let direction = self.mid.sub_assign_round(&a.mid * &b.mid, Round::Nearest);

@@ -131,6 +131,13 @@ pub trait Field:
     fn mul_add_assign(&mut self, a: &Self, b: &Self) {
         *self += &(a.clone() * b);
     }
+    /// `self ← self·x + c`, the Horner step, rounded exactly as `c.mul_add_assign(self, x)`
+    /// (one rounding in MPFR and balls, which do it in place without a temporary).
+    fn horner_step(&mut self, x: &Self, c: &Self) {
+        let mut next = c.clone();
+        next.mul_add_assign(self, x);
+        *self = next;
+    }
     /// `self −= a·b`, fused in MPFR like [`Field::mul_add_assign`].
     fn mul_sub_assign(&mut self, a: &Self, b: &Self) {
         *self -= &(a.clone() * b);

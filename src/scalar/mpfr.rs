@@ -104,6 +104,17 @@ impl Field for Float {
     fn mul_sub_assign(&mut self, a: &Self, b: &Self) {
         *self -= a * b;
     }
+    fn horner_step(&mut self, x: &Self, c: &Self) {
+        // fma(self, x, c) rounded to self's precision, as c + self·x rounded to c's: the
+        // Horner loops keep one precision throughout.
+        if self.prec() == c.prec() {
+            self.mul_add_mut(x, c);
+        } else {
+            let mut next = c.clone();
+            next.mul_add_assign(self, x);
+            *self = next;
+        }
+    }
     fn to_plain_string(&self) -> String {
         super::certify::format_float_digits(self, super::certify::max_digits(self.prec()))
     }

@@ -206,7 +206,8 @@ pub fn interpolate<T: Real>(
 /// [`PhHermiteError::Shape`] for m = 0, m above [`super::piecewise::MAX_DERIVATIVES`] or
 /// unequal derivative counts; [`PhHermiteError::FreeCount`] unless m − 1 τ at each end; [`PhHermiteError::ZeroTangent`]
 /// for v_b or v_e = 0 (or no Lemma 2 solution at that end);
-/// [`PhHermiteError::NoStandardForm`] for v_b + v_e = 0.
+/// [`PhHermiteError::NoStandardForm`] for v_b + v_e = 0; [`PhHermiteError::NotFinite`] (end 0)
+/// for data or free parameters that are NaN or infinite.
 pub fn interpolate_with<T: Real>(
     data: &HermiteData<T>,
     free: &FreeParameters<T>,
@@ -215,6 +216,16 @@ pub fn interpolate_with<T: Real>(
     let m = data.order();
     if m == 0 || m > super::piecewise::MAX_DERIVATIVES || data.end.len() != m {
         return Err(PhHermiteError::Shape);
+    }
+    // The fields are public: NaN or infinite data would give an `Ok` of NaN control points.
+    let vectors = [&data.p_b, &data.p_e]
+        .into_iter()
+        .chain(&data.start)
+        .chain(&data.end);
+    let thetas = [&free.theta_start, &free.theta_mid, &free.theta_end];
+    let taus = free.tau_start.iter().chain(&free.tau_end).chain(thetas);
+    if vectors.flatten().chain(taus).any(|x| !x.is_finite()) {
+        return Err(PhHermiteError::NotFinite(0));
     }
     if free.tau_start.len() != m - 1 || free.tau_end.len() != m - 1 {
         return Err(PhHermiteError::FreeCount(
