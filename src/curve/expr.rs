@@ -262,8 +262,8 @@ impl<T: Real> Compiled<Taylor<T>> {
             Compiled::Call(f, a) => {
                 let x = a.eval_value(t);
                 match f {
-                    Func::Sin => x.sin_cos().0,
-                    Func::Cos => x.sin_cos().1,
+                    Func::Sin => x.sin(),
+                    Func::Cos => x.cos(),
                     Func::Tan => {
                         let (s, c) = x.sin_cos();
                         reciprocal_times(s, &c)

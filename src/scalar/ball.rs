@@ -808,6 +808,14 @@ impl Real for Ball {
             Ball::rounded((cos, dc), self.rad),
         )
     }
+    fn sin(&self) -> Self {
+        let mid = Float::with_val_round(self.mid.prec(), self.mid.sin_ref(), Round::Nearest);
+        Ball::rounded(mid, self.rad)
+    }
+    fn cos(&self) -> Self {
+        let mid = Float::with_val_round(self.mid.prec(), self.mid.cos_ref(), Round::Nearest);
+        Ball::rounded(mid, self.rad)
+    }
     fn atan2(&self, x: &Self) -> Self {
         let prec = self.mid.prec();
         // Distance from the origin of the nearest point of the box.

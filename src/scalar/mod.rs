@@ -196,6 +196,15 @@ pub trait Real: Field {
     fn sqrt(&self) -> Self;
     /// (sin x, cos x).
     fn sin_cos(&self) -> (Self, Self);
+    /// sin x, bit for bit the first of [`Real::sin_cos`] (MPFR and balls compute it alone,
+    /// correctly rounded as `sin_cos` rounds it).
+    fn sin(&self) -> Self {
+        self.sin_cos().0
+    }
+    /// cos x, bit for bit the second of [`Real::sin_cos`].
+    fn cos(&self) -> Self {
+        self.sin_cos().1
+    }
     /// `self.atan2(x)` is the angle of the point (x, self), in (−π, π].
     fn atan2(&self, x: &Self) -> Self;
     /// eˣ.

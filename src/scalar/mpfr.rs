@@ -128,6 +128,12 @@ impl Real for Float {
         let (s, c) = self.clone().sin_cos(Float::new(self.prec()));
         (s, c)
     }
+    fn sin(&self) -> Self {
+        Float::with_val(self.prec(), self.sin_ref())
+    }
+    fn cos(&self) -> Self {
+        Float::with_val(self.prec(), self.cos_ref())
+    }
     fn atan2(&self, x: &Self) -> Self {
         self.clone().atan2(x)
     }

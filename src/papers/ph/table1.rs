@@ -668,11 +668,18 @@ pub const PAPER_GRID_PER_SEGMENT: usize = 100;
 /// The authors' evaluation grid for `segments` segments of [0, 1]: M = 100·N points from 10⁻⁶
 /// to 1, uniformly spaced (exact rationals; numpy's float64 linspace differs by rounding only).
 pub fn paper_grid(segments: usize) -> Vec<BigRational> {
+    use num_integer::Integer;
     let m = (PAPER_GRID_PER_SEGMENT * segments) as i64;
-    let start = BigRational::new(1.into(), 1_000_000.into());
-    let step = (rational(1) - &start) / BigRational::from_integer((m - 1).into());
+    // t_j = 10⁻⁶ + j(1 − 10⁻⁶)/(M − 1) = ((M − 1) + (10⁶ − 1)j) / (10⁶(M − 1)), reduced by a
+    // machine-integer gcd: the same reduced fractions as big-rational arithmetic, without its
+    // big gcds (a million grid points per level).
+    let den = 1_000_000 * (m - 1);
     (0..m)
-        .map(|j| start.clone() + step.clone() * BigRational::from_integer(j.into()))
+        .map(|j| {
+            let num = (m - 1) + 999_999 * j;
+            let g = num.gcd(&den);
+            BigRational::new_raw((num / g).into(), (den / g).into())
+        })
         .collect()
 }
 
@@ -696,4 +703,23 @@ pub fn paper_grid_errors(levels: &[u32]) -> Vec<(Float, Float)> {
             .expect("the test curve has no degenerate segment")
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The integer construction of the grid is exactly linspace(10⁻⁶, 1, 100·N) in rationals.
+    #[test]
+    fn paper_grid_is_the_rational_linspace() {
+        for segments in [1, 2, 8] {
+            let m = (PAPER_GRID_PER_SEGMENT * segments) as i64;
+            let start = BigRational::new(1.into(), 1_000_000.into());
+            let step = (rational(1) - &start) / BigRational::from_integer((m - 1).into());
+            let expected: Vec<BigRational> = (0..m)
+                .map(|j| start.clone() + step.clone() * BigRational::from_integer(j.into()))
+                .collect();
+            assert_eq!(paper_grid(segments), expected);
+        }
+    }
 }
