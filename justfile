@@ -30,6 +30,7 @@ bench-report:
     cargo build --release
     cargo bench --bench scalar
     cargo bench --bench ph -- ph_c4_segment
+    cargo bench --bench param -- marin_objective_exact
     python3 scripts/bench_report.py
 
 # Regenerate the reports into a scratch directory and show any difference from reports/.

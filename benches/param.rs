@@ -45,6 +45,36 @@ fn objective_and_gradient(c: &mut Criterion) {
     g.finish();
 }
 
+/// The exact objective in num-rational's `BigRational` and GMP's `rug::Rational`, on spacings
+/// that are doubles read exactly (denominators 2^k, as paper 004's claim that every f64
+/// iterate lowers G evaluates them): which rational type the exact paths should use.
+fn exact_objective(c: &mut Criterion) {
+    use trajverify::scalar::BigRational;
+    let mut g = c.benchmark_group("marin_objective_exact");
+    g.sample_size(10)
+        .measurement_time(Duration::from_secs(2))
+        .warm_up_time(Duration::from_millis(300));
+    fn from_doubles<T: Field<Ctx = ()>>(n: usize) -> (Vec<T>, Vec<Vec<T>>, Vec<T>) {
+        let (_, z, a) = data::<T>(n, &());
+        // 1/n perturbed, as a descent's iterates are, then read exactly.
+        let h = (0..n)
+            .map(|i| T::from_f64((1.0 + 1e-3 * (i % 3) as f64) / n as f64, &()))
+            .collect();
+        (h, z, a)
+    }
+    for n in [20usize, 200] {
+        let (h, z, a) = from_doubles::<BigRational>(n);
+        g.bench_function(BenchmarkId::new("num_rational", n), |b| {
+            b.iter(|| objective(black_box(&h), &z, &a, Objective::Exact))
+        });
+        let (h, z, a) = from_doubles::<rug::Rational>(n);
+        g.bench_function(BenchmarkId::new("gmp_rational", n), |b| {
+            b.iter(|| objective(black_box(&h), &z, &a, Objective::Exact))
+        });
+    }
+    g.finish();
+}
+
 fn exact_minimizer(c: &mut Criterion) {
     let mut g = c.benchmark_group("marin_1d");
     g.sample_size(10)
@@ -73,5 +103,10 @@ fn exact_minimizer(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, objective_and_gradient, exact_minimizer);
+criterion_group!(
+    benches,
+    objective_and_gradient,
+    exact_objective,
+    exact_minimizer
+);
 criterion_main!(benches);

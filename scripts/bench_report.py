@@ -3,8 +3,9 @@
 
 Run `just bench-report` (or the steps it lists) rather than this script alone: it reads
 
-- criterion's medians under target/criterion (`cargo bench --bench scalar` and
-  `cargo bench --bench ph -- ph_c4_segment`),
+- criterion's medians under target/criterion (`cargo bench --bench scalar`,
+  `cargo bench --bench ph -- ph_c4_segment` and `cargo bench --bench param --
+  marin_objective_exact`),
 - the Arb/MPFR C bench's output (benches/arb/horner.c, built and run by this script when a C
   compiler and libflint-arb are installed; otherwise the Arb column says "not measured"),
 - the CPU time of `trajverify verify` (run by this script, into a scratch directory),
@@ -65,7 +66,10 @@ def verify_cpu_seconds():
 
 
 def fmt_time(ns):
-    return f"{ns / 1000:.3g} µs" if ns >= 1000 else f"{ns:.3g} ns"
+    for unit, scale in (("s", 1e9), ("ms", 1e6), ("µs", 1e3)):
+        if ns >= scale:
+            return f"{ns / scale:.3g} {unit}"
+    return f"{ns:.3g} ns"
 
 
 def section():
@@ -75,6 +79,8 @@ def section():
     mpfr = median_ns("horner_degree17_256bits", "mpfr", "fma_in_place") / HORNER_STEPS
     c4 = {kind: median_ns("ph_c4_segment", kind, "interpolate+control_points")
           for kind in ("f64", "mpfr256", "ball256")}
+    exact = {(kind, n): median_ns("marin_objective_exact", kind, str(n))
+             for kind in ("num_rational", "gmp_rational") for n in (20, 200)}
     arb = arb_bench()
     cpu = verify_cpu_seconds()
     cores = os.cpu_count()
@@ -100,6 +106,11 @@ def section():
         f"| one C⁴ conversion, `ball:256` | {fmt_time(c4['ball256'])} | MPFR-256, {fmt_time(c4['mpfr256'])} | {c4['ball256'] / c4['mpfr256']:.2f}× | ≤ 1.5× |",
         f"| `verify` (all five papers) | {cpu:.0f} CPU-s | | | ≤ 40 CPU-s |",
     ]
+    for n in (20, 200):
+        gmp, num = exact[("gmp_rational", n)], exact[("num_rational", n)]
+        lines.append(
+            f"| exact G (paper 004, Eq. 31) on f64 spacings, N = {n}, `rug::Rational` | {fmt_time(gmp)} | "
+            f"num-rational `BigRational`, {fmt_time(num)} | {gmp / num:.3f}× | the faster |")
     return "\n".join(lines)
 
 

@@ -531,3 +531,23 @@ mod gerbs {
         );
     }
 }
+
+/// GMP's and num-rational's rationals give the same exact objective of paper 004 on spacings
+/// read from doubles (verify evaluates that claim in GMP's for speed).
+#[test]
+fn gmp_and_num_rationals_agree_exactly() {
+    use trajverify::algo::param::objective::{objective, Objective};
+    use trajverify::scalar::{BigRational, Field};
+    fn g<T: Field<Ctx = ()>>() -> Option<BigRational> {
+        let h: Vec<T> = [0.3, 0.25, 0.45]
+            .iter()
+            .map(|x| T::from_f64(*x, &()))
+            .collect();
+        let z: Vec<Vec<T>> = vec![[0, 2, -1, 3].iter().map(|v| T::from_i64(*v, &())).collect()];
+        let g = objective(&h, &z, &[T::from_ratio(3, 2, &())], Objective::Exact).ok()?;
+        g.to_rational()
+    }
+    let (num, gmp) = (g::<BigRational>(), g::<rug::Rational>());
+    assert!(num.is_some());
+    assert_eq!(num, gmp);
+}

@@ -42,3 +42,47 @@ impl Field for BigRational {
         self.to_string()
     }
 }
+
+/// GMP's rationals (`rug::Rational`) as an exact [`Field`], beside num-rational's
+/// [`BigRational`]: the same exact values, with GMP's integer arithmetic underneath (its gcd
+/// is subquadratic and in assembly, num-bigint's is a binary gcd in Rust). `benches/param.rs`
+/// measures the two on the exact objective of paper 004 (docs/benchmarks.md).
+impl Field for rug::Rational {
+    type Ctx = ();
+
+    fn ctx(&self) {}
+    fn scalar_name(_: &()) -> String {
+        "rational".into()
+    }
+    fn from_i64(v: i64, _: &()) -> Self {
+        rug::Rational::from(v)
+    }
+    fn from_ratio(n: i64, d: i64, _: &()) -> Self {
+        // Panics for d = 0, as the BigRational form and i64 division do.
+        rug::Rational::from((n, d))
+    }
+    fn from_rational(q: &BigRational, _: &()) -> Self {
+        super::mpfr::to_gmp_rational(q)
+    }
+    fn from_f64(v: f64, _: &()) -> Self {
+        rug::Rational::from_f64(v).unwrap_or_default()
+    }
+    fn abs(&self) -> Self {
+        self.clone().abs()
+    }
+    fn is_zero(&self) -> bool {
+        self.cmp0() == std::cmp::Ordering::Equal
+    }
+    fn is_finite(&self) -> bool {
+        true
+    }
+    fn to_f64(&self) -> f64 {
+        rug::Float::with_val(53, self).to_f64()
+    }
+    fn to_rational(&self) -> Option<BigRational> {
+        Some(super::mpfr::from_gmp_rational(self))
+    }
+    fn to_plain_string(&self) -> String {
+        self.to_string()
+    }
+}
