@@ -7,6 +7,7 @@
 //! | `f64` | `()` | IEEE double: fast, 53-bit rounding in every operation |
 //! | [`rug::Float`] (MPFR) | precision in bits (`u32`) | correctly rounded operations at any precision |
 //! | [`BigRational`] | `()` | exact field arithmetic; no square roots, so it implements only [`Field`] |
+//! | [`rug::Rational`] (GMP) | `()` | the same exact values with GMP's integer arithmetic, 20–30× faster where fractions grow (`benches/param.rs`); only [`Field`] |
 //! | [`ball::Ball`] | precision in bits (`u32`) | a proven enclosure: MPFR midpoint, f64 radius rounded up |
 //!
 //! The context is never a hidden global: a new constant is made with the context of the
