@@ -292,18 +292,12 @@ impl RealJob for PhodcosJob {
         );
         check_finite(&c, &a, &b, n)?;
         let free = FreeParameters::zero(4, &bits);
-        let pw = convert(&c, &a, &b, n, 4, &free, true).map_err(ph_error)?;
         // The error depends on positions only, which the roll correction (Eq. 22) leaves
-        // alone; the unrolled conversion's balls stay narrow where a roll angle near ±π
-        // makes the correction's atan2 straddle its branch cut (the ball of every angle).
-        let unrolled = convert(&c, &a, &b, n, 4, &free, false).map_err(ph_error)?;
-        let e = proven_error_until(
-            &c,
-            &unrolled,
-            1e-6,
-            4_000_000,
-            Some(budget::search_deadline()),
-        );
+        // alone: it is searched on the conversion before the roll, whose balls the chained
+        // rotations do not widen; the printed preimages are that conversion rolled.
+        let mut pw = convert(&c, &a, &b, n, 4, &free, false).map_err(ph_error)?;
+        let e = proven_error_until(&c, &pw, 1e-6, 4_000_000, Some(budget::search_deadline()));
+        pw.align_roll();
         Ok(Out::object(vec![
             ("segments", Out::Int(n as i64)),
             ("max_error", Out::Num(Ball::from_bounds(&e.lower, &e.upper))),

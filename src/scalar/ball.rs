@@ -715,9 +715,7 @@ impl Field for Ball {
             // default's c.mul_add_assign(self, x).
             self.mul_add_mut(x, c);
         } else {
-            let mut next = c.clone();
-            next.mul_add_assign(self, x);
-            *self = next;
+            super::horner_step_into_copy(self, x, c);
         }
     }
     fn mul_sub_assign(&mut self, a: &Self, b: &Self) {

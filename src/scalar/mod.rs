@@ -135,9 +135,7 @@ pub trait Field:
     /// `self ← self·x + c`, the Horner step, rounded exactly as `c.mul_add_assign(self, x)`
     /// (one rounding in MPFR and balls, which do it in place without a temporary).
     fn horner_step(&mut self, x: &Self, c: &Self) {
-        let mut next = c.clone();
-        next.mul_add_assign(self, x);
-        *self = next;
+        horner_step_into_copy(self, x, c);
     }
     /// `self −= a·b`, fused in MPFR like [`Field::mul_add_assign`].
     fn mul_sub_assign(&mut self, a: &Self, b: &Self) {
@@ -184,6 +182,15 @@ pub trait Field:
     /// the shortest round-trip decimal for f64, every significant digit of the precision for
     /// MPFR. Use [`certify`] for digits that two precisions agree on.
     fn to_plain_string(&self) -> String;
+}
+
+/// `acc ← c + acc·x` through a copy of `c` and [`Field::mul_add_assign`]: the default
+/// [`Field::horner_step`], and the fallback of the in-place overrides when the precisions of
+/// `acc` and `c` differ.
+pub fn horner_step_into_copy<T: Field>(acc: &mut T, x: &T, c: &T) {
+    let mut next = c.clone();
+    next.mul_add_assign(acc, x);
+    *acc = next;
 }
 
 /// The operations beyond a field that curves, frames and singular values need.

@@ -110,9 +110,7 @@ impl Field for Float {
         if self.prec() == c.prec() {
             self.mul_add_mut(x, c);
         } else {
-            let mut next = c.clone();
-            next.mul_add_assign(self, x);
-            *self = next;
+            super::horner_step_into_copy(self, x, c);
         }
     }
     fn to_plain_string(&self) -> String {
