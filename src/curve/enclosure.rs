@@ -31,7 +31,7 @@
 
 use super::approx::BernsteinPieces;
 use super::Curve;
-use crate::numeric::poly::bernstein::bernstein_jet;
+use crate::numeric::poly::bernstein::{bernstein_jet, bernstein_taylor};
 use crate::numeric::quat::vec3;
 use crate::scalar::ball::carried;
 use crate::scalar::ball::Ball;
@@ -154,7 +154,8 @@ fn model<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
     let omega = Float::with_val(bits, ub - ua) / 2u32;
     let xc = tk.clone() + &(h.clone() * &Ball::exact(uc.clone()));
     let gamma = curve.jet(&xc, ORDER);
-    let p = bernstein_jet(points, &Ball::exact(uc), ORDER);
+    // p^(j)(u_c)/j!, all of them at once (p has degree ≤ ORDER: the rest are 0).
+    let p = bernstein_taylor(points, &Ball::exact(uc));
     // q_j = γ^(j) h^j/j! − p^(j)/j!.
     let mut scale = Ball::one_in(&bits);
     let mut factorial = Ball::one_in(&bits);
@@ -165,7 +166,10 @@ fn model<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
                 factorial *= &Ball::from_i64(j as i64, &bits);
             }
             let g = vec3::scale(&gamma[j], &(scale.clone() / &factorial));
-            vec3::sub(&g, &vec3::scale(&p[j], &(Ball::one_in(&bits) / &factorial)))
+            match p.get(j) {
+                Some(pj) => vec3::sub(&g, pj),
+                None => g,
+            }
         })
         .collect();
     // The remainder: γ^(18) over the whole piece X = x_c ± |h|ω.
@@ -246,13 +250,12 @@ fn box_bounds(m: &Model, centre: &Float, half_width: &Float) -> (f64, f64) {
 fn pieces<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
     curve: &C,
     pw: &P,
-    whole: Model,
+    (whole, points): (Model, &[[Ball; 3]]),
     tolerance: f64,
     deadline: Option<Instant>,
 ) -> Vec<Model> {
     let bits = pw.interval().0.ctx();
     let k = whole.segment;
-    let points = pw.control_points(k);
     // A piecewise curve's breakpoints split the segment first: a piece ending at a knot
     // sees it only within rounding of its end, so its seam term vanishes.
     let splits = breakpoints_in_segment(curve, pw, k);
@@ -274,7 +277,7 @@ fn pieces<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
     };
     let mut done = Vec::new();
     while let Some((a, b, depth, known)) = todo.pop() {
-        let m = known.unwrap_or_else(|| model(curve, pw, (k, &points), (&a, &b)));
+        let m = known.unwrap_or_else(|| model(curve, pw, (k, points), (&a, &b)));
         // Past the deadline a piece is kept whole: its remainder is in both bounds, so the
         // enclosure stays proven, only wider.
         if m.remainder <= tolerance || depth >= MAX_PIECE_DEPTH || passed(deadline) {
@@ -347,19 +350,20 @@ fn sampled_lower_bound(whole: &[Model], bits: u32) -> f64 {
 fn evaluated_lower_bound<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
     curve: &C,
     pw: &P,
+    points: &[Vec<[Ball; 3]>],
 ) -> f64 {
     let bits = pw.interval().0.ctx();
     let h = pw.step();
     (0..pw.count())
         .into_par_iter()
         .map(carried(|k| {
-            let points = pw.control_points(k);
+            let points = &points[k];
             let tk = pw.knot(k);
             (0..=LOWER_SAMPLES)
                 .map(|i| {
                     let u = Ball::from_ratio(i, LOWER_SAMPLES, &bits);
                     let gamma = curve.jet(&(tk.clone() + &(h.clone() * &u)), 0);
-                    let d = vec3::sub(&gamma[0], &bernstein_jet(&points, &u, 0)[0]);
+                    let d = vec3::sub(&gamma[0], &bernstein_jet(points, &u, 0)[0]);
                     let norm = vec3::dot(&d, &d).sqrt();
                     norm.lower().to_f64_round(Round::Down).max(0.0)
                 })
@@ -374,11 +378,12 @@ fn evaluated_lower_bound<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Si
 /// from F = ‖Q‖², whose rounding noise is about 2^−p·size², so E is not resolved below
 /// √(2^−p)·size. An error that is rounding noise (a curve the method reproduces exactly) is
 /// then enclosed in [0, about the floor] instead of being split and bisected to the budget.
-fn precision_floor<P: BernsteinPieces<Ball> + ?Sized>(pw: &P, whole: &[Model], bits: u32) -> f64 {
+fn precision_floor(points: &[Vec<[Ball; 3]>], whole: &[Model], bits: u32) -> f64 {
     let zero_width = Float::with_val(bits, 0);
-    let size = (0..pw.count())
-        .flat_map(|k| pw.control_points(k))
-        .flat_map(|p| p.into_iter())
+    let size = points
+        .iter()
+        .flatten()
+        .flatten()
         .map(|x| x.mid().to_f64().abs())
         .fold(0.0f64, f64::max);
     let squared_floor = 16.0 * size * 2f64.powi(-(bits.min(2000) as i32) / 2);
@@ -458,13 +463,19 @@ pub fn proven_error_until<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?S
     // Whole-segment models first: their centres give a lower bound that sizes the
     // remainder tolerance; only segments whose remainder exceeds it are split.
     let (zero, one) = (Float::with_val(bits, 0), Float::with_val(bits, 1));
+    // Every segment's control points, computed once (a PH segment derives them from its
+    // preimage by quaternion products).
+    let points: Vec<Vec<[Ball; 3]>> = (0..n)
+        .into_par_iter()
+        .map(carried(|k| pw.control_points(k)))
+        .collect();
     let whole: Vec<Model> = (0..n)
         .into_par_iter()
         .map(carried(|k| {
-            model(curve, pw, (k, &pw.control_points(k)), (&zero, &one))
+            model(curve, pw, (k, &points[k]), (&zero, &one))
         }))
         .collect();
-    let floor = precision_floor(pw, &whole, bits);
+    let floor = precision_floor(&points, &whole, bits);
     // The remainder each piece must reach: a tenth of the target width at the lower bound,
     // or the floor.
     let tolerance_at = |lower: f64| (lower * target / 10.0).max(floor);
@@ -472,12 +483,15 @@ pub fn proven_error_until<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?S
     if whole.iter().any(|m| m.remainder > tolerance_at(rough)) {
         // Some segment must be split: the bound sets how finely, so make it as good as a
         // direct evaluation can (the models' remainders may be too large to give one).
-        rough = rough.max(evaluated_lower_bound(curve, pw));
+        rough = rough.max(evaluated_lower_bound(curve, pw, &points));
     }
     let tolerance = tolerance_at(rough);
     let models: Vec<Model> = whole
         .into_par_iter()
-        .flat_map_iter(carried(|m| pieces(curve, pw, m, tolerance, deadline)))
+        .flat_map_iter(carried(|m: Model| {
+            let k = m.segment;
+            pieces(curve, pw, (m, &points[k]), tolerance, deadline)
+        }))
         .collect();
     let (mut heap, mut best) = first_boxes(&models, bits);
     let mut boxes = models.len();

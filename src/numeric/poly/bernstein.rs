@@ -306,6 +306,76 @@ pub fn bernstein_jet<T: Field, const D: usize>(
     out
 }
 
+/// The whole Taylor expansion at `u` of the Bernstein polynomial Σ c_i B_i^n on [0, 1] with
+/// vector coefficients: a_j = p^(j)(u)/j! for j = 0…n, in O(n²) operations where
+/// [`bernstein_jet`] to order n takes O(n³).
+///
+/// For u ≤ ½, one de Casteljau triangle at u gives the control points r_0…r_n of p on [u, 1]
+/// (subdivision), and p(u + (1 − u)v) = Σ r_i B_i^n(v) has the Taylor coefficients
+/// C(n, j)·Δ^j r_0 in v at v = 0 (Eq. 14 of paper 000 with n!/(n−j)!/j! = C(n, j)), so
+/// a_j = C(n, j)·Δ^j r_0/(1 − u)^j. For u > ½ the reversed polygon at 1 − u gives the same
+/// with the odd coefficients negated; either way the division is by a length of at least ½.
+///
+/// # Panics
+/// If `ctrl` is empty.
+#[allow(clippy::needless_range_loop)] // component loops over the const dimension D
+pub fn bernstein_taylor<T: Field, const D: usize>(ctrl: &[[T; D]], u: &T) -> Vec<[T; D]> {
+    let ctx = u.ctx();
+    let one = T::one_in(&ctx);
+    let half = T::from_ratio(1, 2, &ctx);
+    let mirrored = *u > half;
+    let (mut work, x): (Vec<[T; D]>, T) = if mirrored {
+        (ctrl.iter().rev().cloned().collect(), one.clone() - u)
+    } else {
+        (ctrl.to_vec(), u.clone())
+    };
+    let n = work.len() - 1;
+    let length = one - &x;
+    // The triangle in place: after pass r, work[0..=n−r] holds level r of de Casteljau,
+    // b_i^(r) = (1 − x)·b_i^(r−1) + x·b_(i+1)^(r−1). The right polygon is the last entry of
+    // every level, r_j = b_j^(n−j): pass r yields r_(n−r).
+    let mut right: Vec<[T; D]> = Vec::with_capacity(n + 1);
+    right.push(work[n].clone());
+    for r in 1..=n {
+        for i in 0..=n - r {
+            for d in 0..D {
+                let mut v = work[i][d].clone() * &length;
+                v.mul_add_assign(&work[i + 1][d], &x);
+                work[i][d] = v;
+            }
+        }
+        right.push(work[n - r].clone());
+    }
+    // right[r] = r_(n−r); reversed, right[j] = r_j.
+    right.reverse();
+    // Forward differences of r in place: after pass j, right[0] is Δ^j r_0.
+    let mut out = Vec::with_capacity(n + 1);
+    let mut scale = T::one_in(&ctx);
+    for j in 0..=n {
+        if j > 0 {
+            for i in 0..=n - j {
+                for d in 0..D {
+                    let next = right[i + 1][d].clone() - &right[i][d];
+                    right[i][d] = next;
+                }
+            }
+            // C(n, j)/(1 − x)^j from C(n, j − 1)/(1 − x)^(j − 1).
+            scale *= &T::from_ratio((n - j + 1) as i64, j as i64, &ctx);
+            scale /= &length;
+        }
+        let negate = mirrored && j % 2 == 1;
+        out.push(std::array::from_fn(|d| {
+            let a = right[0][d].clone() * &scale;
+            if negate {
+                -a
+            } else {
+                a
+            }
+        }));
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -351,6 +421,29 @@ mod tests {
                 b.nth_derivative(j).eval(&q(2, 1)),
                 power_basis_derivative(&a, j, &q(1, 2), &b.duration())
             );
+        }
+    }
+
+    #[test]
+    fn taylor_expansion_is_the_jet_over_factorials() {
+        let ctrl: Vec<[BigRational; 2]> = [(1, 3), (-2, 5), (7, 2), (0, 1), (5, -4), (-3, 2)]
+            .iter()
+            .map(|&(x, y)| [q(x, 1), q(y, 7)])
+            .collect();
+        // Both sides of ½ (the mirrored branch), ½ itself and the ends.
+        for u in [q(0, 1), q(1, 3), q(1, 2), q(3, 4), q(1, 1)] {
+            let jet = bernstein_jet(&ctrl, &u, 5);
+            let taylor = bernstein_taylor(&ctrl, &u);
+            assert_eq!(taylor.len(), 6);
+            let mut factorial = q(1, 1);
+            for (j, (a, d)) in taylor.iter().zip(&jet).enumerate() {
+                if j > 0 {
+                    factorial *= q(j as i64, 1);
+                }
+                for i in 0..2 {
+                    assert_eq!(a[i], d[i].clone() / &factorial, "u = {u}, j = {j}");
+                }
+            }
         }
     }
 
