@@ -7,7 +7,7 @@ use trajverify::algo::ph::piecewise::{certified_error, convert};
 use trajverify::curve::enclosure::proven_error;
 use trajverify::curve::{Curve, ExprCurve};
 use trajverify::scalar::ball::Ball;
-use trajverify::scalar::{BigRational, Field, Float};
+use trajverify::scalar::{BigRational, Field, Float, Real};
 const CURVE: &str = "[1.5*sin(7.2*t), cos(9*t), exp(cos(1.8*t))]";
 
 #[test]
@@ -155,5 +155,114 @@ fn a_hermite_interpolants_enclosure_contains_its_certified_maximum() {
             e.upper
         );
         assert!(e.relative_width() <= 1e-6, "m = {m}, n = {n}");
+    }
+}
+
+/// The test curve's conversion on `n` segments in balls, its error models and enclosure.
+fn models_of(
+    n: usize,
+) -> (
+    trajverify::algo::ph::piecewise::PiecewisePh<Ball>,
+    trajverify::curve::enclosure::ErrorModels,
+    trajverify::curve::enclosure::ErrorEnclosure,
+) {
+    use trajverify::curve::enclosure::ErrorModels;
+    let curve = ExprCurve::parse(CURVE).unwrap().compile::<Ball>(&256);
+    let pw = convert(
+        &curve,
+        &Ball::from_i64(0, &256),
+        &Ball::from_i64(1, &256),
+        n,
+        4,
+        &FreeParameters::zero(4, &256),
+        false,
+    )
+    .unwrap();
+    let models = ErrorModels::build(&curve, &pw, 1e-6, None);
+    let e = models.enclose(1e-6, 200_000, None);
+    (pw, models, e)
+}
+
+#[test]
+fn outside_the_regions_reaching_a_threshold_the_error_is_proven_below_it() {
+    use trajverify::numeric::poly::bernstein::bernstein_jet;
+    use trajverify::numeric::quat::vec3;
+    let n = 16;
+    let (pw, models, e) = models_of(n);
+    let curve = ExprCurve::parse(CURVE).unwrap().compile::<Ball>(&256);
+    let threshold = e.lower.to_f64() * 0.7;
+    let regions = models.regions_reaching(threshold, 1.0 / 32.0);
+    let h = Ball::from_ratio(1, n as i64, &256);
+    let (mut outside, mut total) = (0, 0);
+    for k in 0..n {
+        let points = pw.segments()[k].control_points();
+        for j in 0..=200 {
+            let xi = f64::from(j) / 200.0;
+            total += 1;
+            if regions
+                .iter()
+                .any(|r| r.segment == k && r.lo <= xi && xi <= r.hi)
+            {
+                continue;
+            }
+            outside += 1;
+            let u = Ball::from_f64(xi, &256);
+            let t = Ball::from_i64(k as i64, &256) * &h + &(h.clone() * &u);
+            let d = vec3::sub(&curve.jet(&t, 0)[0], &bernstein_jet(&points, &u, 0)[0]);
+            let norm = vec3::dot(&d, &d).sqrt();
+            assert!(
+                norm.upper().to_f64() < threshold,
+                "segment {k}, ξ = {xi}: {} ≥ {threshold}",
+                norm.upper()
+            );
+        }
+    }
+    // The screen must leave most points out to be worth anything, and keep the maximum.
+    assert!(outside * 2 > total, "{outside} of {total} points left out");
+    assert!(regions.iter().any(|r| r.segment == e.segment));
+}
+
+#[test]
+fn a_screened_grid_gives_the_full_grids_maxima_bit_for_bit() {
+    use trajverify::algo::ph::grid::{certified_grid_error, GridScreen};
+    let c = ExprCurve::parse(CURVE).unwrap();
+    let zero = FreeParameters::zero(4, &());
+    let (a, b) = (
+        BigRational::from_integer(0.into()),
+        BigRational::from_integer(1.into()),
+    );
+    for n in [4usize, 64] {
+        let (_, models, e) = models_of(n);
+        // linspace(1e-6, 1, 100·n), as the authors' code evaluates it.
+        let m = 100 * n as i64;
+        let ts: Vec<BigRational> = (0..m)
+            .map(|j| BigRational::new((m - 1 + 999_999 * j).into(), (1_000_000 * (m - 1)).into()))
+            .collect();
+        let grid = |screen: Option<&GridScreen>| {
+            certified_grid_error(
+                |bits| c.compile::<Float>(&bits),
+                (&a, &b),
+                n,
+                4,
+                &zero,
+                &ts,
+                (128, 256),
+                screen,
+            )
+            .unwrap()
+        };
+        let full = grid(None);
+        let screen = GridScreen {
+            models: &models,
+            seed_segment: e.segment,
+        };
+        // Any segment to start from gives the same maxima; so does the worst one.
+        for seed in [e.segment, 0] {
+            let screened = grid(Some(&GridScreen {
+                seed_segment: seed,
+                ..screen
+            }));
+            assert_eq!(full, screened, "n = {n}, seed segment {seed}");
+        }
     }
 }

@@ -46,6 +46,8 @@ use std::time::Instant;
 pub const ORDER: usize = 17;
 /// Halvings of a piece allowed while its Taylor remainder is too large.
 const MAX_PIECE_DEPTH: u32 = 12;
+/// Halvings of a box allowed in [`ErrorModels::regions_reaching`].
+const MAX_REGION_DEPTH: u32 = 20;
 
 /// A proven enclosure lower ≤ E ≤ upper.
 #[derive(Clone, Debug)]
@@ -74,6 +76,8 @@ impl ErrorEnclosure {
 /// bound of its remainder's norm.
 struct Model {
     segment: usize,
+    /// Centre u_c of the piece.
+    centre: Float,
     /// Half-width ω of the piece in u.
     half_width: Float,
     /// F(s) = ‖Q(s)‖², coefficients of s⁰ … s³⁴.
@@ -155,7 +159,7 @@ fn model<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
     let xc = tk.clone() + &(h.clone() * &Ball::exact(uc.clone()));
     let gamma = curve.jet(&xc, ORDER);
     // p^(j)(u_c)/j!, all of them at once (p has degree ≤ ORDER: the rest are 0).
-    let p = bernstein_taylor(points, &Ball::exact(uc));
+    let p = bernstein_taylor(points, &Ball::exact(uc.clone()));
     // q_j = γ^(j) h^j/j! − p^(j)/j!.
     let mut scale = Ball::one_in(&bits);
     let mut factorial = Ball::one_in(&bits);
@@ -213,6 +217,7 @@ fn model<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
     let curvature = derivative(&slope);
     Model {
         segment: k,
+        centre: uc,
         half_width: omega,
         norm2,
         slope,
@@ -220,6 +225,18 @@ fn model<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
         // √ rounded up, with margin for the f64 sum.
         remainder: ((remainder2 * (1.0 + 1e-12)).sqrt() * (1.0 + 1e-12) + seam) * (1.0 + 1e-15),
     }
+}
+
+/// An end of the box s₀ ± w of a model in u = u_c + s: the lower end rounded down
+/// (`Round::Down`) or the upper end rounded up (`Round::Up`), every step in that direction.
+fn box_end(m: &Model, centre: &Float, half_width: &Float, round: Round) -> f64 {
+    let bits = centre.prec();
+    let u = Float::with_val_round(bits, &m.centre + centre, round).0;
+    let end = match round {
+        Round::Down => Float::with_val_round(bits, &u - half_width, round).0,
+        _ => Float::with_val_round(bits, &u + half_width, round).0,
+    };
+    end.to_f64_round(round)
 }
 
 /// Proven bounds of ‖d‖ on the box s₀ ± w of a model: (lower at s₀, upper on the box).
@@ -458,75 +475,169 @@ pub fn proven_error_until<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?S
     max_boxes: usize,
     deadline: Option<Instant>,
 ) -> ErrorEnclosure {
-    let bits = pw.interval().0.ctx();
-    let n = pw.count();
-    // Whole-segment models first: their centres give a lower bound that sizes the
-    // remainder tolerance; only segments whose remainder exceeds it are split.
-    let (zero, one) = (Float::with_val(bits, 0), Float::with_val(bits, 1));
-    // Every segment's control points, computed once (a PH segment derives them from its
-    // preimage by quaternion products).
-    let points: Vec<Vec<[Ball; 3]>> = (0..n)
-        .into_par_iter()
-        .map(carried(|k| pw.control_points(k)))
-        .collect();
-    let whole: Vec<Model> = (0..n)
-        .into_par_iter()
-        .map(carried(|k| {
-            model(curve, pw, (k, &points[k]), (&zero, &one))
-        }))
-        .collect();
-    let floor = precision_floor(&points, &whole, bits);
-    // The remainder each piece must reach: a tenth of the target width at the lower bound,
-    // or the floor.
-    let tolerance_at = |lower: f64| (lower * target / 10.0).max(floor);
-    let mut rough = sampled_lower_bound(&whole, bits);
-    if whole.iter().any(|m| m.remainder > tolerance_at(rough)) {
-        // Some segment must be split: the bound sets how finely, so make it as good as a
-        // direct evaluation can (the models' remainders may be too large to give one).
-        rough = rough.max(evaluated_lower_bound(curve, pw, &points));
+    ErrorModels::build(curve, pw, target, deadline).enclose(target, max_boxes, deadline)
+}
+
+/// The Taylor models of the error d = γ − p over every segment, each piece's remainder below
+/// what a search to relative width `target` needs: what [`proven_error`] searches, kept for
+/// other questions about the same error ([`ErrorModels::regions_reaching`]).
+pub struct ErrorModels {
+    models: Vec<Model>,
+    /// The precision floor (see [`precision_floor`]).
+    floor: f64,
+    bits: u32,
+    segments: usize,
+}
+
+/// An interval [lo, hi] of the local parameter u of one segment (bounds rounded outward).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Region {
+    /// The segment.
+    pub segment: usize,
+    /// Lower end in u, rounded down.
+    pub lo: f64,
+    /// Upper end in u, rounded up.
+    pub hi: f64,
+}
+
+impl ErrorModels {
+    /// The models of `pw` against `curve`, pieces halved until their Taylor remainders allow
+    /// a search to relative width `target` (or until `deadline`: a piece left unsplit keeps
+    /// its whole remainder in every bound, which stays proven, only wider).
+    pub fn build<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
+        curve: &C,
+        pw: &P,
+        target: f64,
+        deadline: Option<Instant>,
+    ) -> Self {
+        let bits = pw.interval().0.ctx();
+        let n = pw.count();
+        // Whole-segment models first: their centres give a lower bound that sizes the
+        // remainder tolerance; only segments whose remainder exceeds it are split.
+        let (zero, one) = (Float::with_val(bits, 0), Float::with_val(bits, 1));
+        // Every segment's control points, computed once (a PH segment derives them from its
+        // preimage by quaternion products).
+        let points: Vec<Vec<[Ball; 3]>> = (0..n)
+            .into_par_iter()
+            .map(carried(|k| pw.control_points(k)))
+            .collect();
+        let whole: Vec<Model> = (0..n)
+            .into_par_iter()
+            .map(carried(|k| {
+                model(curve, pw, (k, &points[k]), (&zero, &one))
+            }))
+            .collect();
+        let floor = precision_floor(&points, &whole, bits);
+        // The remainder each piece must reach: a tenth of the target width at the lower
+        // bound, or the floor.
+        let tolerance_at = |lower: f64| (lower * target / 10.0).max(floor);
+        let mut rough = sampled_lower_bound(&whole, bits);
+        if whole.iter().any(|m| m.remainder > tolerance_at(rough)) {
+            // Some segment must be split: the bound sets how finely, so make it as good as a
+            // direct evaluation can (the models' remainders may be too large to give one).
+            rough = rough.max(evaluated_lower_bound(curve, pw, &points));
+        }
+        let tolerance = tolerance_at(rough);
+        let models: Vec<Model> = whole
+            .into_par_iter()
+            .flat_map_iter(carried(|m: Model| {
+                let k = m.segment;
+                pieces(curve, pw, (m, &points[k]), tolerance, deadline)
+            }))
+            .collect();
+        ErrorModels {
+            models,
+            floor,
+            bits,
+            segments: n,
+        }
     }
-    let tolerance = tolerance_at(rough);
-    let models: Vec<Model> = whole
-        .into_par_iter()
-        .flat_map_iter(carried(|m: Model| {
-            let k = m.segment;
-            pieces(curve, pw, (m, &points[k]), tolerance, deadline)
-        }))
-        .collect();
-    let (mut heap, mut best) = first_boxes(&models, bits);
-    let mut boxes = models.len();
-    let upper = loop {
-        let Some(top) = heap.pop() else { break best.0 };
-        // No bisection narrows a box below its model's Taylor remainder (both bounds carry
-        // it) and the precision floor: stop there too.
-        let irreducible = 2.0 * (models[top.model].remainder + floor);
-        let done = top.upper <= best.0 * (1.0 + target) || top.upper - best.0 <= irreducible;
-        if done || boxes >= max_boxes || passed(deadline) {
-            break top.upper;
-        }
-        let w = Float::with_val(bits, &top.half_width) / 2u32;
-        for sign in [-1i32, 1] {
-            let step = Float::with_val(bits, &w * sign);
-            let centre = Float::with_val(bits, &top.centre + &step);
-            let (lo, up) = box_bounds(&models[top.model], &centre, &w);
-            boxes += 1;
-            if lo > best.0 {
-                best = (lo, models[top.model].segment);
+
+    /// The number of segments the models cover.
+    pub fn segments(&self) -> usize {
+        self.segments
+    }
+
+    /// Proven bounds lower ≤ E ≤ upper by branch and bound over the boxes of the models,
+    /// until (upper − lower)/lower ≤ `target`, upper − lower is irreducible (the models'
+    /// remainders and the precision floor), `max_boxes` boxes were evaluated, or `deadline`.
+    pub fn enclose(
+        &self,
+        target: f64,
+        max_boxes: usize,
+        deadline: Option<Instant>,
+    ) -> ErrorEnclosure {
+        let (models, floor, bits) = (&self.models, self.floor, self.bits);
+        let (mut heap, mut best) = first_boxes(models, bits);
+        let mut boxes = models.len();
+        let upper = loop {
+            let Some(top) = heap.pop() else { break best.0 };
+            // No bisection narrows a box below its model's Taylor remainder (both bounds
+            // carry it) and the precision floor: stop there too.
+            let irreducible = 2.0 * (models[top.model].remainder + floor);
+            let done = top.upper <= best.0 * (1.0 + target) || top.upper - best.0 <= irreducible;
+            if done || boxes >= max_boxes || passed(deadline) {
+                break top.upper;
             }
-            if up > best.0 {
-                heap.push(Candidate {
-                    upper: up,
-                    model: top.model,
-                    centre,
-                    half_width: w.clone(),
-                });
+            let w = Float::with_val(bits, &top.half_width) / 2u32;
+            for sign in [-1i32, 1] {
+                let step = Float::with_val(bits, &w * sign);
+                let centre = Float::with_val(bits, &top.centre + &step);
+                let (lo, up) = box_bounds(&models[top.model], &centre, &w);
+                boxes += 1;
+                if lo > best.0 {
+                    best = (lo, models[top.model].segment);
+                }
+                if up > best.0 {
+                    heap.push(Candidate {
+                        upper: up,
+                        model: top.model,
+                        centre,
+                        half_width: w.clone(),
+                    });
+                }
             }
+        };
+        ErrorEnclosure {
+            lower: Float::with_val(64, best.0),
+            upper: Float::with_val(64, upper.max(best.0)),
+            segment: best.1,
+            boxes,
         }
-    };
-    ErrorEnclosure {
-        lower: Float::with_val(64, best.0),
-        upper: Float::with_val(64, upper.max(best.0)),
-        segment: best.1,
-        boxes,
+    }
+
+    /// Where ‖γ − p‖ may reach `threshold`: intervals of u of at most `width` (or whole
+    /// boxes at the halving limit) outside which every point of every segment is proven to
+    /// have ‖γ(t_k + hu) − p_k(u)‖ < `threshold`. Each model's piece is halved while a box's
+    /// proven upper bound is at least the threshold; boxes below it are dropped.
+    pub fn regions_reaching(&self, threshold: f64, width: f64) -> Vec<Region> {
+        let bits = self.bits;
+        self.models
+            .par_iter()
+            .flat_map_iter(|m| {
+                let mut found = Vec::new();
+                let mut todo = vec![(Float::with_val(bits, 0), m.half_width.clone(), 0u32)];
+                while let Some((centre, half_width, depth)) = todo.pop() {
+                    if box_bounds(m, &centre, &half_width).1 < threshold {
+                        continue;
+                    }
+                    let narrow = half_width.to_f64_round(Round::Up) * 2.0 <= width;
+                    if narrow || depth >= MAX_REGION_DEPTH {
+                        found.push(Region {
+                            segment: m.segment,
+                            lo: box_end(m, &centre, &half_width, Round::Down),
+                            hi: box_end(m, &centre, &half_width, Round::Up),
+                        });
+                        continue;
+                    }
+                    let w = Float::with_val(bits, &half_width) / 2u32;
+                    for sign in [-1i32, 1] {
+                        let c = Float::with_val(bits, &w * sign) + &centre;
+                        todo.push((c, w.clone(), depth + 1));
+                    }
+                }
+                found
+            })
+            .collect()
     }
 }

@@ -42,6 +42,7 @@
 //! assert!((precise - 1u32).abs() < 1e-60);
 //! ```
 
+pub mod grid;
 pub mod hermite;
 pub mod piecewise;
 pub mod symbolic;

@@ -14,10 +14,10 @@
 //! Bernstein approximant; [`PiecewisePh`] is one ([`BernsteinPieces`]). Here: the paper's grid
 //! maximum and the certified error of a conversion, recomputed on one segment at 2p bits.
 
+pub use super::grid::{certified_grid_error, grid_distances, grid_error};
 use super::hermite::{interpolate, FreeParameters, HermiteData, PhHermiteError};
 use super::{bernstein_jet, PhCurve};
 use crate::curve::approx::recertify;
-use crate::curve::approx::SegmentDistance;
 pub use crate::curve::approx::{
     conversion_error, knot, refine_local_max, BernsteinPieces, CertifiedError, ConversionError,
     DEFAULT_SAMPLES,
@@ -516,53 +516,9 @@ pub fn sample_points<T: Real>(pw: &PiecewisePh<T>, per_segment: usize) -> Vec<[T
     out
 }
 
-/// The distances |γ(t) − p(t)| at the global parameters `ts` (each in [a, b]), in order:
-/// what a sampled evaluation of the error measures.
-pub fn grid_distances<T: Real, C: Curve<T> + ?Sized>(
-    curve: &C,
-    pw: &PiecewisePh<T>,
-    ts: &[T],
-) -> Vec<T> {
-    let h = pw.step();
-    let mut per_segment: Vec<Vec<(usize, T)>> = vec![Vec::new(); pw.segments.len()];
-    for (i, t) in ts.iter().enumerate() {
-        // locate puts t = b at ξ = 1 of the last segment.
-        let (k, xi) = pw.locate(t);
-        per_segment[k].push((i, xi));
-    }
-    let found: Vec<Vec<(usize, T)>> = pw
-        .segments
-        .par_iter()
-        .enumerate()
-        .map(carried(|(k, seg): (usize, &PhCurve<T>)| {
-            if per_segment[k].is_empty() {
-                return Vec::new();
-            }
-            let dist = SegmentDistance::new(curve, &seg.control_points(), &pw.knot(k), &h);
-            per_segment[k]
-                .iter()
-                .map(|(i, xi)| (*i, dist.value(xi).sqrt()))
-                .collect()
-        }))
-        .collect();
-    let mut out = vec![T::zero_in(&h.ctx()); ts.len()];
-    for (i, d) in found.into_iter().flatten() {
-        out[i] = d;
-    }
-    out
-}
-
-/// The largest of [`grid_distances`]: the error as a maximum over sample points, which can
-/// only be below the true maximum of [`conversion_error`].
-pub fn grid_error<T: Real, C: Curve<T> + ?Sized>(curve: &C, pw: &PiecewisePh<T>, ts: &[T]) -> T {
-    grid_distances(curve, pw, ts)
-        .into_iter()
-        .fold(T::zero_in(&pw.a.ctx()), |m, d| if d > m { d } else { m })
-}
-
 /// A uniform piecewise conversion of `curve` on [a, b] (given exactly) at `bits`, without the
 /// roll correction (positions do not depend on it).
-fn convert_at<C: Curve<Float>>(
+pub(super) fn convert_at<C: Curve<Float>>(
     curve: &C,
     (a, b): (&BigRational, &BigRational),
     segments: usize,
@@ -579,7 +535,7 @@ fn convert_at<C: Curve<Float>>(
 }
 
 /// Segment k of that conversion alone, at `bits`: the PH curve, its start t_k and the step h.
-fn segment_at<C: Curve<Float>>(
+pub(super) fn segment_at<C: Curve<Float>>(
     curve: &C,
     (a, b): (&BigRational, &BigRational),
     (segments, k): (usize, usize),
@@ -596,53 +552,6 @@ fn segment_at<C: Curve<Float>>(
     let jet_at = |j: usize| segment_jet(curve, &knot(&a, &b, segments, j), &h, m);
     let seg = interpolate(&HermiteData::from_jets(&jet_at(k), &jet_at(k + 1))?, &free)?;
     Ok((seg, knot(&a, &b, segments, k), h))
-}
-
-/// The maximum of ‖γ − p‖ over the grid `ts` of [a, b], certified like [`certified_error`]:
-/// every point at `bits`, then the points whose distance comes within the evaluation noise of
-/// the largest (2^(10−bits) relative to the curve's size) again at `hi_bits`, each on its
-/// segment interpolated at `hi_bits`. Returns the two maxima.
-///
-/// # Errors
-/// Those of [`convert`] at `bits` (a, b rounded to `bits`); those of [`interpolate`] for a
-/// segment rebuilt at `hi_bits` (its data are not checked for finiteness there).
-pub fn certified_grid_error<C: Curve<Float>>(
-    make: impl Fn(u32) -> C,
-    interval: (&BigRational, &BigRational),
-    segments: usize,
-    m: usize,
-    free: &FreeParameters<BigRational>,
-    ts: &[BigRational],
-    (bits, hi_bits): (u32, u32),
-) -> Result<(Float, Float), PhHermiteError> {
-    let lo_curve = make(bits);
-    let pw = convert_at(&lo_curve, interval, segments, m, free, bits)?;
-    let ts_lo: Vec<Float> = ts.iter().map(|q| Float::from_rational(q, &bits)).collect();
-    let d = grid_distances(&lo_curve, &pw, &ts_lo);
-    let max_lo = d
-        .iter()
-        .fold(Float::new(bits), |m, x| if *x > m { x.clone() } else { m });
-    let size = vec3::norm(&lo_curve.jet(&pw.a, 0)[0]).max(&Float::with_val(bits, 1));
-    let noise = size * Float::with_val(bits, Float::i_exp(1, 10 - bits as i32));
-    let hi_curve = make(hi_bits);
-    let mut max_hi = Float::new(hi_bits);
-    for (i, _) in d
-        .iter()
-        .enumerate()
-        .filter(|(_, x)| **x >= max_lo.clone() - &noise)
-    {
-        let (k, _) = pw.locate(&ts_lo[i]);
-        let (seg, t0, h) = segment_at(&hi_curve, interval, (segments, k), m, free, hi_bits)?;
-        // ξ exactly: (t − t_k)/h from the rational t.
-        let xi_hi = (Float::from_rational(&ts[i], &hi_bits) - &t0) / &h;
-        let value = SegmentDistance::new(&hi_curve, &seg.control_points(), &t0, &h)
-            .value(&xi_hi)
-            .sqrt();
-        if value > max_hi {
-            max_hi = value;
-        }
-    }
-    Ok((max_lo, max_hi))
 }
 
 /// The observed convergence between two refinement levels (segments doubled): the ratio
@@ -724,6 +633,7 @@ mod tests {
             &FreeParameters::zero(4, &()),
             &grid,
             (64, 128),
+            None,
         )
         .unwrap();
         assert!((lo.to_f64() - g).abs() <= 1e-9 * g);

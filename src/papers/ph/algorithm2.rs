@@ -49,6 +49,7 @@ fn grid_error(segments: usize) -> Option<f64> {
         &FreeParameters::zero(4, &()),
         &paper_grid(segments),
         (BITS, HI_BITS),
+        None,
     )
     .ok()
     .map(|(_, hi)| hi.to_f64())

@@ -6,7 +6,7 @@ use super::super::{Outcome, Verdict};
 use super::table1::{curve, Row};
 use crate::algo::ph::hermite::FreeParameters;
 use crate::algo::ph::piecewise::convert;
-use crate::curve::enclosure::{proven_error, ErrorEnclosure};
+use crate::curve::enclosure::{ErrorEnclosure, ErrorModels};
 use crate::scalar::ball::Ball;
 use crate::scalar::{Field, Float};
 use rug::float::Round;
@@ -26,13 +26,30 @@ pub struct ProvenRow {
     pub enclosure: Option<ErrorEnclosure>,
 }
 
-/// Proven enclosures for 2ⁿ segments, n in `levels`.
-pub fn proven_rows(levels: &[u32]) -> Vec<ProvenRow> {
+/// Proven enclosures for 2ⁿ segments, n in `levels`, each with what `then` computes from its
+/// Taylor models and enclosure while they exist (`None` where the conversion in balls
+/// failed: `then` is called with `None`).
+pub fn proven_rows_with<R>(
+    levels: &[u32],
+    then: impl Fn(usize, Option<(&ErrorModels, &ErrorEnclosure)>) -> R,
+) -> Vec<(ProvenRow, R)> {
     levels
         .iter()
-        .map(|&n| ProvenRow {
-            segments: 1usize << n,
-            enclosure: proven_at(1usize << n, TARGET),
+        .map(|&n| {
+            let segments = 1usize << n;
+            let (enclosure, found) = match proven_with(segments, TARGET, |models, e| {
+                then(segments, Some((models, e)))
+            }) {
+                Some((e, r)) => (Some(e), r),
+                None => (None, then(segments, None)),
+            };
+            (
+                ProvenRow {
+                    segments,
+                    enclosure,
+                },
+                found,
+            )
         })
         .collect()
 }
@@ -40,14 +57,26 @@ pub fn proven_rows(levels: &[u32]) -> Vec<ProvenRow> {
 /// The proven enclosure of the test curve's conversion error with `segments` segments,
 /// searched to relative width `target` (`None` if the conversion in balls failed).
 pub fn proven_at(segments: usize, target: f64) -> Option<ErrorEnclosure> {
+    proven_with(segments, target, |_, _| ()).map(|(e, ())| e)
+}
+
+/// [`proven_at`], and what `then` computes from the Taylor models of the error and the
+/// enclosure before the models are dropped.
+fn proven_with<R>(
+    segments: usize,
+    target: f64,
+    then: impl FnOnce(&ErrorModels, &ErrorEnclosure) -> R,
+) -> Option<(ErrorEnclosure, R)> {
     let c = curve().compile::<Ball>(&BITS);
     let (a, b) = (Ball::from_i64(0, &BITS), Ball::from_i64(1, &BITS));
     let free = FreeParameters::zero(4, &BITS);
     // Without the roll correction: it turns each preimage by Q(α), which leaves the curve p,
     // and so E, unchanged.
-    convert(&c, &a, &b, segments, 4, &free, false)
-        .ok()
-        .map(|pw| proven_error(&c, &pw, target, MAX_BOXES))
+    let pw = convert(&c, &a, &b, segments, 4, &free, false).ok()?;
+    let models = ErrorModels::build(&c, &pw, target, None);
+    let enclosure = models.enclose(target, MAX_BOXES, None);
+    let found = then(&models, &enclosure);
+    Some((enclosure, found))
 }
 
 /// [lower, upper] printed outward with 8 significant digits.

@@ -1,0 +1,213 @@
+//! The conversion error of paper 001 measured the way the authors' code measures it: the
+//! largest distance ‖γ(t) − p(t)‖ over a grid of parameters t (their `phodcos.py` evaluates
+//! linspace(1e-6, 1, 100·N)), as opposed to the true maximum over ξ of Eq. (21)
+//! ([`super::piecewise::certified_error`]).
+//!
+//! [`certified_grid_error`] evaluates every grid point at p bits and recomputes at 2p bits
+//! the points within the evaluation noise of the largest. With a [`GridScreen`] (proven
+//! Taylor models of the same conversion's error, [`ErrorModels`]) it evaluates only the points
+//! that can reach the maximum: it first evaluates one segment's points (the one where the
+//! proven lower bound of the error was found), takes their largest distance L, and keeps
+//! only the points lying in the regions where the models do not prove ‖γ − p‖ < L − 4ε
+//! (ε the evaluation noise). A skipped point's distance at p bits is then below L − 3ε, so it
+//! is neither the maximum nor among the points recomputed at 2p bits, and both maxima are the
+//! ones the full grid gives, bit for bit; what it assumes is what the recomputation's own
+//! choice of points assumes, that a distance at p bits is within ε of the exact one.
+
+use super::hermite::{FreeParameters, PhHermiteError};
+use super::piecewise::{convert_at, segment_at, PiecewisePh};
+use super::PhCurve;
+use crate::curve::approx::SegmentDistance;
+use crate::curve::enclosure::ErrorModels;
+use crate::curve::Curve;
+use crate::numeric::quat::vec3;
+use crate::scalar::ball::carried;
+use crate::scalar::{BigRational, Field, Float, Real};
+use rayon::prelude::*;
+use rug::float::Round;
+
+/// A grid point located on its segment: (index in the grid, segment k, local ξ).
+type Located<T> = (usize, usize, T);
+
+/// ‖γ − p‖ at located points, evaluated segment by segment in parallel: (index, distance) in
+/// the order of the segments, then of `points`.
+fn distances_at<T: Real, C: Curve<T> + ?Sized>(
+    curve: &C,
+    pw: &PiecewisePh<T>,
+    points: &[Located<T>],
+) -> Vec<(usize, T)> {
+    let h = pw.step();
+    let mut per_segment: Vec<Vec<(usize, &T)>> = vec![Vec::new(); pw.segments().len()];
+    for (i, k, xi) in points {
+        per_segment[*k].push((*i, xi));
+    }
+    let found: Vec<Vec<(usize, T)>> = pw
+        .segments()
+        .par_iter()
+        .enumerate()
+        .map(carried(|(k, seg): (usize, &PhCurve<T>)| {
+            if per_segment[k].is_empty() {
+                return Vec::new();
+            }
+            let dist = SegmentDistance::new(curve, &seg.control_points(), &pw.knot(k), &h);
+            per_segment[k]
+                .iter()
+                .map(|(i, xi)| (*i, dist.value(xi).sqrt()))
+                .collect()
+        }))
+        .collect();
+    found.into_iter().flatten().collect()
+}
+
+/// The grid `ts` located on the segments of `pw` (t = b at ξ = 1 of the last segment).
+fn located<T: Real>(pw: &PiecewisePh<T>, ts: &[T]) -> Vec<Located<T>> {
+    ts.iter()
+        .enumerate()
+        .map(|(i, t)| {
+            let (k, xi) = pw.locate(t);
+            (i, k, xi)
+        })
+        .collect()
+}
+
+/// The distances |γ(t) − p(t)| at the global parameters `ts` (each in [a, b]), in order:
+/// what a sampled evaluation of the error measures.
+pub fn grid_distances<T: Real, C: Curve<T> + ?Sized>(
+    curve: &C,
+    pw: &PiecewisePh<T>,
+    ts: &[T],
+) -> Vec<T> {
+    let mut out = vec![T::zero_in(&pw.step().ctx()); ts.len()];
+    for (i, d) in distances_at(curve, pw, &located(pw, ts)) {
+        out[i] = d;
+    }
+    out
+}
+
+/// The largest of [`grid_distances`]: the error as a maximum over sample points, which can
+/// only be below the true maximum of [`super::piecewise::conversion_error`].
+pub fn grid_error<T: Real, C: Curve<T> + ?Sized>(curve: &C, pw: &PiecewisePh<T>, ts: &[T]) -> T {
+    let zero = T::zero_in(&pw.step().ctx());
+    grid_distances(curve, pw, ts)
+        .into_iter()
+        .fold(zero, |m, d| if d > m { d } else { m })
+}
+
+/// What lets [`certified_grid_error`] skip grid points that cannot reach the maximum: proven
+/// Taylor models of the error of the same conversion (built in balls from the same curve,
+/// interval, segment count and free parameters), and the segment to start from (where the
+/// models' proven lower bound of the error was found: [`crate::curve::enclosure::ErrorEnclosure::segment`]).
+pub struct GridScreen<'a> {
+    /// The models.
+    pub models: &'a ErrorModels,
+    /// The segment evaluated first.
+    pub seed_segment: usize,
+}
+
+/// The width (in ξ) of the regions [`ErrorModels::regions_reaching`] returns: a few grid
+/// points each at the authors' 100 points per segment.
+const REGION_WIDTH: f64 = 1.0 / 32.0;
+/// How far (in ξ) a point's ξ at p bits may be from the exact one, with margin: a region is
+/// widened by it before a point is tested against it.
+const XI_SLACK: f64 = 1e-9;
+
+/// The distances at p bits of the points of `points` that can reach the maximum (see the
+/// module doc): the seed segment's, and those in the regions the models leave above L − 4ε.
+fn screened_distances<C: Curve<Float>>(
+    curve: &C,
+    pw: &PiecewisePh<Float>,
+    points: &[Located<Float>],
+    screen: &GridScreen,
+    noise: &Float,
+) -> Vec<(usize, Float)> {
+    let seed = screen.seed_segment;
+    let (first, rest): (Vec<Located<Float>>, Vec<Located<Float>>) =
+        points.iter().cloned().partition(|(_, k, _)| *k == seed);
+    let mut found = distances_at(curve, pw, &first);
+    let largest = found
+        .iter()
+        .map(|(_, d)| d)
+        .fold(
+            Float::new(noise.prec()),
+            |m, d| if *d > m { d.clone() } else { m },
+        );
+    let threshold = Float::with_val_round(
+        noise.prec(),
+        &largest - &(noise.clone() * 4u32),
+        Round::Down,
+    )
+    .0
+    .to_f64_round(Round::Down);
+    let kept: Vec<Located<Float>> =
+        if threshold > 0.0 && screen.models.segments() == pw.segments().len() {
+            let mut regions: Vec<Vec<(f64, f64)>> = vec![Vec::new(); pw.segments().len()];
+            for r in screen.models.regions_reaching(threshold, REGION_WIDTH) {
+                regions[r.segment].push((r.lo - XI_SLACK, r.hi + XI_SLACK));
+            }
+            rest.into_iter()
+                .filter(|(_, k, xi)| {
+                    let x = xi.to_f64();
+                    regions[*k].iter().any(|&(lo, hi)| lo <= x && x <= hi)
+                })
+                .collect()
+        } else {
+            rest
+        };
+    found.extend(distances_at(curve, pw, &kept));
+    found
+}
+
+/// The maximum of ‖γ − p‖ over the grid `ts` of [a, b], certified like
+/// [`super::piecewise::certified_error`]: every point at `bits` (or, with a [`GridScreen`],
+/// every point the screen does not prove below the maximum: the same maxima, see the module
+/// doc), then the points whose distance comes within the evaluation noise of the largest
+/// (2^(10−bits) relative to the curve's size) again at `hi_bits`, each on its segment
+/// interpolated at `hi_bits`. Returns the two maxima.
+///
+/// # Errors
+/// Those of [`super::piecewise::convert`] at `bits` (a, b rounded to `bits`); those of
+/// [`super::hermite::interpolate`] for a segment rebuilt at `hi_bits` (its data are not
+/// checked for finiteness there).
+#[allow(clippy::too_many_arguments)] // the conversion's definition, its grid and its screen
+pub fn certified_grid_error<C: Curve<Float>>(
+    make: impl Fn(u32) -> C,
+    interval: (&BigRational, &BigRational),
+    segments: usize,
+    m: usize,
+    free: &FreeParameters<BigRational>,
+    ts: &[BigRational],
+    (bits, hi_bits): (u32, u32),
+    screen: Option<&GridScreen>,
+) -> Result<(Float, Float), PhHermiteError> {
+    let lo_curve = make(bits);
+    let pw = convert_at(&lo_curve, interval, segments, m, free, bits)?;
+    let ts_lo: Vec<Float> = ts.iter().map(|q| Float::from_rational(q, &bits)).collect();
+    let points = located(&pw, &ts_lo);
+    let size = vec3::norm(&lo_curve.jet(pw.start(), 0)[0]).max(&Float::with_val(bits, 1));
+    let noise = size * Float::with_val(bits, Float::i_exp(1, 10 - bits as i32));
+    let mut d = match screen {
+        Some(screen) => screened_distances(&lo_curve, &pw, &points, screen, &noise),
+        None => distances_at(&lo_curve, &pw, &points),
+    };
+    // Grid order, so that the recomputation below meets the points as the full grid has them.
+    d.sort_by_key(|(i, _)| *i);
+    let max_lo = d.iter().fold(
+        Float::new(bits),
+        |m, (_, x)| if *x > m { x.clone() } else { m },
+    );
+    let hi_curve = make(hi_bits);
+    let mut max_hi = Float::new(hi_bits);
+    for (i, _) in d.iter().filter(|(_, x)| *x >= max_lo.clone() - &noise) {
+        let k = points[*i].1;
+        let (seg, t0, h) = segment_at(&hi_curve, interval, (segments, k), m, free, hi_bits)?;
+        // ξ exactly: (t − t_k)/h from the rational t.
+        let xi_hi = (Float::from_rational(&ts[*i], &hi_bits) - &t0) / &h;
+        let value = SegmentDistance::new(&hi_curve, &seg.control_points(), &t0, &h)
+            .value(&xi_hi)
+            .sqrt();
+        if value > max_hi {
+            max_hi = value;
+        }
+    }
+    Ok((max_lo, max_hi))
+}
