@@ -224,7 +224,7 @@ fn outside_the_regions_reaching_a_threshold_the_error_is_proven_below_it() {
 
 #[test]
 fn a_screened_grid_gives_the_full_grids_maxima_bit_for_bit() {
-    use trajverify::algo::ph::grid::{certified_grid_error, GridScreen};
+    use trajverify::algo::ph::grid::{certified_grid_error, ErrorScreen};
     let c = ExprCurve::parse(CURVE).unwrap();
     let zero = FreeParameters::zero(4, &());
     let (a, b) = (
@@ -238,7 +238,7 @@ fn a_screened_grid_gives_the_full_grids_maxima_bit_for_bit() {
         let ts: Vec<BigRational> = (0..m)
             .map(|j| BigRational::new((m - 1 + 999_999 * j).into(), (1_000_000 * (m - 1)).into()))
             .collect();
-        let grid = |screen: Option<&GridScreen>| {
+        let grid = |screen: Option<&ErrorScreen>| {
             certified_grid_error(
                 |bits| c.compile::<Float>(&bits),
                 (&a, &b),
@@ -252,17 +252,62 @@ fn a_screened_grid_gives_the_full_grids_maxima_bit_for_bit() {
             .unwrap()
         };
         let full = grid(None);
-        let screen = GridScreen {
+        let screen = ErrorScreen {
             models: &models,
             seed_segment: e.segment,
         };
         // Any segment to start from gives the same maxima; so does the worst one.
         for seed in [e.segment, 0] {
-            let screened = grid(Some(&GridScreen {
+            let screened = grid(Some(&ErrorScreen {
                 seed_segment: seed,
                 ..screen
             }));
             assert_eq!(full, screened, "n = {n}, seed segment {seed}");
+        }
+    }
+}
+
+#[test]
+fn a_screened_search_finds_the_full_searchs_maximum_bit_for_bit() {
+    use trajverify::algo::ph::grid::ErrorScreen;
+    use trajverify::algo::ph::piecewise::certified_error_screened;
+    let c = ExprCurve::parse(CURVE).unwrap();
+    let zero = FreeParameters::zero(4, &());
+    let (a, b) = (
+        BigRational::from_integer(0.into()),
+        BigRational::from_integer(1.into()),
+    );
+    for n in [4usize, 128] {
+        let (_, models, e) = models_of(n);
+        let search = |screen: Option<&ErrorScreen>| {
+            certified_error_screened(
+                |bits| c.compile::<Float>(&bits),
+                (&a, &b),
+                n,
+                4,
+                &zero,
+                (128, 256),
+                screen,
+            )
+            .unwrap()
+        };
+        let full = search(None);
+        for seed in [e.segment, 0] {
+            let screened = search(Some(&ErrorScreen {
+                models: &models,
+                seed_segment: seed,
+            }));
+            let same = (
+                &screened.lo,
+                &screened.hi,
+                &screened.sampled,
+                screened.segment,
+                &screened.xi,
+            ) == (&full.lo, &full.hi, &full.sampled, full.segment, &full.xi);
+            assert!(
+                same,
+                "n = {n}, seed segment {seed}: {screened:?} vs {full:?}"
+            );
         }
     }
 }

@@ -196,17 +196,33 @@ pub fn conversion_error<T: Real, C: Curve<T> + ?Sized, P: BernsteinPieces<T> + ?
     pw: &P,
     samples: usize,
 ) -> ConversionError<T> {
+    let all: Vec<usize> = (0..pw.count()).collect();
+    conversion_error_among(curve, pw, samples, &all)
+}
+
+/// [`conversion_error`] searched on the segments `segments` only (increasing, each below
+/// `pw.count()`): the same result whenever the others are known not to reach the maximum,
+/// sampled or refined (a screen by proven bounds, [`crate::algo::ph::grid::ErrorScreen`]).
+///
+/// # Panics
+/// If `segments` is empty or names a segment `pw` does not have.
+pub fn conversion_error_among<T: Real, C: Curve<T> + ?Sized, P: BernsteinPieces<T> + ?Sized>(
+    curve: &C,
+    pw: &P,
+    samples: usize,
+    segments: &[usize],
+) -> ConversionError<T> {
     let h = pw.step();
-    let per_segment: Vec<(T, T, T)> = (0..pw.count())
-        .into_par_iter()
-        .map(carried(|k| {
+    let per_segment: Vec<(T, T, T)> = segments
+        .par_iter()
+        .map(carried(|&k| {
             segment_error(curve, &pw.control_points(k), &pw.knot(k), &h, samples)
         }))
         .collect();
     let mut best = 0usize;
-    for k in 1..per_segment.len() {
-        if per_segment[k].0 > per_segment[best].0 {
-            best = k;
+    for i in 1..per_segment.len() {
+        if per_segment[i].0 > per_segment[best].0 {
+            best = i;
         }
     }
     let mut sampled = per_segment[0].1.clone();
@@ -219,7 +235,7 @@ pub fn conversion_error<T: Real, C: Curve<T> + ?Sized, P: BernsteinPieces<T> + ?
     ConversionError {
         max,
         sampled,
-        segment: best,
+        segment: segments[best],
         xi,
     }
 }

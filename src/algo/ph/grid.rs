@@ -4,7 +4,7 @@
 //! ([`super::piecewise::certified_error`]).
 //!
 //! [`certified_grid_error`] evaluates every grid point at p bits and recomputes at 2p bits
-//! the points within the evaluation noise of the largest. With a [`GridScreen`] (proven
+//! the points within the evaluation noise of the largest. With an [`ErrorScreen`] (proven
 //! Taylor models of the same conversion's error, [`ErrorModels`]) it evaluates only the points
 //! that can reach the maximum: it first evaluates one segment's points (the one where the
 //! proven lower bound of the error was found), takes their largest distance L, and keeps
@@ -13,6 +13,12 @@
 //! is neither the maximum nor among the points recomputed at 2p bits, and both maxima are the
 //! ones the full grid gives, bit for bit; what it assumes is what the recomputation's own
 //! choice of points assumes, that a distance at p bits is within ε of the exact one.
+//!
+//! The same screen serves the search for the true maximum
+//! ([`super::piecewise::certified_error`]): with L the seed segment's largest *sampled*
+//! distance, a segment where the models leave no region reaching L − 4ε has every sampled
+//! and every refined distance below L − 3ε, so it changes neither the sampled maximum nor
+//! the refined one, and is not searched.
 
 use super::hermite::{FreeParameters, PhHermiteError};
 use super::piecewise::{convert_at, segment_at, PiecewisePh};
@@ -93,15 +99,56 @@ pub fn grid_error<T: Real, C: Curve<T> + ?Sized>(curve: &C, pw: &PiecewisePh<T>,
         .fold(zero, |m, d| if d > m { d } else { m })
 }
 
-/// What lets [`certified_grid_error`] skip grid points that cannot reach the maximum: proven
-/// Taylor models of the error of the same conversion (built in balls from the same curve,
-/// interval, segment count and free parameters), and the segment to start from (where the
-/// models' proven lower bound of the error was found: [`crate::curve::enclosure::ErrorEnclosure::segment`]).
-pub struct GridScreen<'a> {
+/// What lets [`certified_grid_error`] and [`super::piecewise::certified_error`] skip grid
+/// points and segments that cannot reach the maximum (see the module doc): proven Taylor
+/// models of the error of the same conversion (built in balls from the same curve, interval,
+/// segment count and free parameters), and the segment to start from (where the models'
+/// proven lower bound of the error was found:
+/// [`crate::curve::enclosure::ErrorEnclosure::segment`]).
+pub struct ErrorScreen<'a> {
     /// The models.
     pub models: &'a ErrorModels,
     /// The segment evaluated first.
     pub seed_segment: usize,
+}
+
+/// The evaluation noise ε of a distance computed at p bits (the precision of `pw`):
+/// 2^(10−p) times the curve's size (|γ(a)|, at least 1).
+pub(super) fn evaluation_noise<C: Curve<Float>>(curve: &C, pw: &PiecewisePh<Float>) -> Float {
+    let bits = pw.start().prec();
+    let size = vec3::norm(&curve.jet(pw.start(), 0)[0]).max(&Float::with_val(bits, 1));
+    size * Float::with_val(bits, Float::i_exp(1, 10 - bits as i32))
+}
+
+/// The threshold L − 4ε below which a screen drops points, as a double rounded down (the
+/// distances ‖γ − p‖ of everything it drops are proven below it).
+fn threshold(largest: &Float, noise: &Float) -> f64 {
+    Float::with_val_round(noise.prec(), largest - &(noise.clone() * 4u32), Round::Down)
+        .0
+        .to_f64_round(Round::Down)
+}
+
+impl ErrorScreen<'_> {
+    /// The segments where ‖γ − p‖ may reach the threshold L − 4ε, the seed segment
+    /// included, increasing; `None` when the screen cannot drop anything (a threshold ≤ 0,
+    /// or models of another segment count).
+    pub(super) fn segments_reaching(
+        &self,
+        largest: &Float,
+        noise: &Float,
+        count: usize,
+    ) -> Option<Vec<usize>> {
+        let threshold = threshold(largest, noise);
+        if threshold <= 0.0 || self.models.segments() != count {
+            return None;
+        }
+        let mut reaching = vec![false; count];
+        reaching[self.seed_segment] = true;
+        for r in self.models.regions_reaching(threshold, REGION_WIDTH) {
+            reaching[r.segment] = true;
+        }
+        Some((0..count).filter(|&k| reaching[k]).collect())
+    }
 }
 
 /// The width (in ξ) of the regions [`ErrorModels::regions_reaching`] returns: a few grid
@@ -117,7 +164,7 @@ fn screened_distances<C: Curve<Float>>(
     curve: &C,
     pw: &PiecewisePh<Float>,
     points: &[Located<Float>],
-    screen: &GridScreen,
+    screen: &ErrorScreen,
     noise: &Float,
 ) -> Vec<(usize, Float)> {
     let seed = screen.seed_segment;
@@ -131,13 +178,7 @@ fn screened_distances<C: Curve<Float>>(
             Float::new(noise.prec()),
             |m, d| if *d > m { d.clone() } else { m },
         );
-    let threshold = Float::with_val_round(
-        noise.prec(),
-        &largest - &(noise.clone() * 4u32),
-        Round::Down,
-    )
-    .0
-    .to_f64_round(Round::Down);
+    let threshold = threshold(&largest, noise);
     let kept: Vec<Located<Float>> =
         if threshold > 0.0 && screen.models.segments() == pw.segments().len() {
             let mut regions: Vec<Vec<(f64, f64)>> = vec![Vec::new(); pw.segments().len()];
@@ -158,7 +199,7 @@ fn screened_distances<C: Curve<Float>>(
 }
 
 /// The maximum of ‖γ − p‖ over the grid `ts` of [a, b], certified like
-/// [`super::piecewise::certified_error`]: every point at `bits` (or, with a [`GridScreen`],
+/// [`super::piecewise::certified_error`]: every point at `bits` (or, with a [`ErrorScreen`],
 /// every point the screen does not prove below the maximum: the same maxima, see the module
 /// doc), then the points whose distance comes within the evaluation noise of the largest
 /// (2^(10−bits) relative to the curve's size) again at `hi_bits`, each on its segment
@@ -177,14 +218,13 @@ pub fn certified_grid_error<C: Curve<Float>>(
     free: &FreeParameters<BigRational>,
     ts: &[BigRational],
     (bits, hi_bits): (u32, u32),
-    screen: Option<&GridScreen>,
+    screen: Option<&ErrorScreen>,
 ) -> Result<(Float, Float), PhHermiteError> {
     let lo_curve = make(bits);
     let pw = convert_at(&lo_curve, interval, segments, m, free, bits)?;
     let ts_lo: Vec<Float> = ts.iter().map(|q| Float::from_rational(q, &bits)).collect();
     let points = located(&pw, &ts_lo);
-    let size = vec3::norm(&lo_curve.jet(pw.start(), 0)[0]).max(&Float::with_val(bits, 1));
-    let noise = size * Float::with_val(bits, Float::i_exp(1, 10 - bits as i32));
+    let noise = evaluation_noise(&lo_curve, &pw);
     let mut d = match screen {
         Some(screen) => screened_distances(&lo_curve, &pw, &points, screen, &noise),
         None => distances_at(&lo_curve, &pw, &points),

@@ -14,13 +14,14 @@
 //! Bernstein approximant; [`PiecewisePh`] is one ([`BernsteinPieces`]). Here: the paper's grid
 //! maximum and the certified error of a conversion, recomputed on one segment at 2p bits.
 
-pub use super::grid::{certified_grid_error, grid_distances, grid_error};
+use super::grid::evaluation_noise;
+pub use super::grid::{certified_grid_error, grid_distances, grid_error, ErrorScreen};
 use super::hermite::{interpolate, FreeParameters, HermiteData, PhHermiteError};
 use super::{bernstein_jet, PhCurve};
 use crate::curve::approx::recertify;
 pub use crate::curve::approx::{
-    conversion_error, knot, refine_local_max, BernsteinPieces, CertifiedError, ConversionError,
-    DEFAULT_SAMPLES,
+    conversion_error, conversion_error_among, knot, refine_local_max, BernsteinPieces,
+    CertifiedError, ConversionError, DEFAULT_SAMPLES,
 };
 use crate::curve::approx::{locate, locate_in_domain, pieces_breakpoints, pieces_derivatives};
 use crate::curve::parametric::{CurveError, Frame, ParamCurve, ParamCurveArclen, ParamCurveFrame};
@@ -587,9 +588,35 @@ pub fn certified_error<C: Curve<Float>>(
     bits: u32,
     hi_bits: u32,
 ) -> Result<CertifiedError, PhHermiteError> {
+    certified_error_screened(make, (a, b), segments, m, free, (bits, hi_bits), None)
+}
+
+/// [`certified_error`] that, given an [`ErrorScreen`] of the same conversion, searches only
+/// the segments the screen does not prove below the maximum: the same result, from fewer
+/// segments (see [`super::grid`]).
+///
+/// # Errors
+/// Those of [`certified_error`].
+pub fn certified_error_screened<C: Curve<Float>>(
+    make: impl Fn(u32) -> C,
+    (a, b): (&BigRational, &BigRational),
+    segments: usize,
+    m: usize,
+    free: &FreeParameters<BigRational>,
+    (bits, hi_bits): (u32, u32),
+    screen: Option<&ErrorScreen>,
+) -> Result<CertifiedError, PhHermiteError> {
     let lo_curve = make(bits);
     let pw = convert_at(&lo_curve, (a, b), segments, m, free, bits)?;
-    let e = conversion_error(&lo_curve, &pw, DEFAULT_SAMPLES);
+    let reaching = screen.and_then(|screen| {
+        let seed = conversion_error_among(&lo_curve, &pw, DEFAULT_SAMPLES, &[screen.seed_segment]);
+        let noise = evaluation_noise(&lo_curve, &pw);
+        screen.segments_reaching(&seed.sampled, &noise, segments)
+    });
+    let e = match reaching {
+        Some(among) => conversion_error_among(&lo_curve, &pw, DEFAULT_SAMPLES, &among),
+        None => conversion_error(&lo_curve, &pw, DEFAULT_SAMPLES),
+    };
     let hi_curve = make(hi_bits);
     let k = e.segment;
     let (seg, t0, h) = segment_at(&hi_curve, (a, b), (segments, k), m, free, hi_bits)?;

@@ -2,10 +2,10 @@
 //! segments, certified in MPFR, beside the f64 pipeline and the C² baseline.
 
 use super::super::{Ledger, Outcome, Verdict};
-use crate::algo::ph::grid::GridScreen;
+use crate::algo::ph::grid::ErrorScreen;
 use crate::algo::ph::hermite::FreeParameters;
 use crate::algo::ph::piecewise::{
-    certified_error, certified_grid_error, conversion_error, convert, CertifiedError,
+    certified_error_screened, certified_grid_error, conversion_error, convert, CertifiedError,
     DEFAULT_SAMPLES,
 };
 use crate::curve::ExprCurve;
@@ -70,24 +70,35 @@ impl Row {
 
 /// Certified conversion errors for `levels` with C^m interpolants and free parameters.
 pub fn rows(levels: &[u32], m: usize, free: &FreeParameters<BigRational>) -> Vec<Row> {
-    let c = curve();
-    let (a, b) = (rational(0), rational(1));
     let errors: Vec<CertifiedError> = levels
         .iter()
-        .map(|&n| {
-            certified_error(
-                |bits| c.compile::<Float>(&bits),
-                &a,
-                &b,
-                1 << n,
-                m,
-                free,
-                BITS,
-                HI_BITS,
-            )
-            .expect("the test curve has no degenerate segment")
-        })
+        .map(|&n| level_error(1 << n, m, free, None))
         .collect();
+    rows_from(levels, errors)
+}
+
+/// The certified conversion error with `segments` C^m interpolants and free parameters;
+/// `screen` (of the same conversion) only saves work.
+fn level_error(
+    segments: usize,
+    m: usize,
+    free: &FreeParameters<BigRational>,
+    screen: Option<&ErrorScreen>,
+) -> CertifiedError {
+    certified_error_screened(
+        |bits| curve().compile::<Float>(&bits),
+        (&rational(0), &rational(1)),
+        segments,
+        m,
+        free,
+        (BITS, HI_BITS),
+        screen,
+    )
+    .expect("the test curve has no degenerate segment")
+}
+
+/// The rows of `levels` from their errors, each with its ratio to the row before.
+fn rows_from(levels: &[u32], errors: Vec<CertifiedError>) -> Vec<Row> {
     let mut out: Vec<Row> = Vec::new();
     for (i, e) in errors.into_iter().enumerate() {
         let ratio = (i > 0).then(|| {
@@ -588,21 +599,26 @@ pub struct Section {
 /// Every Table 1 and Theorem 1 check, each outcome recorded in `ledger`.
 pub fn section(ledger: &mut Ledger) -> Section {
     let levels: Vec<u32> = LEVELS.collect();
-    let rows = rows_of(&levels, 4);
-    let baseline = rows_of(&levels, 2);
-    let f64_column = f64_column(&levels);
-    // The proven enclosures first: their Taylor models tell the authors' grid which points
-    // cannot reach its maximum (the same maxima, from a fraction of the points).
-    let (proven, paper_grid): (Vec<_>, Vec<_>) =
+    // The proven enclosures first: their Taylor models tell the search for the true maximum
+    // which segments, and the authors' grid which points, cannot reach the maximum (the same
+    // maxima, from a fraction of the work).
+    let zero = FreeParameters::zero(4, &());
+    let (proven, (errors, paper_grid)): (Vec<_>, (Vec<_>, Vec<_>)) =
         super::proven::proven_rows_with(&levels, |segments, found| {
-            let screen = found.map(|(models, e)| GridScreen {
+            let screen = found.map(|(models, e)| ErrorScreen {
                 models,
                 seed_segment: e.segment,
             });
-            paper_grid_error(segments, screen.as_ref())
+            (
+                level_error(segments, 4, &zero, screen.as_ref()),
+                paper_grid_error(segments, screen.as_ref()),
+            )
         })
         .into_iter()
         .unzip();
+    let rows = rows_from(&levels, errors);
+    let baseline = rows_of(&levels, 2);
+    let f64_column = f64_column(&levels);
     let outcomes: Vec<(Outcome, bool)> = rows
         .iter()
         .enumerate()
@@ -696,7 +712,7 @@ pub fn paper_grid(segments: usize) -> Vec<BigRational> {
 
 /// The maximum of ‖γ − p‖ over the authors' grid with `segments` segments, certified at
 /// [`BITS`] and [`HI_BITS`]; `screen` only saves work (the same maxima).
-pub fn paper_grid_error(segments: usize, screen: Option<&GridScreen>) -> (Float, Float) {
+pub fn paper_grid_error(segments: usize, screen: Option<&ErrorScreen>) -> (Float, Float) {
     certified_grid_error(
         |bits| curve().compile::<Float>(&bits),
         (&rational(0), &rational(1)),
