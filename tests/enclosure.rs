@@ -233,36 +233,42 @@ fn a_screened_grid_gives_the_full_grids_maxima_bit_for_bit() {
     );
     for n in [4usize, 64] {
         let (_, models, e) = models_of(n);
-        // linspace(1e-6, 1, 100·n), as the authors' code evaluates it.
+        // linspace(1e-6, 1, 100·n), as the authors' code evaluates it, and a grid through
+        // every knot (where the screen locates points exactly rather than in f64).
         let m = 100 * n as i64;
-        let ts: Vec<BigRational> = (0..m)
+        let authors: Vec<BigRational> = (0..m)
             .map(|j| BigRational::new((m - 1 + 999_999 * j).into(), (1_000_000 * (m - 1)).into()))
             .collect();
-        let grid = |screen: Option<&ErrorScreen>| {
-            certified_grid_error(
-                |bits| c.compile::<Float>(&bits),
-                (&a, &b),
-                n,
-                4,
-                &zero,
-                &ts,
-                (128, 256),
-                screen,
-            )
-            .unwrap()
-        };
-        let full = grid(None);
-        let screen = ErrorScreen {
-            models: &models,
-            seed_segment: e.segment,
-        };
-        // Any segment to start from gives the same maxima; so does the worst one.
-        for seed in [e.segment, 0] {
-            let screened = grid(Some(&ErrorScreen {
-                seed_segment: seed,
-                ..screen
-            }));
-            assert_eq!(full, screened, "n = {n}, seed segment {seed}");
+        let knots: Vec<BigRational> = (0..=16 * n as i64)
+            .map(|j| BigRational::new(j.into(), (16 * n as i64).into()))
+            .collect();
+        for ts in [authors, knots] {
+            let grid = |screen: Option<&ErrorScreen>| {
+                certified_grid_error(
+                    |bits| c.compile::<Float>(&bits),
+                    (&a, &b),
+                    n,
+                    4,
+                    &zero,
+                    &ts,
+                    (128, 256),
+                    screen,
+                )
+                .unwrap()
+            };
+            let full = grid(None);
+            let screen = ErrorScreen {
+                models: &models,
+                seed_segment: e.segment,
+            };
+            // Any segment to start from gives the same maxima; so does the worst one.
+            for seed in [e.segment, 0] {
+                let screened = grid(Some(&ErrorScreen {
+                    seed_segment: seed,
+                    ..screen
+                }));
+                assert_eq!(full, screened, "n = {n}, seed segment {seed}");
+            }
         }
     }
 }

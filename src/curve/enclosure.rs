@@ -120,7 +120,10 @@ fn horner(coefficients: &[Ball], s: &Ball) -> Ball {
     coefficients
         .iter()
         .rev()
-        .fold(Ball::zero_in(&ctx), |acc, c| acc * s + c)
+        .fold(Ball::zero_in(&ctx), |mut acc, c| {
+            acc.horner_step(s, c);
+            acc
+        })
 }
 
 /// The derivative's coefficients.
@@ -207,10 +210,14 @@ fn model<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
     let two = Ball::from_i64(2, &bits);
     for (a, qa) in q.iter().enumerate() {
         for (b, qb) in q.iter().enumerate().skip(a) {
-            let dot = (0..3).fold(Ball::zero_in(&bits), |acc, i| {
-                acc + &(qa[i].clone() * &qb[i])
-            });
-            norm2[a + b] += &(if a == b { dot } else { dot * &two });
+            let mut dot = Ball::zero_in(&bits);
+            for i in 0..3 {
+                dot.mul_add_assign(&qa[i], &qb[i]);
+            }
+            if a != b {
+                dot *= &two;
+            }
+            norm2[a + b] += &dot;
         }
     }
     let slope = derivative(&norm2);

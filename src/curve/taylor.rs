@@ -99,6 +99,11 @@ impl<T: Field> Taylor<T> {
             .cloned()
             .unwrap_or_else(|| T::zero_in(&self.c[0].ctx()))
     }
+    /// Coefficients 0…n−1 (zeros beyond a constant's length), for the O(n²) recurrences:
+    /// one copy each instead of one per use.
+    fn padded(&self, n: usize) -> Vec<T> {
+        (0..n).map(|k| self.at(k)).collect()
+    }
     fn combined_len(&self, other: &Self) -> usize {
         match (self.c.len(), other.c.len()) {
             (1, n) | (n, 1) => n,
@@ -144,16 +149,15 @@ impl<T: Real> Taylor<T> {
     pub fn sin_cos_series(&self) -> (Self, Self) {
         let n = self.c.len();
         let (s0, c0) = self.c[0].sin_cos();
-        let du = self.derivative_series();
+        let du = self.derivative_series().padded(n - 1);
         let (mut s, mut c) = (vec![s0], vec![c0]);
         let ctx = self.c[0].ctx();
         for k in 1..n {
             // k s_k = Σ_{j=1..k} j u_j c_{k−j},  k c_k = −Σ j u_j s_{k−j}
             let (mut sk, mut ck) = (T::zero_in(&ctx), T::zero_in(&ctx));
             for j in 1..=k {
-                let ju = du.at(j - 1);
-                sk.mul_add_assign(&ju, &c[k - j]);
-                ck.mul_sub_assign(&ju, &s[k - j]);
+                sk.mul_add_assign(&du[j - 1], &c[k - j]);
+                ck.mul_sub_assign(&du[j - 1], &s[k - j]);
             }
             let kk = T::from_i64(k as i64, &ctx);
             s.push(sk / &kk);
@@ -343,12 +347,12 @@ impl<T: Real> Real for Taylor<T> {
     fn exp(&self) -> Self {
         let ctx = self.ctx();
         let n = self.c.len();
-        let du = self.derivative_series();
+        let du = self.derivative_series().padded(n - 1);
         let mut e = vec![self.c[0].exp()];
         for k in 1..n {
             let mut s = T::zero_in(&ctx);
             for j in 1..=k {
-                s.mul_add_assign(&du.at(j - 1), &e[k - j]);
+                s.mul_add_assign(&du[j - 1], &e[k - j]);
             }
             e.push(s / &T::from_i64(k as i64, &ctx));
         }

@@ -34,20 +34,22 @@ use rug::float::Round;
 
 /// A grid point located on its segment: (index in the grid, segment k, local ξ).
 type Located<T> = (usize, usize, T);
+/// The grid located in f64 for the screen, and the error bound of those ξ.
+type RoughlyLocated = (Vec<Located<f64>>, f64);
 
-/// ‖γ − p‖ at located points, evaluated segment by segment in parallel: (index, distance) in
-/// the order of the segments, then of `points`.
+/// ‖γ − p‖ at located points, evaluated segment by segment in parallel: (index, segment,
+/// distance) in the order of the segments, then of `points`.
 fn distances_at<T: Real, C: Curve<T> + ?Sized>(
     curve: &C,
     pw: &PiecewisePh<T>,
     points: &[Located<T>],
-) -> Vec<(usize, T)> {
+) -> Vec<(usize, usize, T)> {
     let h = pw.step();
     let mut per_segment: Vec<Vec<(usize, &T)>> = vec![Vec::new(); pw.segments().len()];
     for (i, k, xi) in points {
         per_segment[*k].push((*i, xi));
     }
-    let found: Vec<Vec<(usize, T)>> = pw
+    let found: Vec<Vec<(usize, usize, T)>> = pw
         .segments()
         .par_iter()
         .enumerate()
@@ -58,7 +60,7 @@ fn distances_at<T: Real, C: Curve<T> + ?Sized>(
             let dist = SegmentDistance::new(curve, &seg.control_points(), &pw.knot(k), &h);
             per_segment[k]
                 .iter()
-                .map(|(i, xi)| (*i, dist.value(xi).sqrt()))
+                .map(|(i, xi)| (*i, k, dist.value(xi).sqrt()))
                 .collect()
         }))
         .collect();
@@ -84,7 +86,7 @@ pub fn grid_distances<T: Real, C: Curve<T> + ?Sized>(
     ts: &[T],
 ) -> Vec<T> {
     let mut out = vec![T::zero_in(&pw.step().ctx()); ts.len()];
-    for (i, d) in distances_at(curve, pw, &located(pw, ts)) {
+    for (i, _, d) in distances_at(curve, pw, &located(pw, ts)) {
         out[i] = d;
     }
     out
@@ -158,44 +160,98 @@ const REGION_WIDTH: f64 = 1.0 / 32.0;
 /// widened by it before a point is tested against it.
 const XI_SLACK: f64 = 1e-9;
 
-/// The distances at p bits of the points of `points` that can reach the maximum (see the
-/// module doc): the seed segment's, and those in the regions the models leave above L − 4ε.
+/// The grid located cheaply, for the screen only: (index, segment, ξ as a double) from the
+/// rationals in f64, with the error bound of those ξ; points within that bound of a knot
+/// are located exactly, as [`located`] does at `bits`. `None` when the interval makes f64
+/// too coarse to tell the segments apart.
+fn located_roughly(
+    pw: &PiecewisePh<Float>,
+    (a, b): (&BigRational, &BigRational),
+    ts: &[BigRational],
+) -> Option<RoughlyLocated> {
+    use num_traits::ToPrimitive;
+    let bits = pw.start().prec();
+    let n = pw.segments().len();
+    let to_f64 = |t: &BigRational| ToPrimitive::to_f64(t).filter(|x| x.is_finite());
+    let (a, b) = (to_f64(a)?, to_f64(b)?);
+    let largest = ts
+        .iter()
+        .map(|t| to_f64(t).map(f64::abs))
+        .try_fold(a.abs().max(b.abs()), |m, x| x.map(|x| m.max(x)))?;
+    // u = N(t − a)/(b − a) from values each within a relative 2⁻⁵³ and a few roundings.
+    let slack = 16.0 * f64::EPSILON * n as f64 * (3.0 * largest) / (b - a) + 1e-12;
+    if slack.is_nan() || slack >= 1e-3 {
+        return None;
+    }
+    let points = ts
+        .iter()
+        .enumerate()
+        .map(|(i, t)| {
+            let u = (to_f64(t).unwrap_or(a) - a) / (b - a) * n as f64;
+            let k = u.floor().clamp(0.0, (n - 1) as f64);
+            let xi = u - k;
+            if xi <= slack || xi >= 1.0 - slack {
+                let (k, xi) = pw.locate(&Float::from_rational(t, &bits));
+                (i, k, xi.to_f64())
+            } else {
+                (i, k as usize, xi)
+            }
+        })
+        .collect();
+    Some((points, slack))
+}
+
+/// The distances at p bits of the grid points that can reach the maximum (see the module
+/// doc): the seed segment's, and those in the regions the models leave above L − 4ε;
+/// `None` when the screen cannot be used (the grid cannot be located in f64).
 fn screened_distances<C: Curve<Float>>(
     curve: &C,
     pw: &PiecewisePh<Float>,
-    points: &[Located<Float>],
+    (interval, ts): ((&BigRational, &BigRational), &[BigRational]),
     screen: &ErrorScreen,
     noise: &Float,
-) -> Vec<(usize, Float)> {
+) -> Option<Vec<(usize, usize, Float)>> {
+    let bits = noise.prec();
+    let count = pw.segments().len();
+    if screen.models.segments() != count {
+        return None;
+    }
+    let (rough, slack) = located_roughly(pw, interval, ts)?;
+    // The points to evaluate, located at `bits` as the full grid locates them.
+    let exactly = |points: Vec<Located<f64>>| -> Vec<Located<Float>> {
+        points
+            .into_iter()
+            .map(|(i, _, _)| {
+                let (k, xi) = pw.locate(&Float::from_rational(&ts[i], &bits));
+                (i, k, xi)
+            })
+            .collect()
+    };
     let seed = screen.seed_segment;
-    let (first, rest): (Vec<Located<Float>>, Vec<Located<Float>>) =
-        points.iter().cloned().partition(|(_, k, _)| *k == seed);
-    let mut found = distances_at(curve, pw, &first);
+    let (first, rest): (Vec<_>, Vec<_>) = rough.into_iter().partition(|p| p.1 == seed);
+    let mut found = distances_at(curve, pw, &exactly(first));
     let largest = found
         .iter()
-        .map(|(_, d)| d)
+        .map(|(_, _, d)| d)
         .fold(
             Float::new(noise.prec()),
             |m, d| if *d > m { d.clone() } else { m },
         );
     let threshold = threshold(&largest, noise);
-    let kept: Vec<Located<Float>> =
-        if threshold > 0.0 && screen.models.segments() == pw.segments().len() {
-            let mut regions: Vec<Vec<(f64, f64)>> = vec![Vec::new(); pw.segments().len()];
-            for r in screen.models.regions_reaching(threshold, REGION_WIDTH) {
-                regions[r.segment].push((r.lo - XI_SLACK, r.hi + XI_SLACK));
-            }
-            rest.into_iter()
-                .filter(|(_, k, xi)| {
-                    let x = xi.to_f64();
-                    regions[*k].iter().any(|&(lo, hi)| lo <= x && x <= hi)
-                })
-                .collect()
-        } else {
-            rest
-        };
-    found.extend(distances_at(curve, pw, &kept));
-    found
+    let kept = if threshold > 0.0 {
+        let margin = slack + XI_SLACK;
+        let mut regions: Vec<Vec<(f64, f64)>> = vec![Vec::new(); count];
+        for r in screen.models.regions_reaching(threshold, REGION_WIDTH) {
+            regions[r.segment].push((r.lo - margin, r.hi + margin));
+        }
+        rest.into_iter()
+            .filter(|&(_, k, x)| regions[k].iter().any(|&(lo, hi)| lo <= x && x <= hi))
+            .collect()
+    } else {
+        rest
+    };
+    found.extend(distances_at(curve, pw, &exactly(kept)));
+    Some(found)
 }
 
 /// The maximum of ‖γ − p‖ over the grid `ts` of [a, b], certified like
@@ -222,23 +278,23 @@ pub fn certified_grid_error<C: Curve<Float>>(
 ) -> Result<(Float, Float), PhHermiteError> {
     let lo_curve = make(bits);
     let pw = convert_at(&lo_curve, interval, segments, m, free, bits)?;
-    let ts_lo: Vec<Float> = ts.iter().map(|q| Float::from_rational(q, &bits)).collect();
-    let points = located(&pw, &ts_lo);
     let noise = evaluation_noise(&lo_curve, &pw);
-    let mut d = match screen {
-        Some(screen) => screened_distances(&lo_curve, &pw, &points, screen, &noise),
-        None => distances_at(&lo_curve, &pw, &points),
-    };
+    let screened = screen
+        .and_then(|screen| screened_distances(&lo_curve, &pw, (interval, ts), screen, &noise));
+    let mut d = screened.unwrap_or_else(|| {
+        let ts_lo: Vec<Float> = ts.iter().map(|q| Float::from_rational(q, &bits)).collect();
+        distances_at(&lo_curve, &pw, &located(&pw, &ts_lo))
+    });
     // Grid order, so that the recomputation below meets the points as the full grid has them.
-    d.sort_by_key(|(i, _)| *i);
+    d.sort_by_key(|(i, _, _)| *i);
     let max_lo = d.iter().fold(
         Float::new(bits),
-        |m, (_, x)| if *x > m { x.clone() } else { m },
+        |m, (_, _, x)| if *x > m { x.clone() } else { m },
     );
     let hi_curve = make(hi_bits);
     let mut max_hi = Float::new(hi_bits);
-    for (i, _) in d.iter().filter(|(_, x)| *x >= max_lo.clone() - &noise) {
-        let k = points[*i].1;
+    for (i, k, _) in d.iter().filter(|(_, _, x)| *x >= max_lo.clone() - &noise) {
+        let k = *k;
         let (seg, t0, h) = segment_at(&hi_curve, interval, (segments, k), m, free, hi_bits)?;
         // ξ exactly: (t − t_k)/h from the rational t.
         let xi_hi = (Float::from_rational(&ts[*i], &hi_bits) - &t0) / &h;
