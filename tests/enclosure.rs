@@ -18,7 +18,8 @@ fn the_enclosure_contains_the_certified_maximum_and_is_narrow() {
         BigRational::from_integer(0.into()),
         BigRational::from_integer(1.into()),
     );
-    for n in [1usize, 4, 64] {
+    // 128 segments: the whole-segment remainders come from shared bounds of γ^(18).
+    for n in [1usize, 4, 64, 128] {
         let curve = c.compile::<Ball>(&256);
         let pw = convert(
             &curve,

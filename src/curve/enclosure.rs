@@ -143,12 +143,79 @@ fn magnitude_up(x: &Ball) -> f64 {
     top.to_f64_round(Round::Up)
 }
 
-/// The Taylor model of segment k on the piece [u_a, u_b].
+/// Bounds of |γ_i^(18)| over an interval [lo, hi] of t spanning many segments: the
+/// remainders of their whole-segment models from one jet instead of one each.
+struct HighBound {
+    lo: Float,
+    hi: Float,
+    bound: [f64; 3],
+}
+
+/// Segments above which the whole-segment models take their remainders from
+/// [`HIGH_BLOCKS`] shared bounds (at most this many: one jet per segment, as for pieces).
+const SHARED_ABOVE: usize = 64;
+/// The blocks of consecutive segments sharing one bound of γ^(18).
+const HIGH_BLOCKS: usize = 64;
+
+/// The segments per block and each block's bound of |γ^(18)| over its segments (padded by
+/// 2⁻¹⁰ of a segment), for an analytic curve (no breakpoints) on more than [`SHARED_ABOVE`]
+/// segments; `None` otherwise, or where a bound is not finite. A bound over a block is larger
+/// than over one segment, but the remainder it gives, (hω)¹⁸/18! times it, is then far below
+/// any error the search resolves.
+fn high_bounds<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
+    curve: &C,
+    pw: &P,
+) -> Option<(usize, Vec<HighBound>)> {
+    let n = pw.count();
+    let (a, b) = pw.interval();
+    let analytic = curve
+        .breakpoints(
+            a.lower().to_f64_round(Round::Down),
+            b.upper().to_f64_round(Round::Up),
+        )
+        .is_empty();
+    if n <= SHARED_ABOVE || !analytic {
+        return None;
+    }
+    let bits = a.ctx();
+    let h = pw.step();
+    let pad = magnitude_up(&h) / 1024.0;
+    let per_block = n.div_ceil(HIGH_BLOCKS);
+    (0..n.div_ceil(per_block))
+        .into_par_iter()
+        .map(carried(|block: usize| {
+            let first = block * per_block;
+            let last = (first + per_block).min(n) - 1;
+            let end = pw.knot(last) + &h;
+            let lo = Float::with_val_round(bits, pw.knot(first).lower() - pad, Round::Down).0;
+            let hi = Float::with_val_round(bits, end.upper() + pad, Round::Up).0;
+            let mid = Float::with_val(bits, &lo + &hi) / 2u32;
+            // Half the width, rounded up, with margin for the midpoint's rounding.
+            let rad = Float::with_val_round(64, &hi - &lo, Round::Up)
+                .0
+                .to_f64_round(Round::Up)
+                * (0.5 + 1e-15);
+            let high = curve
+                .jet(&Ball::new(mid, rad), ORDER + 1)
+                .swap_remove(ORDER + 1);
+            let bound = [0, 1, 2].map(|i| magnitude_up(&high[i]));
+            bound
+                .iter()
+                .all(|g| g.is_finite())
+                .then_some(HighBound { lo, hi, bound })
+        }))
+        .collect::<Option<Vec<HighBound>>>()
+        .map(|blocks| (per_block, blocks))
+}
+
+/// The Taylor model of segment k on the piece [u_a, u_b]; `shared`, a bound of |γ^(18)| on
+/// an interval of t, serves for the remainder when that interval contains the piece's.
 fn model<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
     curve: &C,
     pw: &P,
     (k, points): (usize, &[[Ball; 3]]),
     (ua, ub): (&Float, &Float),
+    shared: Option<&HighBound>,
 ) -> Model {
     assert!(
         points.len() <= ORDER + 1,
@@ -185,15 +252,19 @@ fn model<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
         xc.mid().clone(),
         (xc.rad() + magnitude_up(&hw)) * (1.0 + 1e-15),
     );
-    let high = curve.jet(&spread, ORDER + 1).swap_remove(ORDER + 1);
+    let contains = |s: &HighBound| spread.lower() >= s.lo && spread.upper() <= s.hi;
+    let high: [f64; 3] = match shared.filter(|s| contains(s)) {
+        Some(s) => s.bound,
+        None => {
+            let high = curve.jet(&spread, ORDER + 1).swap_remove(ORDER + 1);
+            [0, 1, 2].map(|i| magnitude_up(&high[i]))
+        }
+    };
     let mut term = Ball::one_in(&bits);
     for j in 1..=ORDER + 1 {
         term = term * &hw / &Ball::from_i64(j as i64, &bits);
     }
-    let remainder2: f64 = high
-        .iter()
-        .map(|g| (magnitude_up(g) * magnitude_up(&term)).powi(2))
-        .sum();
+    let remainder2: f64 = high.iter().map(|g| (g * magnitude_up(&term)).powi(2)).sum();
     // A piecewise curve (a spline) differs from the piece the jet described by at most its
     // seam bound on X.
     let seam = curve.seam_bound(
@@ -301,7 +372,7 @@ fn pieces<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
     };
     let mut done = Vec::new();
     while let Some((a, b, depth, known)) = todo.pop() {
-        let m = known.unwrap_or_else(|| model(curve, pw, (k, points), (&a, &b)));
+        let m = known.unwrap_or_else(|| model(curve, pw, (k, points), (&a, &b), None));
         // Past the deadline a piece is kept whole: its remainder is in both bounds, so the
         // enclosure stays proven, only wider.
         if m.remainder <= tolerance || depth >= MAX_PIECE_DEPTH || passed(deadline) {
@@ -528,10 +599,12 @@ impl ErrorModels {
             .into_par_iter()
             .map(carried(|k| pw.control_points(k)))
             .collect();
+        let shared = high_bounds(curve, pw);
         let whole: Vec<Model> = (0..n)
             .into_par_iter()
             .map(carried(|k| {
-                model(curve, pw, (k, &points[k]), (&zero, &one))
+                let bound = shared.as_ref().map(|(per_block, b)| &b[k / per_block]);
+                model(curve, pw, (k, &points[k]), (&zero, &one), bound)
             }))
             .collect();
         let floor = precision_floor(&points, &whole, bits);
