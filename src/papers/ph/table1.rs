@@ -596,15 +596,20 @@ pub struct Section {
     pub proven: Vec<super::proven::ProvenRow>,
 }
 
-/// Every Table 1 and Theorem 1 check, each outcome recorded in `ledger`.
-pub fn section(ledger: &mut Ledger) -> Section {
-    let levels: Vec<u32> = LEVELS.collect();
-    // The proven enclosures first: their Taylor models tell the search for the true maximum
-    // which segments, and the authors' grid which points, cannot reach the maximum (the same
-    // maxima, from a fraction of the work).
+/// The proven rows, the certified errors and the authors' grid maxima of the C⁴ levels.
+type Screened = (
+    Vec<super::proven::ProvenRow>,
+    Vec<CertifiedError>,
+    Vec<(Float, Float)>,
+);
+/// At every level of the C⁴ rows: the proven enclosure, then the certified error and the
+/// authors' grid maximum, screened by the enclosure's Taylor models (they tell the search
+/// which segments, and the grid which points, cannot reach the maximum: the same maxima,
+/// from a fraction of the work).
+fn proven_and_screened(levels: &[u32]) -> Screened {
     let zero = FreeParameters::zero(4, &());
     let (proven, (errors, paper_grid)): (Vec<_>, (Vec<_>, Vec<_>)) =
-        super::proven::proven_rows_with(&levels, |segments, found| {
+        super::proven::proven_rows_with(levels, |segments, found| {
             let screen = found.map(|(models, e)| ErrorScreen {
                 models,
                 seed_segment: e.segment,
@@ -616,6 +621,13 @@ pub fn section(ledger: &mut Ledger) -> Section {
         })
         .into_iter()
         .unzip();
+    (proven, errors, paper_grid)
+}
+
+/// Every Table 1 and Theorem 1 check, each outcome recorded in `ledger`.
+pub fn section(ledger: &mut Ledger) -> Section {
+    let levels: Vec<u32> = LEVELS.collect();
+    let (proven, errors, paper_grid) = proven_and_screened(&levels);
     let rows = rows_from(&levels, errors);
     let baseline = rows_of(&levels, 2);
     let f64_column = f64_column(&levels);
