@@ -10,27 +10,49 @@ use trajverify::scalar::ball::Ball;
 use trajverify::scalar::{BigRational, Field, Float, Real};
 const CURVE: &str = "[1.5*sin(7.2*t), cos(9*t), exp(cos(1.8*t))]";
 
+/// The test curve, zero free parameters and [0, 1]: the conversion problem given exactly.
+fn exact_problem() -> (
+    ExprCurve,
+    FreeParameters<BigRational>,
+    (BigRational, BigRational),
+) {
+    (
+        ExprCurve::parse(CURVE).unwrap(),
+        FreeParameters::zero(4, &()),
+        (
+            BigRational::from_integer(0.into()),
+            BigRational::from_integer(1.into()),
+        ),
+    )
+}
+
+/// The test curve in balls at 256 bits and its C⁴ conversion on `n` segments of [0, 1].
+fn in_balls(
+    n: usize,
+) -> (
+    trajverify::curve::CompiledCurve<Ball>,
+    trajverify::algo::ph::piecewise::PiecewisePh<Ball>,
+) {
+    let curve = ExprCurve::parse(CURVE).unwrap().compile::<Ball>(&256);
+    let pw = convert(
+        &curve,
+        &Ball::from_i64(0, &256),
+        &Ball::from_i64(1, &256),
+        n,
+        4,
+        &FreeParameters::zero(4, &256),
+        false,
+    )
+    .unwrap();
+    (curve, pw)
+}
+
 #[test]
 fn the_enclosure_contains_the_certified_maximum_and_is_narrow() {
-    let c = ExprCurve::parse(CURVE).unwrap();
-    let zero = FreeParameters::zero(4, &());
-    let (a, b) = (
-        BigRational::from_integer(0.into()),
-        BigRational::from_integer(1.into()),
-    );
+    let (c, zero, (a, b)) = exact_problem();
     // 128 segments: the whole-segment remainders come from shared bounds of γ^(18).
     for n in [1usize, 4, 64, 128] {
-        let curve = c.compile::<Ball>(&256);
-        let pw = convert(
-            &curve,
-            &Ball::from_i64(0, &256),
-            &Ball::from_i64(1, &256),
-            n,
-            4,
-            &FreeParameters::zero(4, &256),
-            false,
-        )
-        .unwrap();
+        let (curve, pw) = in_balls(n);
         let e = proven_error(&curve, &pw, 1e-6, 200_000);
         let certified = certified_error(
             |bits| c.compile::<Float>(&bits),
@@ -168,17 +190,7 @@ fn models_of(
     trajverify::curve::enclosure::ErrorEnclosure,
 ) {
     use trajverify::curve::enclosure::ErrorModels;
-    let curve = ExprCurve::parse(CURVE).unwrap().compile::<Ball>(&256);
-    let pw = convert(
-        &curve,
-        &Ball::from_i64(0, &256),
-        &Ball::from_i64(1, &256),
-        n,
-        4,
-        &FreeParameters::zero(4, &256),
-        false,
-    )
-    .unwrap();
+    let (curve, pw) = in_balls(n);
     let models = ErrorModels::build(&curve, &pw, 1e-6, None);
     let e = models.enclose(1e-6, 200_000, None);
     (pw, models, e)
@@ -226,12 +238,7 @@ fn outside_the_regions_reaching_a_threshold_the_error_is_proven_below_it() {
 #[test]
 fn a_screened_grid_gives_the_full_grids_maxima_bit_for_bit() {
     use trajverify::algo::ph::grid::{certified_grid_error, ErrorScreen};
-    let c = ExprCurve::parse(CURVE).unwrap();
-    let zero = FreeParameters::zero(4, &());
-    let (a, b) = (
-        BigRational::from_integer(0.into()),
-        BigRational::from_integer(1.into()),
-    );
+    let (c, zero, (a, b)) = exact_problem();
     for n in [4usize, 64] {
         let (_, models, e) = models_of(n);
         // linspace(1e-6, 1, 100·n), as the authors' code evaluates it, and a grid through
@@ -278,12 +285,7 @@ fn a_screened_grid_gives_the_full_grids_maxima_bit_for_bit() {
 fn a_screened_search_finds_the_full_searchs_maximum_bit_for_bit() {
     use trajverify::algo::ph::grid::ErrorScreen;
     use trajverify::algo::ph::piecewise::certified_error_screened;
-    let c = ExprCurve::parse(CURVE).unwrap();
-    let zero = FreeParameters::zero(4, &());
-    let (a, b) = (
-        BigRational::from_integer(0.into()),
-        BigRational::from_integer(1.into()),
-    );
+    let (c, zero, (a, b)) = exact_problem();
     for n in [4usize, 128] {
         let (_, models, e) = models_of(n);
         let search = |screen: Option<&ErrorScreen>| {

@@ -305,6 +305,17 @@ fn model<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
     }
 }
 
+/// The two halves of the box s₀ ± w: their half-width w/2 and centres s₀ ∓ w/2.
+fn halves(centre: &Float, half_width: &Float) -> (Float, [Float; 2]) {
+    let bits = centre.prec();
+    let w = Float::with_val(bits, half_width) / 2u32;
+    let centres = [-1i32, 1].map(|sign| {
+        let step = Float::with_val(bits, &w * sign);
+        Float::with_val(bits, centre + &step)
+    });
+    (w, centres)
+}
+
 /// An end of the box s₀ ± w of a model in u = u_c + s: the lower end rounded down
 /// (`Round::Down`) or the upper end rounded up (`Round::Up`), every step in that direction.
 fn box_end(m: &Model, centre: &Float, half_width: &Float, round: Round) -> f64 {
@@ -659,10 +670,8 @@ impl ErrorModels {
             if done || boxes >= max_boxes || passed(deadline) {
                 break top.upper;
             }
-            let w = Float::with_val(bits, &top.half_width) / 2u32;
-            for sign in [-1i32, 1] {
-                let step = Float::with_val(bits, &w * sign);
-                let centre = Float::with_val(bits, &top.centre + &step);
+            let (w, centres) = halves(&top.centre, &top.half_width);
+            for centre in centres {
                 let (lo, up) = box_bounds(&models[top.model], &centre, &w);
                 boxes += 1;
                 if lo > best.0 {
@@ -710,9 +719,8 @@ impl ErrorModels {
                         });
                         continue;
                     }
-                    let w = Float::with_val(bits, &half_width) / 2u32;
-                    for sign in [-1i32, 1] {
-                        let c = Float::with_val(bits, &w * sign) + &centre;
+                    let (w, centres) = halves(&centre, &half_width);
+                    for c in centres {
                         todo.push((c, w.clone(), depth + 1));
                     }
                 }

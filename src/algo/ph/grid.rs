@@ -24,7 +24,7 @@ use super::hermite::{FreeParameters, PhHermiteError};
 use super::piecewise::{convert_at, segment_at, PiecewisePh};
 use super::PhCurve;
 use crate::curve::approx::SegmentDistance;
-use crate::curve::enclosure::ErrorModels;
+use crate::curve::enclosure::{ErrorModels, Region};
 use crate::curve::Curve;
 use crate::numeric::quat::vec3;
 use crate::scalar::ball::carried;
@@ -131,26 +131,36 @@ fn threshold(largest: &Float, noise: &Float) -> f64 {
 }
 
 impl ErrorScreen<'_> {
-    /// The segments where ‖γ − p‖ may reach the threshold L − 4ε, the seed segment
-    /// included, increasing; `None` when the screen cannot drop anything (a threshold ≤ 0,
-    /// or models of another segment count).
+    /// The regions where ‖γ − p‖ may reach the threshold L − 4ε (L = `largest`), outside
+    /// which the screen drops everything; `None` when it cannot drop anything (a threshold
+    /// ≤ 0, or models of another segment count than `count`).
+    fn regions(&self, largest: &Float, noise: &Float, count: usize) -> Option<Vec<Region>> {
+        let threshold = threshold(largest, noise);
+        (threshold > 0.0 && self.models.segments() == count)
+            .then(|| self.models.regions_reaching(threshold, REGION_WIDTH))
+    }
+
+    /// The segments where ‖γ − p‖ may reach L − 4ε, the seed segment included,
+    /// increasing; `None` as [`ErrorScreen::regions`].
     pub(super) fn segments_reaching(
         &self,
         largest: &Float,
         noise: &Float,
         count: usize,
     ) -> Option<Vec<usize>> {
-        let threshold = threshold(largest, noise);
-        if threshold <= 0.0 || self.models.segments() != count {
-            return None;
-        }
+        let regions = self.regions(largest, noise, count)?;
         let mut reaching = vec![false; count];
         reaching[self.seed_segment] = true;
-        for r in self.models.regions_reaching(threshold, REGION_WIDTH) {
+        for r in regions {
             reaching[r.segment] = true;
         }
         Some((0..count).filter(|&k| reaching[k]).collect())
     }
+}
+
+/// The largest of `values`, 0 at `bits` for none.
+fn largest<'a>(values: impl Iterator<Item = &'a Float>, bits: u32) -> Float {
+    values.fold(Float::new(bits), |m, d| if *d > m { d.clone() } else { m })
 }
 
 /// The width (in ξ) of the regions [`ErrorModels::regions_reaching`] returns: a few grid
@@ -174,24 +184,24 @@ fn located_roughly(
     let n = pw.segments().len();
     let to_f64 = |t: &BigRational| ToPrimitive::to_f64(t).filter(|x| x.is_finite());
     let (a, b) = (to_f64(a)?, to_f64(b)?);
-    let largest = ts
+    let ts_f64: Vec<f64> = ts.iter().map(to_f64).collect::<Option<_>>()?;
+    let largest = ts_f64
         .iter()
-        .map(|t| to_f64(t).map(f64::abs))
-        .try_fold(a.abs().max(b.abs()), |m, x| x.map(|x| m.max(x)))?;
+        .fold(a.abs().max(b.abs()), |m, t| m.max(t.abs()));
     // u = N(t − a)/(b − a) from values each within a relative 2⁻⁵³ and a few roundings.
     let slack = 16.0 * f64::EPSILON * n as f64 * (3.0 * largest) / (b - a) + 1e-12;
     if slack.is_nan() || slack >= 1e-3 {
         return None;
     }
-    let points = ts
+    let points = ts_f64
         .iter()
         .enumerate()
         .map(|(i, t)| {
-            let u = (to_f64(t).unwrap_or(a) - a) / (b - a) * n as f64;
+            let u = (t - a) / (b - a) * n as f64;
             let k = u.floor().clamp(0.0, (n - 1) as f64);
             let xi = u - k;
             if xi <= slack || xi >= 1.0 - slack {
-                let (k, xi) = pw.locate(&Float::from_rational(t, &bits));
+                let (k, xi) = pw.locate(&Float::from_rational(&ts[i], &bits));
                 (i, k, xi.to_f64())
             } else {
                 (i, k as usize, xi)
@@ -213,9 +223,6 @@ fn screened_distances<C: Curve<Float>>(
 ) -> Option<Vec<(usize, usize, Float)>> {
     let bits = noise.prec();
     let count = pw.segments().len();
-    if screen.models.segments() != count {
-        return None;
-    }
     let (rough, slack) = located_roughly(pw, interval, ts)?;
     // The points to evaluate, located at `bits` as the full grid locates them.
     let exactly = |points: Vec<Located<f64>>| -> Vec<Located<Float>> {
@@ -230,25 +237,19 @@ fn screened_distances<C: Curve<Float>>(
     let seed = screen.seed_segment;
     let (first, rest): (Vec<_>, Vec<_>) = rough.into_iter().partition(|p| p.1 == seed);
     let mut found = distances_at(curve, pw, &exactly(first));
-    let largest = found
-        .iter()
-        .map(|(_, _, d)| d)
-        .fold(
-            Float::new(noise.prec()),
-            |m, d| if *d > m { d.clone() } else { m },
-        );
-    let threshold = threshold(&largest, noise);
-    let kept = if threshold > 0.0 {
-        let margin = slack + XI_SLACK;
-        let mut regions: Vec<Vec<(f64, f64)>> = vec![Vec::new(); count];
-        for r in screen.models.regions_reaching(threshold, REGION_WIDTH) {
-            regions[r.segment].push((r.lo - margin, r.hi + margin));
+    let seed_largest = largest(found.iter().map(|(_, _, d)| d), bits);
+    let kept = match screen.regions(&seed_largest, noise, count) {
+        Some(reaching) => {
+            let margin = slack + XI_SLACK;
+            let mut regions: Vec<Vec<(f64, f64)>> = vec![Vec::new(); count];
+            for r in reaching {
+                regions[r.segment].push((r.lo - margin, r.hi + margin));
+            }
+            rest.into_iter()
+                .filter(|&(_, k, x)| regions[k].iter().any(|&(lo, hi)| lo <= x && x <= hi))
+                .collect()
         }
-        rest.into_iter()
-            .filter(|&(_, k, x)| regions[k].iter().any(|&(lo, hi)| lo <= x && x <= hi))
-            .collect()
-    } else {
-        rest
+        None => rest,
     };
     found.extend(distances_at(curve, pw, &exactly(kept)));
     Some(found)
@@ -287,10 +288,7 @@ pub fn certified_grid_error<C: Curve<Float>>(
     });
     // Grid order, so that the recomputation below meets the points as the full grid has them.
     d.sort_by_key(|(i, _, _)| *i);
-    let max_lo = d.iter().fold(
-        Float::new(bits),
-        |m, (_, _, x)| if *x > m { x.clone() } else { m },
-    );
+    let max_lo = largest(d.iter().map(|(_, _, x)| x), bits);
     let hi_curve = make(hi_bits);
     let mut max_hi = Float::new(hi_bits);
     for (i, k, _) in d.iter().filter(|(_, _, x)| *x >= max_lo.clone() - &noise) {
