@@ -584,12 +584,12 @@ fn reported_aborts_hangs_and_non_finite_outputs_are_gone() {
             "appears twice",
         ),
         (
-            "a straight line converts exactly: its certified error is 0, not a refusal",
+            "a straight line converts exactly: its proven error is 0 to the unit its enclosure proves (0e-27), not a refusal",
             "phodcos",
             Some("mpfr:128"),
             r#"{"curve": "[t, 0, 0]", "interval": [0, 1], "segments": 4}"#,
             0,
-            r#""max_error":"0""#,
+            r#""max_error":"0e-27""#,
         ),
     ];
     for (what, algorithm, scalar, input, code, needle) in expected {

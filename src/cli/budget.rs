@@ -14,7 +14,7 @@
 
 use super::input::{fail, InputError};
 use crate::scalar::ScalarKind;
-use std::sync::{mpsc, Mutex, OnceLock};
+use std::sync::{mpsc, Mutex};
 use std::time::{Duration, Instant};
 
 /// The longest an accepted run may take on the reference machine (two cores), in seconds.
@@ -136,19 +136,27 @@ pub fn run_with_deadline<R: Send + 'static>(
     }
 }
 
-/// When the process started its command ([`mark_start`]), for deadlines inside methods.
-static STARTED: OnceLock<Instant> = OnceLock::new();
+/// When the latest command started ([`mark_start`]), for deadlines inside methods.
+static STARTED: Mutex<Option<Instant>> = Mutex::new(None);
 
-/// Record the start of the command (the first call wins).
+/// Record the start of a command: the process's one command, or each of the commands a
+/// test runs in process ([`super::run_text`]), so that a proof's deadline counts from its own
+/// command, not from the process's start.
 pub fn mark_start() {
-    let _ = STARTED.get_or_init(Instant::now);
+    if let Ok(mut started) = STARTED.lock() {
+        *started = Some(Instant::now());
+    }
 }
 
 /// The time by which a refining search (a proven enclosure's branch and bound) should stop
 /// and return the bounds it has, leaving time to print them inside the budget: 8 s before
-/// [`DEADLINE_SECONDS`].
+/// [`DEADLINE_SECONDS`] after the command started.
 pub fn search_deadline() -> Instant {
-    *STARTED.get_or_init(Instant::now) + Duration::from_secs_f64(DEADLINE_SECONDS - 8.0)
+    let started = match STARTED.lock() {
+        Ok(mut s) => *s.get_or_insert_with(Instant::now),
+        Err(_) => Instant::now(),
+    };
+    started + Duration::from_secs_f64(DEADLINE_SECONDS - 8.0)
 }
 
 /// The stack of the thread that runs a command (as the main thread's on Linux).

@@ -2,23 +2,31 @@
 //!
 //! A command describes its computation once, generically, as a [`FieldJob`] (field
 //! operations only: it also runs exactly in rationals) or a [`RealJob`] (square roots and
-//! transcendental functions: f64 and MPFR only). [`run_field`] and [`run_real`] then run it
-//! in f64, in rationals, or in MPFR at p and at 2p bits (printed with the digits the two
-//! agree on), and add the `"scalar"` field to the output. A command whose method uses its two
-//! precisions together (the certified error search of `convergence`, the Jacobi of
-//! `hermite-condition` raised until digits agree, checked against MPFR in f64) is a
-//! [`TwoPrecisionJob`], run by [`run_two_precision`]. This is the only `match` on the
-//! number type in `run`.
+//! transcendental functions: f64, MPFR and balls). [`run_field`] and [`run_real`] then run
+//! it in f64, in rationals, or in ball arithmetic, and add the `"scalar"` field to the
+//! output. `mpfr:<bits>` **is** ball arithmetic at `bits` printed as decimals: each number
+//! with the digits its enclosure proves, so a printed digit cannot be wrong however many bits
+//! the problem needs (a run at p and 2p bits can agree on wrong digits when the problem
+//! needs more than both). A method balls cannot prove yet says so ([`RealJob::provable`]) and
+//! prints agreeing digits, labelled. A command whose proven form is not its generic body (κ₂
+//! by inertia, conversion errors by branch and bound) is a [`ProvenJob`], run by
+//! [`run_proven_job`]. This is the only `match` on the number type in `run`.
 
 use super::input::{fail, RunError};
 use super::output::Out;
 use super::Rendered;
 use crate::scalar::ball::{tally, Ball};
 use crate::scalar::{BigRational, Field, Float, Real, ScalarKind};
+use serde_json::Value;
 
-/// A computation that needs only `+ − × ÷`: runs in f64, rationals and MPFR.
+/// A computation that needs only `+ − × ÷`: runs in f64, rationals, MPFR and balls.
 pub trait FieldJob {
     fn run<T: Field>(&self, ctx: &T::Ctx) -> Result<Out<T>, RunError>;
+    /// Whether an f64 answer is checked against a proven enclosure ([`check_f64`]): for the
+    /// methods whose f64 result can lose every digit without an error of its own.
+    fn checks_f64(&self) -> bool {
+        false
+    }
 }
 
 /// A computation that needs square roots or transcendental functions: f64, MPFR and balls.
@@ -26,44 +34,112 @@ pub trait RealJob {
     fn run<T: Real>(&self, ctx: &T::Ctx) -> Result<Out<T>, RunError>;
     /// The computation in ball arithmetic at `bits`: by default the generic one; a job
     /// overrides it where the generic method would only estimate what balls can prove (a
-    /// sampled maximum, replaced by a proven enclosure).
+    /// sampled maximum, replaced by a proven enclosure; an iteration, replaced by the exact
+    /// values it converges to).
     fn run_ball(&self, bits: u32) -> Result<Out<Ball>, RunError> {
         self.run::<Ball>(&bits)
     }
+    /// `Err(why)` for a method whose result balls cannot prove yet (an iteration stopped at a
+    /// tolerance, a quadrature without an enclosed remainder): `mpfr:<bits>` then prints the
+    /// digits on which runs at `bits` and `2·bits` agree, labelled as not proven.
+    fn provable(&self) -> Result<(), &'static str> {
+        Ok(())
+    }
+    /// Whether an f64 answer is checked against a proven enclosure ([`check_f64`]).
+    fn checks_f64(&self) -> bool {
+        false
+    }
+}
+
+/// The precision of the enclosure an f64 answer is checked against, and the one tried when
+/// that enclosure cannot decide.
+pub const F64_CHECK_BITS: [u32; 2] = [128, 512];
+
+/// The f64 answer `out`, refused (exit 2, naming the field) when it keeps no correct digit in
+/// the norm: for each top-level field, max |x − y| over its numbers must stay below
+/// ½ max |y|, y the exact values. `reference(bits)` computes the same output in balls, which
+/// enclose every y; the check is exact arithmetic on the printed doubles and the balls' ends,
+/// so it passes only where the digit is proven. When no reference at [`F64_CHECK_BITS`]
+/// answers, the f64 answer cannot be checked and is refused too.
+pub fn check_f64(
+    out: Out<f64>,
+    reference: impl Fn(u32) -> Result<Out<Ball>, RunError>,
+) -> Result<Out<f64>, RunError> {
+    // A number the double cannot hold is refused at the output, naming it (inf, NaN).
+    let mut numbers = Vec::new();
+    out.numbers("", &mut numbers);
+    if numbers.iter().any(|(_, x)| !x.is_finite()) {
+        return Ok(out);
+    }
+    let mut last = String::new();
+    for bits in F64_CHECK_BITS {
+        let enclosure = match decided(ScalarKind::Ball(bits), || reference(bits)) {
+            Ok(e) => e,
+            Err(e) => {
+                last = match e {
+                    RunError::Input(m) | RunError::Internal(m) => m,
+                };
+                continue;
+            }
+        };
+        match super::output::f64_digit_in_norm(&out, &enclosure) {
+            Some(Ok(())) => return Ok(out),
+            Some(Err(field)) => {
+                return fail(format!(
+                    "output \"{field}\": the f64 answer has no correct digit (its error in the norm reaches half the exact value's size, \
+                     proven at ball:{bits}); use --scalar mpfr:<bits> or rational"
+                ))
+            }
+            None => last = format!("the ball:{bits} enclosure is too wide to decide"),
+        }
+    }
+    fail(format!(
+        "option --scalar: the f64 answer could not be checked against a proven enclosure ({last}); use --scalar mpfr:<bits>"
+    ))
 }
 
 fn named<T>(out: Out<T>, scalar: ScalarKind) -> Out<T> {
     out.with_field("scalar", Out::Text(scalar.to_string()))
 }
 
-/// MPFR at `bits` and then at `2·bits` (in that order: a job may carry a choice made at the
-/// lower precision to the higher), to be printed with the digits the two agree on.
-fn certified(
+/// A ball computation, refused (exit 2) when it branched on a comparison its balls could not
+/// decide: that branch may not hold for every point of the balls, so nothing it computed is
+/// proven. The precision is the user's to raise.
+fn decided<R>(
     scalar: ScalarKind,
-    bits: u32,
-    run: impl Fn(u32) -> Result<Out<Float>, RunError>,
-) -> Result<Rendered, RunError> {
-    Ok(Rendered::certified(
-        named(run(bits)?, scalar),
-        named(run(2 * bits)?, scalar),
-    ))
+    run: impl FnOnce() -> Result<R, RunError>,
+) -> Result<R, RunError> {
+    let (out, undecided) = tally(run);
+    let out = out?;
+    if undecided > 0 {
+        return fail(format!(
+            "option --scalar: {undecided} comparison(s) could not be decided at {scalar} (the enclosures overlap), \
+             so the result is not proven; raise the precision"
+        ));
+    }
+    Ok(out)
 }
 
-/// A ball computation at `bits`, printed with the digits its enclosures prove and their
-/// radii; refused when it made an undecided comparison (its branches may not hold for every
-/// point of the balls, so the enclosure would not be proven).
+/// `mpfr:<bits>`: the computation in ball arithmetic at `bits` (MPFR midpoints at that
+/// precision with proven error bounds), printed with the digits the enclosures prove
+/// ([`super::output::proven_text`]).
+fn proven_digits(
+    scalar: ScalarKind,
+    run: impl FnOnce() -> Result<Out<Ball>, RunError>,
+) -> Result<Rendered, RunError> {
+    let out = decided(scalar, run)?;
+    Ok(Rendered::json(super::output::render_digits(
+        &named(out, scalar),
+        "",
+    )?))
+}
+
+/// `ball:<bits>`: the computation in ball arithmetic, each number printed as its enclosure.
 fn proven(
     scalar: ScalarKind,
     run: impl FnOnce() -> Result<Out<Ball>, RunError>,
 ) -> Result<Rendered, RunError> {
-    let (out, undecided) = tally(run);
-    let out = out?;
-    if undecided > 0 {
-        return Err(RunError::Internal(format!(
-            "{undecided} comparison(s) could not be decided in {scalar} (the balls overlap), so the result is not proven; \
-             raise the precision, or use mpfr:<bits> for certified digits"
-        )));
-    }
+    let out = decided(scalar, run)?;
     Ok(Rendered::json(super::output::render_proven(
         &named(out, scalar),
         "",
@@ -84,9 +160,17 @@ pub fn refuse_ball(scalar: ScalarKind, reason: &str) -> Result<(), RunError> {
 /// `job` in the number type `scalar` names.
 pub fn run_field(job: &impl FieldJob, scalar: ScalarKind) -> Result<Rendered, RunError> {
     match scalar {
-        ScalarKind::F64 => Ok(Rendered::plain(named(job.run::<f64>(&())?, scalar))),
+        ScalarKind::F64 => {
+            let out = job.run::<f64>(&())?;
+            let out = if job.checks_f64() {
+                check_f64(out, |bits| job.run::<Ball>(&bits))?
+            } else {
+                out
+            };
+            Ok(Rendered::plain(named(out, scalar)))
+        }
         ScalarKind::Rational => Ok(Rendered::plain(named(job.run::<BigRational>(&())?, scalar))),
-        ScalarKind::Mpfr(bits) => certified(scalar, bits, |p| job.run::<Float>(&p)),
+        ScalarKind::Mpfr(bits) => proven_digits(scalar, || job.run::<Ball>(&bits)),
         ScalarKind::Ball(bits) => proven(scalar, || job.run::<Ball>(&bits)),
     }
 }
@@ -100,46 +184,73 @@ pub fn run_real(
     run_real_or_exact(job, scalar, || fail(rational_refusal))
 }
 
-/// `job` in f64 or MPFR, and for `--scalar rational` the computation's exact form `exact`,
-/// for the inputs that have one (it returns the refusal for the others).
+/// `job` in f64, MPFR or balls, and for `--scalar rational` the computation's exact form
+/// `exact`, for the inputs that have one (it returns the refusal for the others).
 pub fn run_real_or_exact(
     job: &impl RealJob,
     scalar: ScalarKind,
     exact: impl FnOnce() -> Result<Out<BigRational>, RunError>,
 ) -> Result<Rendered, RunError> {
     match scalar {
-        ScalarKind::F64 => Ok(Rendered::plain(named(job.run::<f64>(&())?, scalar))),
+        ScalarKind::F64 => {
+            let out = job.run::<f64>(&())?;
+            let out = if job.checks_f64() {
+                check_f64(out, |bits| job.run_ball(bits))?
+            } else {
+                out
+            };
+            Ok(Rendered::plain(named(out, scalar)))
+        }
         ScalarKind::Rational => Ok(Rendered::plain(named(exact()?, scalar))),
-        ScalarKind::Mpfr(bits) => certified(scalar, bits, |p| job.run::<Float>(&p)),
+        ScalarKind::Mpfr(bits) => match job.provable() {
+            Ok(()) => proven_digits(scalar, || job.run_ball(bits)),
+            Err(why) => agreeing(scalar, bits, why, |p| job.run::<Float>(&p)),
+        },
         ScalarKind::Ball(bits) => proven(scalar, || job.run_ball(bits)),
     }
 }
 
-/// A computation whose method uses its two MPFR precisions together, so it renders its own
-/// certified output; this module still chooses which number type runs.
-pub trait TwoPrecisionJob {
-    /// The computation in f64.
-    fn f64(&self) -> Result<Rendered, RunError>;
-    /// The computation at `bits` (and whatever higher precision its method certifies with).
-    fn mpfr(&self, bits: u32) -> Result<Rendered, RunError>;
-    /// A proven form at `bits`, for the methods that have one (by default, refused).
-    fn ball(&self, bits: u32) -> Result<Out<Ball>, RunError> {
-        fail(format!(
-            "option --scalar: ball:{bits} is not available here: this method compares two MPFR precisions to certify its digits"
-        ))
-    }
+/// The fallback of a method balls cannot prove yet ([`RealJob::provable`]): MPFR at `bits`
+/// and at `2·bits`, printed with the digits the two agree on, and labelled as such in the
+/// output's `"digits"` field — agreement is evidence, not a proof.
+fn agreeing(
+    scalar: ScalarKind,
+    bits: u32,
+    why: &str,
+    run: impl Fn(u32) -> Result<Out<Float>, RunError>,
+) -> Result<Rendered, RunError> {
+    Ok(
+        Rendered::certified(named(run(bits)?, scalar), named(run(2 * bits)?, scalar)).with_extra(
+            "digits",
+            Value::String(format!(
+                "agreeing at {bits} and {} bits, not proven: {why}",
+                2 * bits
+            )),
+        ),
+    )
 }
 
-/// `job` in f64 or MPFR; `rational_refusal` is the one-line error for `--scalar rational`.
-pub fn run_two_precision(
-    job: &impl TwoPrecisionJob,
+/// A computation with its own f64 form and a proven form in balls (κ₂ by inertia, conversion
+/// errors by branch and bound), rather than one generic body; `mpfr:<bits>` prints the
+/// digits the ball form proves.
+pub trait ProvenJob {
+    /// The computation in f64.
+    fn f64(&self) -> Result<Rendered, RunError>;
+    /// The proven form at `bits`.
+    fn ball(&self, bits: u32) -> Result<Out<Ball>, RunError>;
+}
+
+/// `job` in f64, MPFR (proven digits) or balls; `rational_refusal` is the one-line error for
+/// `--scalar rational`.
+pub fn run_proven_job(
+    job: &impl ProvenJob,
     scalar: ScalarKind,
     rational_refusal: &str,
 ) -> Result<Rendered, RunError> {
     match scalar {
         ScalarKind::F64 => job.f64(),
         ScalarKind::Rational => fail(rational_refusal),
-        ScalarKind::Mpfr(bits) => job.mpfr(bits),
+        ScalarKind::Mpfr(bits) => proven_digits(scalar, || job.ball(bits)),
         ScalarKind::Ball(bits) => proven(scalar, || job.ball(bits)),
     }
 }

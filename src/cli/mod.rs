@@ -66,12 +66,14 @@ pub enum Command {
     Run {
         /// The algorithm to run.
         algorithm: Algorithm,
-        /// Number type: f64, rational (exact), mpfr:BITS (printed with the digits that
-        /// agree between BITS and 2·BITS bits), or ball:BITS (proven enclosures: each number
-        /// as the digits every point of its ball rounds to, and the radius). Default: f64 for hermite, spline-fit,
-        /// natural-spline, ph-hermite, phodcos, gerbs-basis, gerbs-path and dubins; mpfr:128 for
-        /// convergence; mpfr:256 for hermite-condition, bang-bang, marin-1d and marin;
-        /// bspline-basis and bspline-gram are always exact.
+        /// Number type: f64, rational (exact), mpfr:BITS (ball arithmetic at BITS bits, each
+        /// number printed with the digits its enclosure proves; marin, gerbs-path and the
+        /// ERBS print digits that agree between BITS and 2·BITS bits, labelled "not proven"),
+        /// or ball:BITS (proven enclosures: each number as the digits every point of its ball
+        /// rounds to, and the radius). Default: f64 for hermite, spline-fit, natural-spline,
+        /// ph-hermite, phodcos, gerbs-basis, gerbs-path and dubins; mpfr:256 for convergence,
+        /// hermite-condition, bang-bang, marin-1d and marin; bspline-basis and bspline-gram
+        /// are always exact.
         #[arg(long, value_name = "SCALAR", value_parser = parse_scalar)]
         scalar: Option<ScalarKind>,
         /// Read the input from this file instead of stdin.
@@ -84,7 +86,7 @@ const RUN_HELP: &str = r#"Algorithms and their input:
   hermite            {"start": [x0, x0', ..., x0^(m)], "end": [x1, ..., x1^(m)], "interval": [t0, t1]}
                      each value a number or a point [x, y, ...]; output {"degree", "control_points"}
   hermite-condition  {"derivatives": m, "interval": [t0, t1], "matrix": "transform" | "binomial"}
-                     output {"condition_number", "certified_digits", "f64"}
+                     output {"condition_number", "f64"} (f64: also "correct_digits")
   bspline-basis      {"degree": k} -> {"pieces": [[c0, ..., ck] x (k+1)]}, piece j on [j, j+1] in s = t - j, exact
   bspline-gram       {"degree": k} (k >= 1) -> {"entries": [g0, ..., gk]}, exact
   spline-fit         {"degree": k, "controls": M, "times": [...], "values": [...], "weights": null | [...]}
@@ -100,8 +102,10 @@ const RUN_HELP: &str = r#"Algorithms and their input:
   phodcos            {"curve": "[1.5*sin(7.2*t), cos(9*t), exp(cos(1.8*t))]", "interval": [a, b],
                       "segments": N | "tolerance": eps, "max_segments": M (optional, default 4096)}
                      -> {"segments", "max_error", "sampled_error", "preimages": [[[u,v,p,q] x 9] x N]}
+                     (mpfr and ball: max_error proven by branch and bound, no sampled_error)
   convergence        {"curve", "interval", "levels": [0, ..., 13], "free": {...} (optional)}
-                     -> {"rows": [{"segments", "error", "ratio", "order"}]} (default scalar mpfr:128)
+                     -> {"rows": [{"segments", "error", "ratio", "order"}]} (default scalar mpfr:256);
+                     levels increase; order = log2(ratio)/(level gap); errors proven by branch and bound
   gerbs-basis        {"knots": [t1, ..., t(n+2)], "kind": "bfbs" | "erbs", "params": {...} (optional),
                       "at": [...], "derivatives": d (optional, default 0), "side": "right" | "left" (optional)}
                      -> {"values": [[[B, B', ..., B^(d)] x n] x points]} for B_2 ... B_(n+1); null where a
@@ -492,6 +496,7 @@ pub fn run_text(
     scalar: Option<ScalarKind>,
     text: &str,
 ) -> Result<String, Failure> {
+    budget::mark_start();
     let doc = input::parse_document(text).map_err(|e| Failure::Usage(e.0))?;
     let value = match algorithm {
         Algorithm::Hermite => run_hermite::run_hermite(&doc, scalar.unwrap_or(ScalarKind::F64)),
@@ -514,7 +519,7 @@ pub fn run_text(
         Algorithm::PhHermite => run_ph::run_ph_hermite(&doc, scalar.unwrap_or(ScalarKind::F64)),
         Algorithm::Phodcos => run_ph::run_phodcos(&doc, scalar.unwrap_or(ScalarKind::F64)),
         Algorithm::Convergence => {
-            run_ph::run_convergence(&doc, scalar.unwrap_or(ScalarKind::Mpfr(128)))
+            run_ph::run_convergence(&doc, scalar.unwrap_or(ScalarKind::Mpfr(256)))
         }
         Algorithm::GerbsBasis => {
             run_gerbs::run_gerbs_basis(&doc, scalar.unwrap_or(ScalarKind::F64))

@@ -29,6 +29,10 @@ pub enum Out<T> {
     Bool(bool),
     /// A double reported as a JSON number (e.g. an f64 reference value), or null if not finite.
     F64(f64),
+    /// A proven result known to lie in [lo, hi] (MPFR ends), whatever the tree's number type:
+    /// printed by the proven renderers as a ball is, but without the f64 range of a ball's
+    /// radius (κ₂ of 1e415 is proven by its ends).
+    Bounds(Float, Float),
     Null,
 }
 
@@ -56,6 +60,48 @@ impl<T> Out<T> {
     pub fn nums(values: Vec<T>) -> Self {
         Out::List(values.into_iter().map(Out::Num).collect())
     }
+    /// The same tree with every number mapped by `f` (a scale mapped alike).
+    pub fn map<U>(&self, f: &impl Fn(&T) -> U) -> Out<U> {
+        match self {
+            Out::Num(x) => Out::Num(f(x)),
+            Out::MaybeZero(x, s) => Out::MaybeZero(f(x), f(s)),
+            Out::List(items) => Out::List(items.iter().map(|v| v.map(f)).collect()),
+            Out::Object(fields) => {
+                Out::Object(fields.iter().map(|(k, v)| (k.clone(), v.map(f))).collect())
+            }
+            Out::Int(i) => Out::Int(*i),
+            Out::Text(s) => Out::Text(s.clone()),
+            Out::Bool(b) => Out::Bool(*b),
+            Out::F64(x) => Out::F64(*x),
+            Out::Bounds(lo, hi) => Out::Bounds(lo.clone(), hi.clone()),
+            Out::Null => Out::Null,
+        }
+    }
+    /// Every number of the tree with its path, in order (a scale is not a number of the
+    /// output).
+    pub fn numbers<'a>(&'a self, path: &str, found: &mut Vec<(String, &'a T)>) {
+        match self {
+            Out::Num(x) | Out::MaybeZero(x, _) => found.push((path.to_string(), x)),
+            Out::List(items) => {
+                for (i, v) in items.iter().enumerate() {
+                    v.numbers(&format!("{path}[{i}]"), found);
+                }
+            }
+            Out::Object(fields) => {
+                for (k, v) in fields {
+                    v.numbers(&field_path(path, k), found);
+                }
+            }
+            _ => {}
+        }
+    }
+    /// The top-level fields of an object (the whole tree as one unnamed field otherwise).
+    pub fn fields(&self) -> Vec<(String, &Out<T>)> {
+        match self {
+            Out::Object(fields) => fields.iter().map(|(k, v)| (k.clone(), v)).collect(),
+            other => vec![(String::new(), other)],
+        }
+    }
 }
 
 /// The level below which a value computed at the working precision cannot be told from 0
@@ -71,10 +117,12 @@ pub fn noise_level<T: Real>(scale: &T) -> T {
     scale.clone().abs() * &crate::scalar::powi(&T::from_ratio(1, 2, &ctx), bits)
 }
 
-/// x, or 0 when |x| is below `level` (never for enclosures, whose balls around 0 are the
-/// honest answer).
+/// x, or 0 when |x| is below `level`, in f64 only: an f64 answer prints its mathematical
+/// zeros as 0, not as rounding noise. MPFR keeps its value (a run that cannot prove its
+/// digits prints agreeing ones, and a zero there is a claim of its own: [`agreed_text`]), and
+/// enclosures keep their balls around 0, the honest answer.
 pub fn flush<T: Real>(x: T, level: Option<&T>) -> T {
-    if T::ENCLOSURE {
+    if T::ENCLOSURE || T::scalar_name(&x.ctx()) != "f64" {
         return x;
     }
     match level {
@@ -128,6 +176,10 @@ pub fn render_plain<T: Field>(out: &Out<T>) -> Value {
         Out::Text(s) => Value::String(s.clone()),
         Out::Bool(b) => Value::Bool(*b),
         Out::F64(x) => f64_value(*x),
+        Out::Bounds(lo, hi) => {
+            let mid = Float::with_val(lo.prec().max(hi.prec()) + 1, lo + hi) / 2u32;
+            Value::String(mid.to_string())
+        }
         Out::Null => Value::Null,
     }
 }
@@ -172,12 +224,220 @@ pub fn render_proven(out: &Out<Ball>, path: &str) -> Result<Value, RunError> {
                 .map(|(k, v)| render_proven(v, &field_path(path, k)).map(|r| (k.clone(), r)))
                 .collect::<Result<Map<_, _>, _>>()?,
         ),
+        Out::Bounds(lo, hi) => {
+            let printed = crate::scalar::ball::printed_interval(lo, hi, lo.prec().min(hi.prec()))
+                .ok_or_else(|| {
+                    RunError::Input(format!(
+                        "output \"{path}\" has no finite enclosure at this precision; raise the precision"
+                    ))
+                })?;
+            let mut m = Map::new();
+            m.insert("value".into(), Value::String(printed.value));
+            m.insert("radius".into(), Value::String(printed.radius));
+            Value::Object(m)
+        }
+        other => render_plain_leaf(other),
+    })
+}
+
+/// The text of a number known to lie in the ball `b`, with only digits the ball proves
+/// (`mpfr:<bits>`'s contract, README "Precision is a result"):
+/// - "0" for an exact zero;
+/// - the [`Ball::proven_digits`]: the longest decimal every point of the ball rounds to, so
+///   the exact value, rounded to the printed digits, is the printed string;
+/// - for a ball that contains 0, of a quantity that may vanish (`may_be_zero`, an
+///   [`Out::MaybeZero`]), the zero at the finest unit it proves, "0eK": every point of the
+///   ball lies within ½·10^K of 0 (rounded at the unit 10^K, the value is 0).
+///
+/// `None` when the ball is not finite, or does not prove its first digit (such as
+/// [0.94, 1.04], or a ball around 0 of a quantity that does not vanish).
+pub fn proven_text(b: &Ball, may_be_zero: bool) -> Option<String> {
+    if !b.mid().is_finite() || !b.rad().is_finite() {
+        return None;
+    }
+    if b.rad() == 0.0 && b.mid().is_zero() {
+        return Some("0".into());
+    }
+    let (digits, text) = b.proven_digits();
+    if digits > 0 {
+        return Some(text);
+    }
+    let (lo, hi) = (b.lower(), b.upper());
+    if !may_be_zero
+        || lo.is_sign_positive() && !lo.is_zero()
+        || hi.is_sign_negative() && !hi.is_zero()
+    {
+        return None;
+    }
+    Some(format!("0e{}", zero_unit_exponent(&lo, &hi)))
+}
+
+/// The least K with [lo, hi] inside (−½·10^K, ½·10^K).
+fn zero_unit_exponent(lo: &Float, hi: &Float) -> i64 {
+    let reach = if lo.clone().abs() > hi.clone().abs() {
+        lo.clone().abs()
+    } else {
+        hi.clone().abs()
+    };
+    if reach.is_zero() {
+        return 0;
+    }
+    // 2·reach < 10^K ⇔ K > log₁₀(2·reach); start from an estimate and correct it exactly.
+    let doubled = Float::with_val(reach.prec() + 2, &reach * 2u32);
+    let mut k = doubled.to_f64().log10().floor() as i64;
+    let below = |k: i64| {
+        let ten = rug::Rational::from(rug::Integer::from(rug::Integer::u_pow_u(
+            10,
+            k.unsigned_abs() as u32,
+        )));
+        let unit = if k >= 0 { ten } else { ten.recip() };
+        doubled.to_rational().is_some_and(|d| d < unit)
+    };
+    while !below(k) {
+        k += 1;
+    }
+    while below(k - 1) {
+        k -= 1;
+    }
+    k
+}
+
+/// Whether the f64 output `out` keeps a correct digit in the norm of each top-level field,
+/// judged against `enclosure`, the same output in balls: `Some(Ok(()))` when proven for
+/// every field (2·max |x − y| < max |y| for every y in the balls), `Some(Err(field))` when
+/// proven not to hold for `field`, `None` when the balls are too wide to tell (or the two
+/// outputs differ in shape). A field whose exact values are all 0 has no digits to lose.
+pub fn f64_digit_in_norm(out: &Out<f64>, enclosure: &Out<Ball>) -> Option<Result<(), String>> {
+    let (fields, balls) = (out.fields(), enclosure.fields());
+    let mut undecided = false;
+    for (name, value) in fields {
+        let (_, reference) = balls.iter().find(|(k, _)| *k == name)?;
+        let mut xs = Vec::new();
+        value.numbers(&name, &mut xs);
+        let ys = reference.enclosures()?;
+        if xs.len() != ys.len() {
+            return None;
+        }
+        // Bounds of the error max |x − y| and of the size max |y|, exactly in rationals.
+        let zero = rug::Rational::new;
+        let (mut error_hi, mut error_lo, mut size_hi, mut size_lo) =
+            (zero(), zero(), zero(), zero());
+        for ((_, x), (lo, hi)) in xs.iter().zip(&ys) {
+            let x = rug::Rational::from_f64(**x)?;
+            let (below, above) = (rug::Rational::from(&x - lo), rug::Rational::from(hi - &x));
+            error_hi = error_hi.max(below.clone().abs().max(above.clone().abs()));
+            // The distance from x to [lo, hi]: 0 inside.
+            error_lo = error_lo.max((-below).max(-above).max(zero()));
+            size_hi = size_hi.max(lo.clone().abs().max(hi.clone().abs()));
+            if *lo > 0 || *hi < 0 {
+                size_lo = size_lo.max(lo.clone().abs().min(hi.clone().abs()));
+            }
+        }
+        if size_hi == 0 || error_hi.clone() * 2u32 < size_lo {
+            continue;
+        }
+        if error_lo * 2u32 >= size_hi {
+            return Some(Err(name));
+        }
+        undecided = true;
+    }
+    (!undecided).then_some(Ok(()))
+}
+
+impl Out<Ball> {
+    /// Every number of a proven tree as its exact bounds [lo, hi], in order; `None` when one
+    /// is not finite.
+    pub fn enclosures(&self) -> Option<Vec<(rug::Rational, rug::Rational)>> {
+        let mut found = Vec::new();
+        self.collect_enclosures(&mut found)?;
+        Some(found)
+    }
+
+    fn collect_enclosures(&self, found: &mut Vec<(rug::Rational, rug::Rational)>) -> Option<()> {
+        match self {
+            Out::Num(b) | Out::MaybeZero(b, _) => {
+                found.push((b.lower().to_rational()?, b.upper().to_rational()?))
+            }
+            Out::Bounds(lo, hi) => found.push((lo.to_rational()?, hi.to_rational()?)),
+            Out::List(items) => items.iter().try_for_each(|v| v.collect_enclosures(found))?,
+            Out::Object(fields) => fields
+                .iter()
+                .try_for_each(|(_, v)| v.collect_enclosures(found))?,
+            _ => {}
+        }
+        Some(())
+    }
+}
+
+/// Render a ball tree for `mpfr:<bits>`: every number as a decimal string with the digits
+/// its enclosure proves ([`proven_text`]). Fails, naming the field, when a number has no
+/// finite enclosure or not even its first digit is proven (the user raises the precision).
+pub fn render_digits(out: &Out<Ball>, path: &str) -> Result<Value, RunError> {
+    Ok(match out {
+        Out::Num(b) | Out::MaybeZero(b, _) => match proven_text(b, matches!(out, Out::MaybeZero(..))) {
+            Some(text) => Value::String(text),
+            None if b.mid().is_finite() && b.mid().clone().abs() > 1e290 => {
+                return Err(RunError::Input(format!(
+                    "output \"{path}\" is about {} at mpfr:{}: beyond the range of the error bound that proves its digits (an f64, about 1e308)",
+                    format_float_digits(b.mid(), 3),
+                    b.ctx()
+                )))
+            }
+            None if !b.mid().is_finite() || !b.rad().is_finite() => {
+                return Err(RunError::Input(format!(
+                    "output \"{path}\" has no finite enclosure at mpfr:{}: the input is beyond this precision \
+                     (an operation met a division by a value that may be 0, or a result beyond the range of the bounds); raise the precision",
+                    b.ctx()
+                )))
+            }
+            None => {
+                return Err(RunError::Input(format!(
+                    "output \"{path}\": not even its first digit is proven at mpfr:{} (it lies in [{}, {}]); raise the precision",
+                    b.ctx(),
+                    format_float_digits(&b.lower(), 3),
+                    format_float_digits(&b.upper(), 3)
+                )))
+            }
+        },
+        Out::List(items) => Value::Array(
+            items
+                .iter()
+                .enumerate()
+                .map(|(i, v)| render_digits(v, &format!("{path}[{i}]")))
+                .collect::<Result<_, _>>()?,
+        ),
+        Out::Object(fields) => Value::Object(
+            fields
+                .iter()
+                .map(|(k, v)| render_digits(v, &field_path(path, k)).map(|r| (k.clone(), r)))
+                .collect::<Result<Map<_, _>, _>>()?,
+        ),
+        Out::Bounds(lo, hi) => {
+            match crate::scalar::ball::interval_digits(lo, hi, lo.prec().min(hi.prec())) {
+                (0, _) => {
+                    return Err(RunError::Input(format!(
+                        "output \"{path}\": not even its first digit is proven at {} bits (it lies in [{}, {}]); raise the precision",
+                        lo.prec().min(hi.prec()),
+                        format_float_digits(lo, 3),
+                        format_float_digits(hi, 3)
+                    )))
+                }
+                (_, text) => Value::String(text),
+            }
+        }
+        other => render_plain_leaf(other),
+    })
+}
+
+/// A leaf that is not a number of the tree's type, rendered as [`render_plain`] does.
+fn render_plain_leaf<T>(out: &Out<T>) -> Value {
+    match out {
         Out::Int(i) => Value::from(*i),
         Out::Text(s) => Value::String(s.clone()),
         Out::Bool(b) => Value::Bool(*b),
         Out::F64(x) => f64_value(*x),
-        Out::Null => Value::Null,
-    })
+        _ => Value::Null,
+    }
 }
 
 /// Render the more precise tree `hi` with the digits it shares with `lo`. Fails (naming the
@@ -215,9 +475,10 @@ pub fn render_certified(lo: &Out<Float>, hi: &Out<Float>, path: &str) -> Result<
 }
 
 /// The digits `a` (at p bits) and `b` (at 2p bits) agree on; with `scales` (the scales of
-/// the quantities each was computed from), "0" when they agree on none but both lie below
-/// [`noise_level`] of their scale (see [`Out::MaybeZero`]); the flag says which. `None`: no
-/// digit is certified.
+/// the quantities each was computed from), when they agree on none but both lie below
+/// 2^(−p/2) of the lower precision's scale, the zero at that unit, "0eK" with both values
+/// within ½·10^K of 0 (see [`Out::MaybeZero`]); the flag says which. `None`: no digit agrees.
+/// (The fallback of methods balls cannot prove yet: agreement, not a proof.)
 pub fn agreed_text(
     a: &Float,
     b: &Float,
@@ -227,13 +488,20 @@ pub fn agreed_text(
     if c.digits > 0 || (a.is_zero() && b.is_zero()) {
         return Some((c.text, false));
     }
-    // Both below the lower precision's resolution: the higher one may resolve a real value
-    // there (an ERBS weight of 1e-58 beside a path of size 20), but a p-bit result holds no
-    // digit of it, so 0 is its value to the precision printed.
+    // Both far below the lower precision's resolution of the scale: the higher one may
+    // resolve a real value there (an ERBS weight of 1e-58 beside a path of size 20), but a
+    // p-bit result holds no digit of it; printed as 0 at the unit both stay within.
     let (sa, _) = scales?;
-    let level = noise_level(sa);
-    let noise = a.clone().abs() < level && b.clone().abs() < level;
-    noise.then(|| ("0".to_string(), true))
+    let level = sa.clone().abs() >> (a.prec() / 2);
+    let reach = if a.clone().abs() > b.clone().abs() {
+        a.clone().abs()
+    } else {
+        b.clone().abs()
+    };
+    (reach < level).then(|| {
+        let k = zero_unit_exponent(&Float::with_val(level.prec(), -&level), &level);
+        (format!("0e{k}"), true)
+    })
 }
 
 /// One number with the digits `lo` and `hi` agree on; with `scales`, a value that is noise

@@ -1,7 +1,7 @@
 //! `run bspline-basis`, `bspline-gram`, `spline-fit` and `bang-bang`: the JSON shapes that `docs/commands.md` documents.
 
 use super::budget::Rates;
-use super::dispatch::{refuse_ball, run_field, run_real, FieldJob, RealJob};
+use super::dispatch::{run_field, run_real, FieldJob, RealJob};
 use super::input::{self, fail, InputError, RunError};
 use super::output::Out;
 use super::Rendered;
@@ -9,6 +9,7 @@ use crate::algo::bspline::bang_bang;
 use crate::algo::bspline::fit::{schoenberg_whitney, FitError, SplineSpace};
 use crate::algo::bspline::gram::gram_entries;
 use crate::algo::bspline::CardinalBSpline;
+use crate::scalar::ball::Ball;
 use crate::scalar::qsqrt2::QSqrt2;
 use crate::scalar::{BigRational, Field, Real, ScalarKind};
 use serde_json::{Map, Value};
@@ -240,12 +241,17 @@ impl FieldJob for FitInput {
     fn run<T: Field>(&self, ctx: &T::Ctx) -> Result<Out<T>, RunError> {
         Ok(fit_in(self, ctx)?)
     }
+
+    /// A smoothing fit with weights across many orders of magnitude can lose every digit in
+    /// f64 below the condition estimate's threshold.
+    fn checks_f64(&self) -> bool {
+        true
+    }
 }
 
 /// `run bang-bang`: switching times and amplitude of the minimum-L∞ control through x(2) = ξ.
 pub fn run_bang_bang(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, RunError> {
     input::only_fields(doc, &["xi"])?;
-    refuse_ball(scalar, "Newton's method stops at a tolerance, which a ball cannot prove; the exact values in Q(√2) are printed with any other scalar")?;
     let xi = input::number(input::field(doc, "xi")?, "xi")?;
     let Some(exact_times) = bang_bang::exact_switching_times() else {
         return Err(RunError::internal(
@@ -253,18 +259,40 @@ pub fn run_bang_bang(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Ren
         ));
     };
     let exact_u = bang_bang::amplitude(&exact_times, &QSqrt2::from_rational(&xi, &()));
-    let exact = |out: Out<QSqrt2>| super::output::render_plain(&out);
-    let exact_json = exact(Out::object(vec![
+    let exact = Out::object(vec![
         ("switching_times", Out::nums(exact_times.to_vec())),
         ("amplitude", Out::Num(exact_u)),
-    ]));
+    ]);
+    let exact_json = super::output::render_plain(&exact);
     let refusal = "option --scalar: the switching times are irrational (2 ± √2); use f64 or mpfr:<bits>, and see \"exact\"";
-    Ok(run_real(&BangBangJob { xi }, scalar, refusal)?.with_extra("exact", exact_json))
+    let job = BangBangJob { xi, exact };
+    Ok(run_real(&job, scalar, refusal)?.with_extra("exact", exact_json))
 }
 
-/// The switching times by Newton's method and the amplitude for x(2) = ξ, in one number type.
+/// Every number of an exact tree as its proven bounds at `bits` ([`QSqrt2::bounds`]: an
+/// amplitude of 1e10000 is beyond the f64 radius of a ball, not beyond its bounds).
+fn bounds_of(exact: &Out<QSqrt2>, bits: u32) -> Out<Ball> {
+    match exact {
+        Out::Num(q) | Out::MaybeZero(q, _) => {
+            let (lo, hi) = q.bounds(bits);
+            Out::Bounds(lo, hi)
+        }
+        Out::List(items) => Out::List(items.iter().map(|v| bounds_of(v, bits)).collect()),
+        Out::Object(fields) => Out::Object(
+            fields
+                .iter()
+                .map(|(k, v)| (k.clone(), bounds_of(v, bits)))
+                .collect(),
+        ),
+        other => other.map(&|q: &QSqrt2| q.to_real::<Ball>(&bits)),
+    }
+}
+
+/// The switching times by Newton's method and the amplitude for x(2) = ξ, in one number type;
+/// in balls, the exact values in Q(√2) enclosed.
 struct BangBangJob {
     xi: BigRational,
+    exact: Out<QSqrt2>,
 }
 
 impl RealJob for BangBangJob {
@@ -276,5 +304,15 @@ impl RealJob for BangBangJob {
             ("switching_times", Out::nums(t.to_vec())),
             ("amplitude", Out::Num(u)),
         ]))
+    }
+
+    /// Newton's method stops at a tolerance, which a ball cannot prove; the exact values it
+    /// converges to (2 − √2, 2, 2 + √2 and U in Q(√2)) are enclosed instead.
+    fn run_ball(&self, bits: u32) -> Result<Out<Ball>, RunError> {
+        Ok(bounds_of(&self.exact, bits))
+    }
+
+    fn checks_f64(&self) -> bool {
+        true
     }
 }

@@ -21,6 +21,8 @@ use crate::algo::gerbs::path::{
 };
 use crate::algo::gerbs::quadrature::default_tolerance;
 use crate::algo::gerbs::{basis_derivatives_located, Blend, GerbsError, Knots, Located, Side};
+use crate::curve::integral::IntegralOptions;
+use crate::scalar::ball::Ball;
 use crate::scalar::{BigRational, Field, Real, ScalarKind};
 use serde_json::{Map, Value};
 
@@ -344,9 +346,16 @@ impl BasisJob {
                     }
                     None => Vec::new(),
                 };
+                // Only an ERBS derivative can fail to exist (2σ below its order at an
+                // interval's centre); a BFBS is a polynomial, so a value that is not finite
+                // there left the number type's range and is refused at the output.
+                let entry = |x: T| match self.params {
+                    BasisParams::Erbs { .. } => finite_or_null(x),
+                    BasisParams::Bfbs(_) => Out::Num(x),
+                };
                 Out::List(
                     d.into_iter()
-                        .map(|b| Out::List(b.into_iter().map(finite_or_null).collect()))
+                        .map(|b| Out::List(b.into_iter().map(entry).collect()))
                         .collect(),
                 )
             })
@@ -355,13 +364,7 @@ impl BasisJob {
     }
 
     fn knots_in<T: Field>(&self, ctx: &T::Ctx) -> Result<Knots<T>, InputError> {
-        let t = self
-            .knots
-            .as_slice()
-            .iter()
-            .map(|q| T::from_rational(q, ctx))
-            .collect();
-        Knots::new(t).map_err(|e| match e {
+        Knots::rounded(&self.knots, ctx).map_err(|e| match e {
             // Distinct rationals that round to one value in T.
             GerbsError::Knots(m) => InputError(format!(
                 "field \"knots\": {m} after rounding to the working precision"
@@ -384,7 +387,18 @@ impl RealJob for BasisJob {
             }
         })
     }
+
+    fn provable(&self) -> Result<(), &'static str> {
+        match self.params {
+            BasisParams::Bfbs(_) => Ok(()),
+            BasisParams::Erbs { .. } => Err(ERBS_QUADRATURE),
+        }
+    }
 }
+
+/// Why an ERBS result is not proven: its basis is a quadrature without an enclosed remainder.
+const ERBS_QUADRATURE: &str =
+    "the ERBS basis is a tanh–sinh quadrature whose truncation error a ball does not enclose";
 
 /// `run gerbs-basis`: B_2 … B_{n+1} and their derivatives at the given points.
 pub fn run_gerbs_basis(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, RunError> {
@@ -395,7 +409,7 @@ pub fn run_gerbs_basis(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<R
     let knots = knots(doc)?;
     let kind = kind(doc)?;
     if matches!(kind, Kind::Erbs) {
-        refuse_ball(scalar, "the ERBS basis is a tanh–sinh quadrature whose truncation error a ball does not enclose")?;
+        refuse_ball(scalar, ERBS_QUADRATURE)?;
     }
     let params = basis_params(doc, kind, &nonempty_intervals(&knots))?;
     let at = evaluation_points(doc, &knots)?;
@@ -542,11 +556,14 @@ struct PathJob {
 }
 
 impl PathJob {
+    /// The output of `path`, its length `length` when it is proven, else estimated by
+    /// tanh–sinh.
     fn out<T: Real, B: Blend<T> + Sync>(
         &self,
         path: &GerbsPath<T, B>,
         waypoints: &[[T; 2]],
         ctx: &T::Ctx,
+        length: Option<T>,
     ) -> Out<T> {
         let samples = path.sample(self.samples);
         let n = self.waypoints.len();
@@ -567,15 +584,12 @@ impl PathJob {
         let curvature_level = noise_level(&curvature_scale);
         let vector = |v: &[T; 2], scale: Option<&T>| {
             let level = scale.map(noise_level);
+            // Every coordinate may vanish (an enclosure keeps its ball around 0; the scale
+            // matters only to the flush of f64).
+            let scale = scale.cloned().unwrap_or_else(|| T::zero_in(ctx));
             Out::List(
                 v.iter()
-                    .map(|x| {
-                        let x = flush(x.clone(), level.as_ref());
-                        match scale {
-                            Some(s) => Out::MaybeZero(x, s.clone()),
-                            None => Out::Num(x),
-                        }
-                    })
+                    .map(|x| Out::MaybeZero(flush(x.clone(), level.as_ref()), scale.clone()))
                     .collect(),
             )
         };
@@ -614,7 +628,9 @@ impl PathJob {
             ),
             (
                 "length",
-                Out::Num(path.length_within(&default_tolerance::<T>(ctx))),
+                Out::Num(
+                    length.unwrap_or_else(|| path.length_within(&default_tolerance::<T>(ctx))),
+                ),
             ),
             ("at_waypoints", Out::List(at_waypoints)),
             (
@@ -631,9 +647,10 @@ impl PathJob {
     }
 }
 
-impl RealJob for PathJob {
-    fn run<T: Real>(&self, ctx: &T::Ctx) -> Result<Out<T>, RunError> {
-        let spec = PathSpec {
+impl PathJob {
+    /// Algorithm 1's data in `T`: waypoints, radius, θ_o, the turn signs decided exactly.
+    fn spec<T: Real>(&self, ctx: &T::Ctx) -> Result<PathSpec<T>, RunError> {
+        Ok(PathSpec {
             waypoints: to_points(&self.waypoints, ctx),
             radius: T::from_rational(&self.radius, ctx),
             theta_o: input::real_in::<T>(&self.theta_o, ctx, "theta_o")?,
@@ -642,7 +659,13 @@ impl RealJob for PathJob {
             // Decided on the exact waypoints, not on their rounding.
             turns: Some(exact_turn_signs(&self.waypoints).map_err(gerbs_error)?),
             end_curves: Default::default(),
-        };
+        })
+    }
+}
+
+impl RealJob for PathJob {
+    fn run<T: Real>(&self, ctx: &T::Ctx) -> Result<Out<T>, RunError> {
+        let spec = self.spec::<T>(ctx)?;
         match &self.params {
             BasisParams::Bfbs(i) => {
                 let bfbs = Bfbs::new(i.clone()).map_err(gerbs_error)?;
@@ -650,6 +673,7 @@ impl RealJob for PathJob {
                     &GerbsPath::new(&spec, bfbs).map_err(gerbs_error)?,
                     &spec.waypoints,
                     ctx,
+                    None,
                 ))
             }
             BasisParams::Erbs { sets, centre } => {
@@ -659,8 +683,36 @@ impl RealJob for PathJob {
                     &GerbsPath::new(&spec, erbs).map_err(gerbs_error)?,
                     &spec.waypoints,
                     ctx,
+                    None,
                 ))
             }
+        }
+    }
+
+    /// A BFBS path in balls, its length proven by Taylor models of the speed
+    /// ([`GerbsPath::proven_length`]).
+    fn run_ball(&self, bits: u32) -> Result<Out<Ball>, RunError> {
+        let BasisParams::Bfbs(i) = &self.params else {
+            return fail(format!("option --scalar: {ERBS_QUADRATURE}"));
+        };
+        let spec = self.spec::<Ball>(&bits)?;
+        let path = GerbsPath::new(&spec, Bfbs::new(i.clone()).map_err(gerbs_error)?)
+            .map_err(gerbs_error)?;
+        // Taylor models of a higher order at a higher precision: the pieces needed fall as
+        // the tolerance^(1/(N+2)) (measured at 256 bits on the README's path: order 16 did not
+        // reach the tolerance in 4096 pieces, order 64 took 1000 pieces in 4.7 s).
+        let options = IntegralOptions {
+            order: (bits as usize / 4).clamp(12, 56),
+            ..IntegralOptions::default()
+        };
+        let length = path.proven_length(&options).map_err(gerbs_error)?;
+        Ok(self.out(&path, &spec.waypoints, &bits, Some(length)))
+    }
+
+    fn provable(&self) -> Result<(), &'static str> {
+        match self.params {
+            BasisParams::Bfbs(_) => Ok(()),
+            BasisParams::Erbs { .. } => Err(ERBS_QUADRATURE),
         }
     }
 }
@@ -681,10 +733,6 @@ pub fn run_gerbs_path(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Re
             "arcs",
         ],
     )?;
-    refuse_ball(
-        scalar,
-        "the path length is a tanh–sinh quadrature whose truncation error a ball does not enclose",
-    )?;
     let waypoints = waypoints(doc)?;
     if waypoints.len() > MAX_PATH_WAYPOINTS {
         return fail(format!(
@@ -699,6 +747,9 @@ pub fn run_gerbs_path(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Re
         None => return fail("input: missing field \"theta_o\" (the paper uses \"pi/8\")"),
     };
     let kind = kind(doc)?;
+    if matches!(kind, Kind::Erbs) {
+        refuse_ball(scalar, ERBS_QUADRATURE)?;
+    }
     let knots = Knots::<BigRational>::uniform(waypoints.len(), &()).map_err(gerbs_error)?;
     let params = basis_params(doc, kind, &nonempty_intervals(&knots))?;
     let samples = match doc.get("samples") {
@@ -748,12 +799,19 @@ fn path_budget(
     // W = 50, S = 101 in 16.
     let (w, s) = (waypoints as f64, samples as f64);
     let seconds = match (kind, scalar) {
-        (Kind::Bfbs, ScalarKind::Mpfr(_)) => Rates {
-            f64: 0.0,
-            mpfr256: bfbs_extra(scalar),
-            rational: 0.0,
+        // In MPFR and balls the length is proven by Taylor models of the speed on each of the
+        // W − 1 knot intervals, on two cores: measured 1.05 CPU-s an interval at 128 bits
+        // (W = 20, radius 30), 1.3–2.9 at 256 bits; the samples as before.
+        (Kind::Bfbs, ScalarKind::Mpfr(bits) | ScalarKind::Ball(bits)) => {
+            let per_interval = 1.5 * (f64::from(bits) / 128.0).powf(1.5);
+            per_interval * (w - 1.0) / 2.0
+                + Rates {
+                    f64: 0.0,
+                    mpfr256: bfbs_extra(scalar),
+                    rational: 0.0,
+                }
+                .seconds(8e-5 * w * s + 1e-3 * w * w, scalar)
         }
-        .seconds(8e-5 * w * s + 0.12 * w + 1e-3 * w * w, scalar),
         (Kind::Erbs, ScalarKind::Mpfr(_)) => Rates {
             f64: 0.0,
             mpfr256: erbs_extra(scalar),
@@ -814,7 +872,7 @@ fn angle(v: &Value, path: &str) -> Result<RealInput, InputError> {
 /// in 0.5 s at 256 bits, 1.7 s at 512, 8 s at 1024).
 fn bfbs_extra(scalar: ScalarKind) -> f64 {
     match scalar {
-        ScalarKind::Mpfr(bits) => (bits as f64 / 256.0).max(1.0).powf(0.7),
+        ScalarKind::Mpfr(bits) | ScalarKind::Ball(bits) => (bits as f64 / 256.0).max(1.0).powf(0.7),
         _ => 1.0,
     }
 }

@@ -1,14 +1,15 @@
 //! `run hermite` and `run hermite-condition`: the JSON shapes that `docs/commands.md` documents.
 
 use super::budget::{self, check_output, Rates};
-use super::dispatch::{run_field, run_two_precision, FieldJob, TwoPrecisionJob};
+use super::dispatch::{run_field, run_proven_job, FieldJob, ProvenJob};
 use super::input::{self, fail, InputError, RunError};
 use super::output::Out;
 use super::Rendered;
 use crate::algo::hermite::{self, condition, TransformKind};
 use crate::scalar::ball::Ball;
-use crate::scalar::certify::{correct_digits, Certified};
+use crate::scalar::certify::correct_digits;
 use crate::scalar::{BigRational, Field, Float, ScalarKind};
+use rug::float::Round;
 use serde_json::{Map, Value};
 
 /// The most derivatives accepted by `run hermite` (degree 1001).
@@ -134,13 +135,12 @@ pub fn run_condition(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Ren
     // The matrix depends only on the width t1 − t0 (Eq. 11's factors n!/(n−j)!/(t1 − t0)^j):
     // take it exactly here, so that [1, 1 + 1e-40] is not rounded to an empty interval.
     let (t0, t1) = (BigRational::from_integer(0.into()), t1 - &t0);
-    // One-sided Jacobi on the (m+1) × (2m+2) start block: about (m+1)^3.8 operations over its
-    // sweeps (measured at mpfr:256: m = 30 in 0.22 s, m = 60 in 3 s). The f64 run also
-    // certifies against mpfr:256, so it costs as much.
+    // Our f64 one-sided Jacobi on the (m+1) × (2m+2) start block: about (m+1)^3.8
+    // operations over its sweeps (f64 only; every other number type is the proof below).
     let units = (m as f64 + 1.0).powf(3.8);
     let rates = Rates {
-        f64: 5e-7,
-        mpfr256: 5e-7,
+        f64: 5e-9,
+        mpfr256: 0.0,
         rational: 0.0,
     };
     rates.check(
@@ -158,20 +158,18 @@ pub fn run_condition(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Ren
         ],
         None,
     )?;
-    if let ScalarKind::Ball(_) = scalar {
-        // The proof's exact LDLᵀ works on integers whose size grows with m and with the
-        // derivative scales (t1 − t0)^−j. Measured: m = 30 on [0, 1] in 0.6 s, m = 60 in 14 s;
-        // m = 30 on [0, 1e-3] in 1.2–4.6 s, m = 60 there in over 2 minutes.
-        let scale_bits = m as f64 * condition::log2_abs(&(t1.clone() - &t0)).abs();
-        let seconds =
-            14.0 * ((m as f64 + 1.0) / 61.0).powf(4.5) * (1.0 + scale_bits / 600.0).powi(3);
-        budget::check_time(
-            seconds,
-            "derivatives",
-            &format!("a proven κ₂ for {m} derivatives on this interval at {scalar}"),
-        )?;
-    }
     let scale = scale_range(m, &(t1.clone() - &t0), kind, scalar)?;
+    // Every number type proves κ₂ (f64 to confirm its digits). The proof's exact LDLᵀ works
+    // on integers whose size grows with m and with the derivative scales (t1 − t0)^−j.
+    // Measured: m = 30 on [0, 1] in 0.6 s, m = 60 in 14 s; m = 30 on [0, 1e-3] in 1.2–4.6 s,
+    // m = 60 there in over 2 minutes.
+    let scale_bits = m as f64 * condition::log2_abs(&(t1.clone() - &t0)).abs();
+    let seconds = 14.0 * ((m as f64 + 1.0) / 61.0).powf(4.5) * (1.0 + scale_bits / 600.0).powi(3);
+    budget::check_time(
+        seconds,
+        "derivatives",
+        &format!("a proven κ₂ for {m} derivatives on this interval at {scalar}"),
+    )?;
     // JSON has no infinity: null when the f64 matrix leaves f64's range or nalgebra's σ_min
     // is 0.
     let raw_reference = condition::f64_reference(m, &t0, &t1, kind);
@@ -191,7 +189,7 @@ pub fn run_condition(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Ren
         reference,
         f64_note,
     };
-    run_two_precision(
+    run_proven_job(
         &job,
         scalar,
         "option --scalar: rational cannot take the square roots of an SVD; use f64 or mpfr:<bits>",
@@ -212,78 +210,47 @@ struct ConditionJob {
     f64_note: &'static str,
 }
 
-/// κ₂ as `run hermite-condition` prints it in the chosen number type.
-struct ConditionValue {
-    /// The value (its certified digits in MPFR), or `None` when f64 cannot resolve the matrix.
-    value: Option<String>,
-    /// Digits certified by two MPFR precisions (in f64: confirmed by mpfr:256).
-    digits: u32,
-    scalar_name: String,
-    /// Why an f64 value is absent: f64 itself cannot resolve the matrix, which is a finding
-    /// about f64 (like nalgebra's null), not a failure of the run.
-    note: Option<String>,
-}
-
 impl ConditionJob {
-    fn rendered(&self, v: ConditionValue) -> Rendered {
-        let mut out: Out<f64> = Out::object(vec![
-            ("condition_number", v.value.map_or(Out::Null, Out::Text)),
-            ("certified_digits", Out::Int(v.digits as i64)),
-            ("f64", self.reference.map_or(Out::Null, Out::F64)),
-            ("f64_note", Out::Text(self.f64_note.into())),
-            ("scalar", Out::Text(v.scalar_name)),
-            ("size", Out::Int(2 * self.m as i64 + 2)),
-        ]);
-        if let Some(note) = v.note {
-            out = out.with_field("note", Out::Text(note));
-        }
-        Rendered::plain(out)
+    /// κ₂ proven: the extreme eigenvalues of BᵀB bracketed exactly by Sylvester inertia
+    /// (`condition::proven`) to a relative width of 2^−`bits`, as (lower, upper).
+    fn enclosure(&self, bits: u32) -> Result<(Float, Float), RunError> {
+        // MPFR only locates the eigenvalues that the exact inertia brackets: it needs about
+        // log₂κ₂ bits beyond the bracket's width to resolve σ_min (below that the brackets do
+        // not close, and at ball:64 with m = 60 the search ran for minutes). log₂κ₂ is about
+        // the spread of the scale exponents plus 4 bits per derivative (m = 30 on [0, 1]:
+        // 197 bits).
+        let (low, high) = self.scale;
+        let needed = f64::from(bits) + 64.0 + (high - low) + 4.0 * self.m as f64;
+        let locate = needed.min(f64::from(u32::MAX / 4)) as u32;
+        let relative = 2f64.powi(-(bits.min(1000) as i32));
+        condition::proven(self.m, &self.t0, &self.t1, self.kind, locate, relative).ok_or_else(|| {
+            RunError::Input(format!(
+                "output \"condition_number\": the inertia brackets did not close at {bits} bits; raise the precision"
+            ))
+        })
     }
 }
 
-impl TwoPrecisionJob for ConditionJob {
-    fn mpfr(&self, bits: u32) -> Result<Rendered, RunError> {
-        let (c, _): (Certified, Float) =
-            condition::certified(self.m, &self.t0, &self.t1, self.kind, bits)
-                .map_err(RunError::internal)?;
-        if c.digits == 0 {
-            return fail(format!(
-                "output \"condition_number\": no digit agrees between {bits} and {} bits; raise the precision",
-                2 * bits
-            ));
-        }
-        Ok(self.rendered(ConditionValue {
-            value: Some(c.text),
-            digits: c.digits,
-            scalar_name: format!("mpfr:{bits}"),
-            note: None,
-        }))
-    }
-
-    /// κ₂ proven: the extreme eigenvalues of BᵀB bracketed exactly by Sylvester inertia
-    /// (`condition::proven`), printed as the ball [lower, upper].
+impl ProvenJob for ConditionJob {
+    /// κ₂ proven, printed as the ball [lower, upper] (in `mpfr:<bits>`, its proven digits).
     fn ball(&self, bits: u32) -> Result<Out<Ball>, RunError> {
-        // MPFR only locates the eigenvalues that the exact inertia brackets: it needs about
-        // log₂κ₂ + 64 bits to resolve σ_min (below that the brackets do not close, and at
-        // ball:64 with m = 60 the search ran for minutes). log₂κ₂ is about the spread of the
-        // scale exponents plus 4 bits per derivative (m = 30 on [0, 1]: 197 bits).
-        let (low, high) = self.scale;
-        let needed = 64.0 + (high - low) + 4.0 * self.m as f64;
-        let locate = bits.max(needed.min(f64::from(u32::MAX)) as u32);
-        let Some((lo, hi)) = condition::proven(self.m, &self.t0, &self.t1, self.kind, locate)
-        else {
-            return fail(format!(
-                "output \"condition_number\": the inertia brackets did not close at ball:{bits}; raise the precision"
-            ));
-        };
+        let (lo, hi) = self.enclosure(bits)?;
+        // Rounded outward to the precision asked for (the inertia may have located the
+        // eigenvalues with more bits); as bounds, not a ball, whose f64 radius would stop at
+        // κ₂ ≈ 1e308.
+        let lo = Float::with_val_round(bits, &lo, Round::Down).0;
+        let hi = Float::with_val_round(bits, &hi, Round::Up).0;
         Ok(Out::object(vec![
-            ("condition_number", Out::Num(Ball::from_bounds(&lo, &hi))),
+            ("condition_number", Out::Bounds(lo, hi)),
             ("f64", self.reference.map_or(Out::Null, Out::F64)),
             ("f64_note", Out::Text(self.f64_note.into())),
             ("size", Out::Int(2 * self.m as i64 + 2)),
         ]))
     }
 
+    /// Our f64 Jacobi on the f64 matrix, with the number of its digits the proven κ₂ confirms
+    /// (`correct_digits`: every point of the enclosure agrees with the f64 value to that many
+    /// significant digits).
     fn f64(&self) -> Result<Rendered, RunError> {
         let (m, t0, t1, kind) = (self.m, &self.t0, &self.t1, self.kind);
         let Some(k) = f64_matrix_condition(m, t0, t1, kind) else {
@@ -294,27 +261,35 @@ impl TwoPrecisionJob for ConditionJob {
         };
         let (value, digits, note) = match k {
             Ok(k) if k.is_finite() => {
-                // Digits of the f64 result that a certified MPFR value confirms.
-                let (exact, reference_value) =
-                    condition::certified(m, t0, t1, kind, 256).map_err(RunError::internal)?;
-                let confirmed = correct_digits(k, &reference_value).min(exact.digits);
-                (Some(crate::scalar::float_text(k)), confirmed, None)
+                let (lo, hi) = self.enclosure(128)?;
+                let confirmed = correct_digits(k, &lo).min(correct_digits(k, &hi));
+                (Out::Text(crate::scalar::float_text(k)), confirmed, None)
             }
-            Ok(_) => (None, 0, Some("our f64 Jacobi finds σmin = 0".to_string())),
+            Ok(_) => (
+                Out::Null,
+                0,
+                Some("our f64 Jacobi finds σmin = 0".to_string()),
+            ),
             Err(e) => (
-                None,
+                Out::Null,
                 0,
                 Some(format!(
                     "our f64 Jacobi: {e}: f64 cannot resolve this matrix"
                 )),
             ),
         };
-        Ok(self.rendered(ConditionValue {
-            value,
-            digits,
-            scalar_name: "f64".into(),
-            note,
-        }))
+        let mut out: Out<f64> = Out::object(vec![
+            ("condition_number", value),
+            ("correct_digits", Out::Int(digits as i64)),
+            ("f64", self.reference.map_or(Out::Null, Out::F64)),
+            ("f64_note", Out::Text(self.f64_note.into())),
+            ("scalar", Out::Text("f64".into())),
+            ("size", Out::Int(2 * self.m as i64 + 2)),
+        ]);
+        if let Some(note) = note {
+            out = out.with_field("note", Out::Text(note));
+        }
+        Ok(Rendered::plain(out))
     }
 }
 

@@ -1,13 +1,13 @@
 //! `run ph-hermite`, `run phodcos` and `run convergence`: the JSON shapes that `docs/commands.md` documents.
 
 use super::budget::{self, Rates};
-use super::dispatch::{run_real, run_two_precision, RealJob, TwoPrecisionJob};
+use super::dispatch::{run_proven_job, run_real, ProvenJob, RealJob};
 use super::input::{self, fail, InputError, RunError};
-use super::output::{agreed_text, flush, largest, noise_level, Out};
+use super::output::{flush, largest, noise_level, Out};
 use super::Rendered;
 use crate::algo::ph::hermite::{interpolate, FreeParameters, HermiteData, PhHermiteError};
 use crate::algo::ph::piecewise::{
-    certified_error, conversion_error, convert, observed_order, phodcos, DEFAULT_SAMPLES,
+    conversion_error, convert, observed_order, phodcos, DEFAULT_SAMPLES,
 };
 use crate::algo::ph::PhCurve;
 use crate::curve::enclosure::proven_error_until;
@@ -15,7 +15,7 @@ use crate::curve::{Curve, ExprCurve};
 use crate::scalar::ball::Ball;
 use crate::scalar::certify::format_float_digits;
 use crate::scalar::{BigRational, Field, Float, Real, ScalarKind};
-use serde_json::{json, Map, Value};
+use serde_json::{Map, Value};
 use std::cell::Cell;
 
 /// The most segments `run phodcos` accepts (directly or as the tolerance search's limit).
@@ -75,10 +75,17 @@ const NEEDS_REAL: &str =
 /// (see [`noise_level`]: components that vanish mathematically, such as the real part of A_0
 /// in standard form, come out as rounding noise of either sign).
 fn vectors<T: Real>(rows: Vec<Vec<T>>) -> Out<T> {
-    let level = largest(rows.iter().flatten()).map(|m| noise_level(&m));
+    let scale = largest(rows.iter().flatten());
+    let level = scale.as_ref().map(noise_level);
+    // Every entry may vanish mathematically (balls keep their enclosure of 0; the scale
+    // matters only to the flush of the rounding types).
+    let entry = |x: T| {
+        let s = scale.clone().unwrap_or_else(|| T::zero_in(&x.ctx()));
+        Out::MaybeZero(flush(x, level.as_ref()), s)
+    };
     Out::List(
         rows.into_iter()
-            .map(|r| Out::nums(r.into_iter().map(|x| flush(x, level.as_ref())).collect()))
+            .map(|r| Out::List(r.into_iter().map(entry).collect()))
             .collect(),
     )
 }
@@ -279,12 +286,46 @@ impl RealJob for PhodcosJob {
     }
 
     /// In balls the error is proven: lower ≤ E ≤ upper by branch and bound
-    /// (`curve::enclosure`, relative width 1e-6), printed as the ball [lower, upper].
+    /// (`curve::enclosure`, relative width 1e-6), printed as the ball [lower, upper]. With a
+    /// tolerance, Algorithm 2's search (on sampled errors, in MPFR at `bits`) proposes the
+    /// segments, and they are doubled until the proven upper bound meets the tolerance.
     fn run_ball(&self, bits: u32) -> Result<Out<Ball>, RunError> {
         let input = &self.input;
-        let Some(n) = input.segments else {
-            return fail("option --scalar: a tolerance search compares sampled errors; with ball:<bits> give \"segments\"");
+        let Some(mut n) = input.segments else {
+            let (proposed, _) = phodcos_in::<Float>(input, &bits, None)?;
+            let tolerance =
+                Float::from_rational(input.tolerance.as_ref().unwrap_or(&input.a), &bits);
+            let mut n = proposed;
+            loop {
+                let out = self.proven_at(bits, n)?;
+                let proven_below = match &out {
+                    Out::Object(fields) => fields.iter().any(|(k, v)| {
+                        k == "max_error"
+                            && matches!(v, Out::MaybeZero(e, _) if e.upper() < tolerance)
+                    }),
+                    _ => false,
+                };
+                if proven_below {
+                    return Ok(out);
+                }
+                if n >= input.max_segments {
+                    return fail(format!(
+                        "field \"tolerance\": not proven with {} segments at {bits} bits (raise \"max_segments\" or the precision)",
+                        input.max_segments
+                    ));
+                }
+                n = (2 * n).min(input.max_segments);
+            }
         };
+        n = n.max(1);
+        self.proven_at(bits, n)
+    }
+}
+
+impl PhodcosJob {
+    /// The conversion on `n` segments in balls at `bits`, its error proven.
+    fn proven_at(&self, bits: u32, n: usize) -> Result<Out<Ball>, RunError> {
+        let input = &self.input;
         let c = input.curve.compile::<Ball>(&bits);
         let (a, b) = (
             Ball::from_rational(&input.a, &bits),
@@ -300,7 +341,11 @@ impl RealJob for PhodcosJob {
         pw.align_roll();
         Ok(Out::object(vec![
             ("segments", Out::Int(n as i64)),
-            ("max_error", Out::Num(Ball::from_bounds(&e.lower, &e.upper))),
+            // 0 for a curve the method reproduces (a straight line), up to the enclosure.
+            (
+                "max_error",
+                Out::MaybeZero(Ball::from_bounds(&e.lower, &e.upper), Ball::zero_in(&bits)),
+            ),
             ("max_error_relative_width", Out::F64(e.relative_width())),
             (
                 "preimages",
@@ -350,9 +395,10 @@ pub fn run_phodcos(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rende
         Some(n) => ("segments", n as f64),
         None => ("max_segments", 2.0 * max_segments as f64),
     };
-    // A proven enclosure (ball) adds the branch and bound, whose boxes grow faster than the
-    // segments (measured at ball:256: 4096 segments in 6.5 s, 16384 in over 60 s).
-    let proven = if matches!(scalar, ScalarKind::Ball(_)) {
+    // A proven enclosure (ball, and mpfr, which prints its digits) adds the branch and bound,
+    // whose boxes grow faster than the segments (measured at ball:256: 4096 segments in 6.5 s,
+    // 16384 in over 60 s).
+    let proven = if matches!(scalar, ScalarKind::Ball(_) | ScalarKind::Mpfr(_)) {
         1.8
     } else {
         1.0
@@ -395,40 +441,48 @@ struct ConvergenceJob {
 }
 
 impl ConvergenceJob {
-    /// One row per level: the printed error, the ratio to the previous level's error and the
-    /// observed order (both `null` when an error is zero), `show` printing a pair of values.
+    /// One row per level: the error, the ratio to the previous level's error and the observed
+    /// order log₂(ratio)/(level gap) (both `null` where an error may be zero).
     fn rows<T: Real>(
         &self,
-        mut level: impl FnMut(usize) -> Result<(String, (T, T)), RunError>,
-        show: impl Fn(&T, &T) -> String,
-    ) -> Result<Vec<Value>, RunError> {
+        mut error: impl FnMut(usize) -> Result<Out<T>, RunError>,
+    ) -> Result<Out<T>, RunError> {
         let mut rows = Vec::new();
-        let mut previous: Option<(T, T)> = None;
+        let mut previous: Option<(u32, Out<T>)> = None;
         for &n in &self.levels {
             let segments = 1usize << n;
-            let (text, pair) = level(segments)?;
-            let orders = previous.as_ref().and_then(|(plo, phi)| {
-                Some((observed_order(plo, &pair.0)?, observed_order(phi, &pair.1)?))
-            });
-            let (ratio, order) = match orders {
-                Some(((rlo, olo), (rhi, ohi))) => (
-                    Value::String(show(&rlo, &rhi)),
-                    Value::String(show(&olo, &ohi)),
-                ),
-                None => (Value::Null, Value::Null),
+            let e = error(segments)?;
+            let (ratio, order) = match (&previous, &e) {
+                (
+                    Some((level, Out::Num(coarse) | Out::MaybeZero(coarse, _))),
+                    Out::Num(fine) | Out::MaybeZero(fine, _),
+                ) if proven_nonzero(coarse) && proven_nonzero(fine) => {
+                    let gap = T::from_i64(i64::from(n - level), &fine.ctx());
+                    match observed_order(coarse, fine) {
+                        Some((ratio, log2)) => (Out::Num(ratio), Out::Num(log2 / &gap)),
+                        None => (Out::Null, Out::Null),
+                    }
+                }
+                _ => (Out::Null, Out::Null),
             };
-            rows.push(json!({"segments": segments, "error": text, "ratio": ratio, "order": order}));
-            previous = Some(pair);
+            rows.push(Out::object(vec![
+                ("segments", Out::Int(segments as i64)),
+                ("error", e.clone()),
+                ("ratio", ratio),
+                ("order", order),
+            ]));
+            previous = Some((n, e));
         }
-        Ok(rows)
-    }
-
-    fn rendered(&self, rows: Vec<Value>, scalar: ScalarKind) -> Rendered {
-        Rendered::json(json!({"rows": rows, "scalar": scalar.to_string()}))
+        Ok(Out::object(vec![("rows", Out::List(rows))]))
     }
 }
 
-impl TwoPrecisionJob for ConvergenceJob {
+/// Whether x ≠ 0 is decided (for a ball: the enclosure excludes 0).
+fn proven_nonzero<T: Field>(x: &T) -> bool {
+    T::zero_in(&x.ctx()).decide_lt(&x.clone().abs()) == Some(true)
+}
+
+impl ProvenJob for ConvergenceJob {
     fn f64(&self) -> Result<Rendered, RunError> {
         let c = self.curve.compile::<f64>(&());
         let (fa, fb) = (
@@ -436,64 +490,35 @@ impl TwoPrecisionJob for ConvergenceJob {
             f64::from_rational(&self.b, &()),
         );
         let free = self.free.map(|q| f64::from_rational(q, &()));
-        let rows = self.rows(
-            |segments| {
-                check_finite(&c, &fa, &fb, segments)?;
-                let pw = convert(&c, &fa, &fb, segments, 4, &free, true).map_err(ph_error)?;
-                let e = conversion_error(&c, &pw, DEFAULT_SAMPLES).max;
-                Ok((crate::scalar::float_text(e), (e, e)))
-            },
-            |_, hi| crate::scalar::float_text(*hi),
-        )?;
-        Ok(self.rendered(rows, ScalarKind::F64))
+        let rows = self.rows(|segments| {
+            check_finite(&c, &fa, &fb, segments)?;
+            let pw = convert(&c, &fa, &fb, segments, 4, &free, true).map_err(ph_error)?;
+            Ok(Out::Num(conversion_error(&c, &pw, DEFAULT_SAMPLES).max))
+        })?;
+        Ok(Rendered::plain(
+            rows.with_field("scalar", Out::Text("f64".into())),
+        ))
     }
 
-    fn mpfr(&self, bits: u32) -> Result<Rendered, RunError> {
-        let rows = self.rows(
-            |segments| self.certified_level(segments, bits),
-            |lo: &Float, hi| crate::scalar::certify::certify(lo, hi).text,
-        )?;
-        Ok(self.rendered(rows, ScalarKind::Mpfr(bits)))
-    }
-}
-
-impl ConvergenceJob {
-    /// The conversion error on `segments` uniform segments certified at `bits` and `2·bits`,
-    /// printed with its agreed digits, with the two values for the ratios; 0 at both when the
-    /// error is noise at both precisions.
-    fn certified_level(
-        &self,
-        segments: usize,
-        bits: u32,
-    ) -> Result<(String, (Float, Float)), RunError> {
-        let c = self.curve.compile::<Float>(&bits);
-        let scale = check_finite(
-            &c,
-            &Float::from_rational(&self.a, &bits),
-            &Float::from_rational(&self.b, &bits),
-            segments,
-        )?;
-        let e = certified_error(
-            |p| self.curve.compile::<Float>(&p),
-            &self.a,
-            &self.b,
-            segments,
-            4,
-            &self.free,
-            bits,
-            2 * bits,
-        )
-        .map_err(ph_error)?;
-        // A straight line is converted exactly: its computed error is noise of about 2^-p,
-        // printed as 0 (Out::MaybeZero's rule) rather than refused.
-        let hi_scale = Float::with_val(2 * bits, &scale);
-        let Some((text, zero)) = agreed_text(&e.lo, &e.hi, Some((&scale, &hi_scale))) else {
-            return fail(format!("output \"rows\": the error on {segments} segments has no digit that {bits} and {} bits agree on; raise the precision", 2 * bits));
-        };
-        Ok(if zero {
-            (text, (Float::new(bits), Float::new(2 * bits)))
-        } else {
-            (text, (e.lo, e.hi))
+    /// Each level's error proven by branch and bound in balls (`curve::enclosure`, to a
+    /// relative width of 1e-6 or the deadline), so the ratios and orders are proven too; an
+    /// enclosure that reaches 0 (a curve the method reproduces) has no ratio or order.
+    fn ball(&self, bits: u32) -> Result<Out<Ball>, RunError> {
+        let c = self.curve.compile::<Ball>(&bits);
+        let (a, b) = (
+            Ball::from_rational(&self.a, &bits),
+            Ball::from_rational(&self.b, &bits),
+        );
+        let free = self.free.map(|q| Ball::from_rational(q, &bits));
+        self.rows(|segments| {
+            check_finite(&c, &a, &b, segments)?;
+            // The error depends on positions only, which the roll correction leaves alone.
+            let pw = convert(&c, &a, &b, segments, 4, &free, false).map_err(ph_error)?;
+            let e = proven_error_until(&c, &pw, 1e-6, 4_000_000, Some(budget::search_deadline()));
+            Ok(Out::MaybeZero(
+                Ball::from_bounds(&e.lower, &e.upper),
+                Ball::zero_in(&bits),
+            ))
         })
     }
 }
@@ -510,14 +535,22 @@ pub fn run_convergence(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<R
     if levels.is_empty() {
         return fail("field \"levels\": at least one level");
     }
+    if let Some(i) = (1..levels.len()).find(|&i| levels[i] <= levels[i - 1]) {
+        return fail(format!(
+            "field \"levels[{i}]\": levels must increase ({} after {})",
+            levels[i],
+            levels[i - 1]
+        ));
+    }
     let free = free_parameters(doc)?;
     // Conversion and certified error on 2ⁿ segments per level (measured on the README's
     // curve: 65536 segments in 1 s in f64, 4096 in 0.9 s at mpfr:128).
     let segments: f64 = levels.iter().map(|&n| (n as f64).exp2()).sum();
     let units = segments * budget::expression_factor(curve.text_len);
+    // In MPFR and balls each error is proven by branch and bound, as `phodcos` in balls.
     let rates = Rates {
         f64: 2.5e-5,
-        mpfr256: 5e-4,
+        mpfr256: 2.9e-3,
         rational: 0.0,
     };
     rates.check(
@@ -533,5 +566,5 @@ pub fn run_convergence(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<R
         levels,
         free,
     };
-    run_two_precision(&job, scalar, NEEDS_REAL)
+    run_proven_job(&job, scalar, NEEDS_REAL)
 }

@@ -46,6 +46,9 @@ use std::time::Instant;
 pub const ORDER: usize = 17;
 /// Halvings of a piece allowed while its Taylor remainder is too large.
 const MAX_PIECE_DEPTH: u32 = 12;
+/// The boxes a branch and bound may evaluate without narrowing its gap by 1 % before it
+/// stops (see [`ErrorModels::enclose`]).
+const STALL_BOXES: usize = 20_000;
 /// Halvings of a box allowed in [`ErrorModels::regions_reaching`].
 const MAX_REGION_DEPTH: u32 = 20;
 
@@ -370,6 +373,7 @@ fn pieces<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
             Float::with_val(bits, 0),
             Float::with_val(bits, 1),
             0u32,
+            f64::INFINITY,
             Some(whole),
         )]
     } else {
@@ -378,20 +382,24 @@ fn pieces<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
             .chain(std::iter::once(Float::with_val(bits, 1)))
             .collect();
         ends.windows(2)
-            .map(|w| (w[0].clone(), w[1].clone(), 0u32, None))
+            .map(|w| (w[0].clone(), w[1].clone(), 0u32, f64::INFINITY, None))
             .collect()
     };
     let mut done = Vec::new();
-    while let Some((a, b, depth, known)) = todo.pop() {
+    while let Some((a, b, depth, parent, known)) = todo.pop() {
         let m = known.unwrap_or_else(|| model(curve, pw, (k, points), (&a, &b), None));
         // Past the deadline a piece is kept whole: its remainder is in both bounds, so the
-        // enclosure stays proven, only wider.
-        if m.remainder <= tolerance || depth >= MAX_PIECE_DEPTH || passed(deadline) {
+        // enclosure stays proven, only wider. A remainder that halving no longer shrinks
+        // below half its parent's is rounding, not truncation (the precision floor of a low
+        // precision): splitting it further only spends the deadline.
+        let stalled = m.remainder > 0.5 * parent;
+        if m.remainder <= tolerance || depth >= MAX_PIECE_DEPTH || stalled || passed(deadline) {
             done.push(m);
         } else {
             let mid = Float::with_val(bits, &a + &b) / 2u32;
-            todo.push((mid.clone(), b, depth + 1, None));
-            todo.push((a, mid, depth + 1, None));
+            let r = m.remainder;
+            todo.push((mid.clone(), b, depth + 1, r, None));
+            todo.push((a, mid, depth + 1, r, None));
         }
     }
     done
@@ -661,12 +669,23 @@ impl ErrorModels {
         let (models, floor, bits) = (&self.models, self.floor, self.bits);
         let (mut heap, mut best) = first_boxes(models, bits);
         let mut boxes = models.len();
+        // The gap upper − lower at the last checkpoint: a search that no longer narrows it
+        // (by 1 % in STALL_BOXES boxes) has met rounding it cannot halve, at a precision too
+        // low for the target; it stops there rather than at the deadline.
+        let mut checkpoint = (boxes, f64::INFINITY);
         let upper = loop {
             let Some(top) = heap.pop() else { break best.0 };
             // No bisection narrows a box below its model's Taylor remainder (both bounds
             // carry it) and the precision floor: stop there too.
             let irreducible = 2.0 * (models[top.model].remainder + floor);
-            let done = top.upper <= best.0 * (1.0 + target) || top.upper - best.0 <= irreducible;
+            let gap = top.upper - best.0;
+            let done = top.upper <= best.0 * (1.0 + target) || gap <= irreducible;
+            if boxes - checkpoint.0 >= STALL_BOXES {
+                if gap > 0.99 * checkpoint.1 {
+                    break top.upper;
+                }
+                checkpoint = (boxes, gap);
+            }
             if done || boxes >= max_boxes || passed(deadline) {
                 break top.upper;
             }

@@ -8,6 +8,7 @@ pub mod approx;
 pub mod bezier;
 pub mod enclosure;
 pub mod expr;
+pub mod integral;
 pub mod parametric;
 pub mod regularity;
 pub mod spline;

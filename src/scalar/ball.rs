@@ -86,6 +86,68 @@ fn upper_decimal(x: &rug::Rational) -> String {
     format!("{}{lead}.{rest}e{e}", if negative { "-" } else { "" })
 }
 
+/// The digits an interval [lo, hi] proves at a working precision of `prec` bits: the largest
+/// d (at most what `prec` bits carry) such that every point of the interval rounds to the same
+/// d significant decimal digits, with that decimal; 0 and "" when not even the first digit
+/// is proven, and every digit of "0" for [0, 0].
+pub fn interval_digits(lo: &Float, hi: &Float, prec: u32) -> (u32, String) {
+    if !lo.is_finite() || !hi.is_finite() {
+        return (0, String::new());
+    }
+    let cap = super::certify::max_digits(prec);
+    if lo.is_zero() && hi.is_zero() {
+        return (cap, "0".into());
+    }
+    // An exact value proves every digit; show as many as the precision holds, not the extra
+    // ones of guard bits.
+    let mut digits = super::certify::agreeing_digits(lo, hi).min(cap).max(1);
+    while digits > 0 {
+        let (a, b) = (
+            format_float_digits(lo, digits),
+            format_float_digits(hi, digits),
+        );
+        if a == b {
+            return (digits, a);
+        }
+        digits -= 1;
+    }
+    (0, String::new())
+}
+
+/// An interval [lo, hi] printed as a ball ([`Ball::printed`]'s contract), without the f64
+/// range of a ball's radius: `value` carries the digits every point rounds to (the midpoint to
+/// two digits when none is proven), `radius` bounds max(value − lo, hi − value), rounded up.
+/// `None` when an end is not finite.
+pub fn printed_interval(lo: &Float, hi: &Float, prec: u32) -> Option<PrintedBall> {
+    let (l, h) = (lo.to_rational()?, hi.to_rational()?);
+    let mid = Float::with_val(lo.prec().max(hi.prec()) + 1, lo + hi) / 2u32;
+    printed_around(interval_digits(lo, hi, prec), &mid, |printed| {
+        (printed.clone() - &l).max(h.clone() - printed)
+    })
+}
+
+/// The printed form of proven `digits` (or of `mid` to two digits when there are none), with
+/// the radius `distance(printed value)` rounded up.
+fn printed_around(
+    (digits, proven): (u32, String),
+    mid: &Float,
+    distance: impl Fn(&rug::Rational) -> rug::Rational,
+) -> Option<PrintedBall> {
+    let value = if digits == 0 {
+        format_float_digits(mid, 2)
+    } else {
+        proven
+    };
+    let printed = super::parse::parse_rational(&value)
+        .ok()
+        .map(|q| super::mpfr::to_gmp_rational(&q))?;
+    Some(PrintedBall {
+        radius: upper_decimal(&distance(&printed)),
+        value,
+        digits,
+    })
+}
+
 /// A real number known to lie in [mid − rad, mid + rad].
 #[derive(Clone, Debug)]
 pub struct Ball {
@@ -415,31 +477,9 @@ impl Ball {
 
     /// The digits the enclosure proves: the largest d such that every point of the ball
     /// rounds to the same d significant decimal digits, with that decimal (0 and "" when
-    /// not even the first digit is proven).
+    /// not even the first digit is proven). See [`interval_digits`].
     pub fn proven_digits(&self) -> (u32, String) {
-        let (lo, hi) = (self.lower(), self.upper());
-        if !lo.is_finite() || !hi.is_finite() {
-            return (0, String::new());
-        }
-        if lo.is_zero() && hi.is_zero() {
-            return (super::certify::max_digits(self.mid.prec()), "0".into());
-        }
-        // An exact ball (radius 0) proves every digit; show as many as its precision holds,
-        // as for zero, not the extra ones of the 64 guard bits of lower()/upper().
-        let mut digits = super::certify::agreeing_digits(&lo, &hi)
-            .min(super::certify::max_digits(self.mid.prec()))
-            .max(1);
-        while digits > 0 {
-            let (a, b) = (
-                format_float_digits(&lo, digits),
-                format_float_digits(&hi, digits),
-            );
-            if a == b {
-                return (digits, a);
-            }
-            digits -= 1;
-        }
-        (0, String::new())
+        interval_digits(&self.lower(), &self.upper(), self.mid.prec())
     }
 
     /// The ball as it is printed: a decimal `value` and a decimal `radius` with every point
@@ -456,23 +496,23 @@ impl Ball {
         if !self.mid.is_finite() || !self.rad.is_finite() {
             return None;
         }
-        let (digits, proven) = self.proven_digits();
-        let value = if digits == 0 {
-            format_float_digits(&self.mid, 2)
-        } else {
-            proven
-        };
-        let printed = super::parse::parse_rational(&value)
-            .ok()
-            .map(|q| super::mpfr::to_gmp_rational(&q))?;
         let mid = self.mid.to_rational()?;
         let rad = rug::Rational::from_f64(self.rad)?;
-        let bound = (printed - mid).abs() + rad;
-        Some(PrintedBall {
-            value,
-            radius: upper_decimal(&bound),
-            digits,
+        printed_around(self.proven_digits(), &self.mid, |printed| {
+            rug::Rational::from(printed - &mid).abs() + &rad
         })
+    }
+
+    /// An upper bound of |x| over the ball, as a double rounded up (∞ beyond its range).
+    pub fn abs_upper(&self) -> f64 {
+        add_up(abs_up(&self.mid), self.rad)
+    }
+
+    /// The ball with `extra` (≥ 0) added to its radius, rounded up: an enclosure of every
+    /// point within `extra` of this ball (a remainder bound added to a Taylor model).
+    pub fn widen(self, extra: f64) -> Ball {
+        let rad = add_up(self.rad, extra.abs());
+        Ball::new(self.mid, rad)
     }
 
     /// Whether x lies in the ball (for tests of the inclusion principle).

@@ -244,6 +244,37 @@ impl Field for QSqrt2 {
 }
 
 impl QSqrt2 {
+    /// The value in any real number type: a + b·√2 with a, b rounded once each and √2 taken
+    /// in `T` (in balls, an enclosure of the exact value).
+    pub fn to_real<T: super::Real>(&self, ctx: &T::Ctx) -> T {
+        let root = T::from_i64(2, ctx).sqrt();
+        T::from_rational(&self.a, ctx) + &(T::from_rational(&self.b, ctx) * &root)
+    }
+
+    /// Proven bounds lo ≤ a + b√2 ≤ hi at `bits` precision, for any size of a and b (no
+    /// ball radius to overflow): √2 is bracketed by its downward and upward roundings, and
+    /// each exact operation with a rational is rounded outward.
+    pub fn bounds(&self, bits: u32) -> (super::Float, super::Float) {
+        use rug::float::Round;
+        let work = bits + 32;
+        let two = super::Float::with_val(work, 2);
+        let root_down = super::Float::with_val_round(work, two.sqrt_ref(), Round::Down).0;
+        let root_up = super::Float::with_val_round(work, two.sqrt_ref(), Round::Up).0;
+        let a = super::mpfr_rational(&self.a);
+        let b = super::mpfr_rational(&self.b);
+        let end = |round: Round| {
+            // b·√2 is smallest with the smaller root when b ≥ 0, with the larger one otherwise.
+            let root = if (b >= 0) == (round == Round::Down) {
+                &root_down
+            } else {
+                &root_up
+            };
+            let product = super::Float::with_val_round(work, root * &b, round).0;
+            super::Float::with_val_round(bits, product + &a, round).0
+        };
+        (end(Round::Down), end(Round::Up))
+    }
+
     /// The value rounded to an MPFR number of `bits` precision (√2 correctly rounded first,
     /// then a + b·√2 with one rounding per operation).
     pub fn to_float(&self, bits: u32) -> super::Float {

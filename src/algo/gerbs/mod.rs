@@ -48,7 +48,7 @@ pub mod quadrature {
 }
 
 use crate::curve::taylor::Taylor;
-use crate::scalar::Field;
+use crate::scalar::{BigRational, Field};
 
 /// Bad input to the GERBS constructions, named by field.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -112,6 +112,23 @@ impl<T: Field> Knots<T> {
             }
         }
         Ok(Knots { t })
+    }
+
+    /// The exact knot vector `exact` rounded into `T`. Its order was decided exactly, so an
+    /// enclosure type ([`Field::ENCLOSURE`]) is not compared again (two equal knots give two
+    /// identical balls, which no comparison can order, and distinct knots closer than the
+    /// precision give overlapping ones); a rounding type checks that rounding kept the knots
+    /// increasing.
+    ///
+    /// # Errors
+    /// [`GerbsError::Knots`] when rounding made two knots equal or reversed them.
+    pub fn rounded(exact: &Knots<BigRational>, ctx: &T::Ctx) -> Result<Self, GerbsError> {
+        let t = exact.t.iter().map(|q| T::from_rational(q, ctx)).collect();
+        if T::ENCLOSURE {
+            Ok(Knots { t })
+        } else {
+            Knots::new(t)
+        }
     }
 
     /// The knot vector of Algorithm 2 for n waypoints: t_1 = t_2 = 0, t_{n+1} = t_{n+2} = 1,

@@ -18,10 +18,11 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 use super::quadrature::TanhSinh;
 use super::{basis_series_on, Blend, GerbsError, Knots, Side};
+use crate::curve::integral::{integrate, IntegralOptions};
 use crate::curve::parametric::{check_domain, CurveError, ParamCurve, ParamCurveArclen};
 use crate::curve::taylor::Taylor;
 use crate::numeric::quadrature::default_tolerance;
-use crate::scalar::ball::carried;
+use crate::scalar::ball::{carried, Ball};
 use crate::scalar::{Field, Real};
 use rayon::prelude::*;
 use std::cell::RefCell;
@@ -768,6 +769,76 @@ impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
             }
         }
         d
+    }
+}
+
+impl<B: Blend<Ball>> GerbsPath<Ball, B> {
+    /// The length ∫|p′| dt **proven**: on every knot interval (split at the blend's break
+    /// points) the speed's Taylor models in balls are integrated with a proven remainder
+    /// ([`crate::curve::integral`]), where [`GerbsPath::length_within`] estimates it by
+    /// tanh–sinh. The ball encloses the length; `options` set how far it is narrowed.
+    ///
+    /// # Errors
+    /// [`GerbsError::Parameter`] (field `kind`) for a blend whose F_j is itself a quadrature
+    /// (the ERBS), whose series a ball does not enclose; (field `waypoints`) when the speed
+    /// has no finite enclosure somewhere (a cusp, where |p′| = 0).
+    pub fn proven_length(&self, options: &IntegralOptions) -> Result<Ball, GerbsError>
+    where
+        B: Sync,
+    {
+        if self.blend.sweeps() {
+            return Err(GerbsError::Parameter {
+                field: "kind",
+                message: "the ERBS basis is a quadrature: its path length is not proven".into(),
+            });
+        }
+        let knots = self.knots.as_slice();
+        let bits = knots[0].ctx();
+        // The knot intervals in parallel (each carries the caller's tally of undecided
+        // comparisons); the sum in interval order, so the ball does not depend on threads.
+        let pieces: Vec<Result<Ball, GerbsError>> = (1..knots.len())
+            .into_par_iter()
+            .map(carried(|j| self.proven_interval_length(j, options)))
+            .collect();
+        let mut total = Ball::zero_in(&bits);
+        for piece in pieces {
+            total += &piece?;
+        }
+        Ok(total)
+    }
+
+    /// The proven length over knot interval j (0 when it is empty).
+    fn proven_interval_length(
+        &self,
+        j: usize,
+        options: &IntegralOptions,
+    ) -> Result<Ball, GerbsError>
+    where
+        B: Sync,
+    {
+        let (a, b) = (self.knots.at(j), self.knots.at(j + 1));
+        let mut total = Ball::zero_in(&a.ctx());
+        if a >= b {
+            return Ok(total);
+        }
+        let speed = |t: &Ball, order: usize| -> Option<Taylor<Ball>> {
+            let [x, y] = self.series_on(t, j, order + 1);
+            let (dx, dy) = (x.derivative_series(), y.derivative_series());
+            let speed = (dx.clone() * &dx + &(dy.clone() * &dy)).sqrt();
+            speed.c.iter().all(Field::is_finite).then_some(speed)
+        };
+        let mut cuts = vec![a.clone()];
+        cuts.extend(self.blend.break_points(&self.knots, j));
+        cuts.push(b.clone());
+        for w in cuts.windows(2) {
+            let piece =
+                integrate(&speed, &w[0], &w[1], options).map_err(|e| GerbsError::Parameter {
+                    field: "waypoints",
+                    message: format!("the path's length is not proven on knot interval {j}: {e}"),
+                })?;
+            total += &piece.value;
+        }
+        Ok(total)
     }
 }
 

@@ -188,14 +188,17 @@ pub fn f64_reference(
 }
 
 /// A proven enclosure lo ≤ κ₂ ≤ hi of the transform for m derivatives on [t₀, t₁] (see the
-/// module doc), with MPFR at `bits` locating the eigenvalues (enough bits to resolve σ_min:
-/// about log₂κ₂ + 64). `None` if the brackets could not be decided.
+/// module doc), with MPFR at `bits` locating the eigenvalues (enough bits to resolve σ_min
+/// to the bracket's width: about log₂κ₂ + 24 beyond it) and each extreme eigenvalue of BᵀB
+/// bracketed exactly within a relative width of `relative` (widened by doubling when the
+/// estimate is not that close). `None` if the brackets could not be decided.
 pub fn proven(
     m: usize,
     t0: &BigRational,
     t1: &BigRational,
     kind: TransformKind,
     bits: u32,
+    relative: f64,
 ) -> Option<(Float, Float)> {
     let b = start_block::<BigRational>(m, t0, t1, kind);
     let gram = IntegerSymmetric::new(&b.transpose().mul(&b))?;
@@ -203,8 +206,8 @@ pub fn proven(
     let square = |s: &Float| Float::with_val(bits, s * s);
     let (largest, smallest) = (square(sigma.first()?), square(sigma.last()?));
     let n = b.rows();
-    let (min_lo, min_hi) = gram.bracket(0, &smallest, 2f64.powi(-40), 30)?;
-    let (max_lo, max_hi) = gram.bracket(n - 1, &largest, 2f64.powi(-40), 30)?;
+    let (min_lo, min_hi) = gram.bracket(0, &smallest, relative, 30)?;
+    let (max_lo, max_hi) = gram.bracket(n - 1, &largest, relative, 30)?;
     if min_lo <= 0 {
         return None;
     }

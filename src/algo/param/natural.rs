@@ -46,6 +46,9 @@ pub enum SplineError {
 #[derive(Clone, Debug)]
 pub struct NaturalCubicSpline<T> {
     knots: Vec<T>,
+    /// hᵢ = tᵢ − tᵢ₋₁ (`spacings[i − 1]`): the differences of the knots, or the exact
+    /// spacings rounded once ([`NaturalCubicSpline::with_spacings`]).
+    spacings: Vec<T>,
     values: Vec<T>,
     /// θ″ at the knots (zero at both ends).
     second: Vec<T>,
@@ -88,10 +91,34 @@ impl<T: Field> NaturalCubicSpline<T> {
     /// [`SplineError::TooFewKnots`] or [`SplineError::LengthMismatch`] as
     /// [`NaturalCubicSpline::new`]; never [`SplineError::NotIncreasing`].
     pub fn with_increasing_knots(knots: Vec<T>, values: Vec<T>) -> Result<Self, SplineError> {
+        let spacings = knots.windows(2).map(|w| w[1].clone() - &w[0]).collect();
+        Self::with_spacings(knots, spacings, values)
+    }
+
+    /// As [`NaturalCubicSpline::with_increasing_knots`] with the spacings hᵢ = tᵢ − tᵢ₋₁
+    /// given (`spacings[i − 1]`): a caller that has the knots exactly forms each spacing
+    /// exactly and rounds it once, so knots 1e-30 apart keep a spacing of 1e-30 at any
+    /// precision where their rounded values coincide.
+    ///
+    /// # Errors
+    /// As [`NaturalCubicSpline::with_increasing_knots`], and
+    /// [`SplineError::LengthMismatch`] unless one spacing per interval.
+    pub fn with_spacings(
+        knots: Vec<T>,
+        spacings: Vec<T>,
+        values: Vec<T>,
+    ) -> Result<Self, SplineError> {
         check_lengths(&knots, &values)?;
-        let second = second_derivatives(&knots, &values);
+        if spacings.len() + 1 != knots.len() {
+            return Err(SplineError::LengthMismatch {
+                knots: knots.len(),
+                values: spacings.len() + 1,
+            });
+        }
+        let second = second_derivatives(&spacings, &values);
         Ok(NaturalCubicSpline {
             knots,
+            spacings,
             values,
             second,
         })
@@ -137,8 +164,7 @@ impl<T: Field> NaturalCubicSpline<T> {
     pub fn eval_offsets(&self, u: &T, v: &T, i: usize) -> [T; 3] {
         let i = i.clamp(1, self.knots.len() - 1);
         let ctx = u.ctx();
-        let (a, b) = (&self.knots[i - 1], &self.knots[i]);
-        let h = b.clone() - a;
+        let h = self.spacings[i - 1].clone();
         let (za, zb, ma, mb) = (
             &self.values[i - 1],
             &self.values[i],
@@ -173,7 +199,7 @@ impl<T: Field> NaturalCubicSpline<T> {
         let three = T::from_i64(3, &ctx);
         let mut total = T::zero_in(&ctx);
         for i in 1..self.knots.len() {
-            let h = self.knots[i].clone() - &self.knots[i - 1];
+            let h = self.spacings[i - 1].clone();
             let (a, b) = (&self.second[i - 1], &self.second[i]);
             let inner = a.clone() * a + &(a.clone() * b) + &(b.clone() * b);
             total += &(h * &inner / &three);
@@ -192,7 +218,7 @@ impl<T: Real> NaturalCubicSpline<T> {
         let zero = T::zero_in(&ctx);
         (1..t.len())
             .map(|i| {
-                let h = t[i].clone() - &t[i - 1];
+                let h = self.spacings[i - 1].clone();
                 // θ′(t_{i−1} + v) = A v² + B v + C on [0, h].
                 let a = (m[i].clone() - &m[i - 1]) / &(T::from_i64(2, &ctx) * &h);
                 let b = m[i - 1].clone();
@@ -243,7 +269,7 @@ impl<T: Real> NaturalCubicSpline<T> {
         let nodes = gauss_legendre4::<T>(&ctx);
         let mut h1 = T::zero_in(&ctx);
         for i in 1..t.len() {
-            let h = t[i].clone() - &t[i - 1];
+            let h = self.spacings[i - 1].clone();
             let slope = (z[i].clone() - &z[i - 1]) / &h;
             for (x, w) in &nodes {
                 let at = t[i - 1].clone() + &(h.clone() * x);
@@ -286,15 +312,15 @@ fn quadratic_roots<T: Real>(a: &T, b: &T, c: &T) -> Vec<T> {
     vec![q.clone() / a, c.clone() / &q]
 }
 
-/// Solve M·m = Q·z for the interior second derivatives (Thomas algorithm); m₀ = m_N = 0.
-fn second_derivatives<T: Field>(t: &[T], z: &[T]) -> Vec<T> {
-    let n = t.len() - 1;
+/// Solve M·m = Q·z for the interior second derivatives (Thomas algorithm) from the spacings
+/// (`h[i − 1]` = hᵢ); m₀ = m_N = 0.
+fn second_derivatives<T: Field>(h: &[T], z: &[T]) -> Vec<T> {
+    let n = h.len();
     let ctx = z[0].ctx();
     let mut m = vec![T::zero_in(&ctx); n + 1];
     if n < 2 {
         return m;
     }
-    let h: Vec<T> = (1..=n).map(|i| t[i].clone() - &t[i - 1]).collect(); // h[i-1] = hᵢ
     let (three, six) = (T::from_i64(3, &ctx), T::from_i64(6, &ctx));
     // Rows i = 1…N−1: sub = hᵢ/6, diag = (hᵢ + hᵢ₊₁)/3, sup = hᵢ₊₁/6, rhs = (Qz)ᵢ.
     let mut diag: Vec<T> = (1..n)
@@ -330,7 +356,7 @@ impl<T: Field> NaturalCubicSpline<T> {
         check_domain(t, (&self.knots[0], &self.knots[n]))?;
         let i = (1 + self.knots[1..].partition_point(|k| k <= t)).min(n);
         let [value, slope, curvature] = self.eval_on(t, i);
-        let h = self.knots[i].clone() - &self.knots[i - 1];
+        let h = self.spacings[i - 1].clone();
         let third = (self.second[i].clone() - &self.second[i - 1]) / &h;
         let zero = T::zero_in(&t.ctx());
         let mut jet = vec![value, slope, curvature, third];

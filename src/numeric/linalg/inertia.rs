@@ -124,10 +124,14 @@ impl IntegerSymmetric {
     ) -> Option<(rug::Rational, rug::Rational)> {
         let mut width = relative;
         for _ in 0..tries {
-            let shift = |factor: f64| -> Option<rug::Rational> {
-                rug::Float::with_val(64, estimate * factor).to_rational()
+            // estimate·(1 ± width), exactly enough for any width (64 bits beyond the estimate's).
+            let prec = estimate.prec().max(64) + 64;
+            let shift = |sign: f64| -> Option<rug::Rational> {
+                let factor =
+                    rug::Float::with_val(prec, 1) + rug::Float::with_val(prec, sign * width);
+                rug::Float::with_val(prec, estimate * factor).to_rational()
             };
-            let (lo, hi) = (shift(1.0 - width)?, shift(1.0 + width)?);
+            let (lo, hi) = (shift(-1.0)?, shift(1.0)?);
             if let (Some(below_lo), Some(below_hi)) =
                 (self.eigenvalues_below(&lo), self.eigenvalues_below(&hi))
             {

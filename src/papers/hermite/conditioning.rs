@@ -72,7 +72,14 @@ pub fn table() -> Vec<KappaRow> {
                 .map(|q| q.to_f64());
             let unit = certified_kappa(m, &one, TransformKind::Transform);
             let proven = unit.as_ref().and_then(|k| {
-                condition::proven(m, &ratio(0, 1), &one, TransformKind::Transform, 2 * k.bits)
+                condition::proven(
+                    m,
+                    &ratio(0, 1),
+                    &one,
+                    TransformKind::Transform,
+                    2 * k.bits,
+                    2f64.powi(-40),
+                )
             });
             KappaRow {
                 m,
