@@ -223,7 +223,8 @@ pub struct Rendered {
 
 enum Body {
     Json(Value),
-    /// Two MPFR results, at p and 2p bits, to be printed with their agreeing digits.
+    /// Two MPFR results, at p and 2p bits, to be printed with their agreeing digits (the
+    /// fallback of a method balls cannot prove yet, labelled as such).
     Certified(Box<(Out<rug::Float>, Out<rug::Float>)>),
 }
 

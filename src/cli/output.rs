@@ -2,7 +2,10 @@
 //!
 //! An algorithm builds an [`Out<T>`] in whatever number type it ran in. Rendering is the only
 //! place the number type matters: exact fractions for rationals, shortest round-trip decimals
-//! for f64, and for MPFR the digits on which two runs at p and 2p bits agree.
+//! for f64, for `mpfr:<bits>` the digits a ball computation at `<bits>` proves
+//! ([`render_digits`]), for `ball:<bits>` the enclosures ([`render_proven`]), and for the two
+//! methods balls cannot prove yet the digits on which runs at p and 2p bits agree
+//! ([`render_certified`], labelled not proven).
 
 use super::input::RunError;
 use crate::scalar::ball::Ball;
@@ -15,10 +18,10 @@ use serde_json::{Map, Value};
 pub enum Out<T> {
     Num(T),
     /// A number that may vanish mathematically, with the scale of the quantities it was
-    /// computed from. Printed like [`Out::Num`], except that when two precisions agree on
-    /// no digit and both values lie below [`noise_level`] of the scale at the lower
-    /// precision, it is printed as 0: it is zero to the precision printed (a straight line's
-    /// conversion error, an ERBS weight far below the resolution), not unknown.
+    /// computed from. Printed like [`Out::Num`], except that a ball around 0 prints as the zero
+    /// it proves, "0eK" ([`proven_text`]: a straight line's conversion error), and, in the
+    /// agreeing fallback, two values far below the scale as such a zero ([`agreed_text`]: an
+    /// ERBS weight far below the resolution), not as a refusal.
     MaybeZero(T, T),
     List(Vec<Out<T>>),
     Object(Vec<(String, Out<T>)>),
