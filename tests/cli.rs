@@ -1171,14 +1171,25 @@ fn ball_prints_the_digits_its_enclosure_proves_and_the_radius() {
             .starts_with("0.58578643762690495119831127579"),
         "{bang}"
     );
-    // A method a ball cannot prove yet is refused on one line, exit 2: Marin's minimization.
+    // A result a ball cannot prove yet is refused on one line, exit 2: an ERBS path's length.
     let run = trajverify(
-        &["run", "marin", "--scalar", "ball:128"],
-        r#"{"points": [[0, 0], [1, 1], [2, 0]]}"#,
+        &["run", "gerbs-path", "--scalar", "ball:128"],
+        r#"{"waypoints": [[0,0],[10,0],[10,10],[20,10]], "radius": 2, "theta_o": "pi/8", "kind": "erbs", "samples": 5}"#,
     );
-    assert_eq!(run.code, 2, "marin: {}", run.stderr);
+    assert_eq!(run.code, 2, "gerbs-path: {}", run.stderr);
     assert_eq!(run.stderr.trim().lines().count(), 1, "{}", run.stderr);
     assert!(run.stderr.contains("ball:128"), "{}", run.stderr);
+    // Marin's minimizer is proven by Krawczyk's test: the knots are enclosures.
+    let marin = json(&trajverify(
+        &["run", "marin", "--scalar", "ball:128"],
+        r#"{"points": [[0, 0], [1, 1], [2, 0]]}"#,
+    ));
+    let t1 = &marin["t"][1];
+    assert!(t1["value"].as_str().unwrap().starts_with("0.5"), "{marin}");
+    assert!(
+        t1["radius"].as_str().unwrap().parse::<f64>().unwrap() < 1e-30,
+        "{marin}"
+    );
     let bad = trajverify(&["run", "hermite", "--scalar", "ball:x"], FIG2);
     assert_eq!(bad.code, 2);
     assert!(bad.stderr.contains("ball precision"), "{}", bad.stderr);

@@ -12,6 +12,7 @@ const BUILDING_BLOCKS: &[&str] = &[
     "numeric::poly",
     "numeric::quat",
     "numeric::quadrature",
+    "numeric::krawczyk",
     "curve",
 ];
 /// The algorithm modules: each may use every building block and none of the others.
@@ -30,13 +31,14 @@ fn allowed(module: &str) -> Option<Vec<&'static str>> {
     Some(match module {
         "scalar" | "ledger" | "algo" | "numeric" => vec![],
         "numeric::linalg" | "numeric::quat" | "numeric::quadrature" => vec!["scalar"],
-        "numeric::poly" => vec!["scalar", "numeric::linalg"],
+        "numeric::poly" | "numeric::krawczyk" => vec!["scalar", "numeric::linalg"],
         "curve" => vec![
             "scalar",
             "numeric::linalg",
             "numeric::poly",
             "numeric::quat",
             "numeric::quadrature",
+            "numeric::krawczyk",
         ],
         m if ALGORITHMS.contains(&m) => BUILDING_BLOCKS.to_vec(),
         // A study built on the algorithms (the PHODCOS and Hermite methods side by side).

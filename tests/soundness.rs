@@ -147,7 +147,7 @@ fn subjects() -> Vec<Subject> {
         s(SplineFit, "spline-fit", gen_spline_fit, true, true, true),
         s(BangBang, "bang-bang", gen_bang_bang, true, false, false),
         s(Marin1d, "marin-1d", gen_marin_1d, true, true, false),
-        s(Marin, "marin", gen_marin, true, false, false),
+        s(Marin, "marin", gen_marin, true, true, false),
         s(
             NaturalSpline,
             "natural-spline",

@@ -67,8 +67,8 @@ pub enum Command {
         /// The algorithm to run.
         algorithm: Algorithm,
         /// Number type: f64, rational (exact), mpfr:BITS (ball arithmetic at BITS bits, each
-        /// number printed with the digits its enclosure proves; marin, gerbs-path and the
-        /// ERBS print digits that agree between BITS and 2·BITS bits, labelled "not proven"),
+        /// number printed with the digits its enclosure proves; an ERBS gerbs-path prints
+        /// digits that agree between BITS and 2·BITS bits, labelled "not proven"),
         /// or ball:BITS (proven enclosures: each number as the digits every point of its ball
         /// rounds to, and the radius). Default: f64 for hermite, spline-fit, natural-spline,
         /// ph-hermite, phodcos, gerbs-basis, gerbs-path and dubins; mpfr:256 for convergence,

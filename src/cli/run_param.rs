@@ -1,17 +1,19 @@
 //! `run marin-1d`, `run natural-spline` and `run marin`: the JSON shapes that `docs/commands.md` documents.
 
 use super::budget::{check_output, Rates};
-use super::dispatch::{refuse_ball, run_field, run_real, run_real_or_exact, FieldJob, RealJob};
+use super::dispatch::{run_field, run_real, run_real_or_exact, FieldJob, RealJob};
 use super::input::{self, fail, InputError, RunError};
 use super::output::Out;
 use super::Rendered;
 use crate::algo::param::descent::{descend, refine, Descent};
 use crate::algo::param::natural::NaturalCubicSpline;
-use crate::algo::param::objective::{chord_length_spacing, Objective};
+use crate::algo::param::objective::{chord_length_spacing, objective, Objective};
 use crate::algo::param::one_d::{
     chord_length_1d, classify, parametrization_exact, Case, ParamError, Shape,
 };
-use crate::scalar::{BigRational, Field, Real, ScalarKind};
+use crate::algo::param::proven::prove_minimum;
+use crate::scalar::ball::Ball;
+use crate::scalar::{BigRational, Field, Float, Real, ScalarKind};
 use serde_json::{Map, Value};
 
 /// The most points accepted by `marin` (a dense Newton step on N unknowns).
@@ -292,7 +294,6 @@ fn read_marin(doc: &Map<String, Value>) -> Result<MarinInput, InputError> {
 /// from chord length, then Newton's method in the chosen number type).
 pub fn run_marin(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, RunError> {
     let data = read_marin(doc)?;
-    refuse_ball(scalar, MINIMIZATION)?;
     // Gradient projection in f64 then Newton on N unknowns: about N^2.3 operations, in
     // proportion to the number of components. Measured with three components, N = 300:
     // exact objective 5 s in f64 and 34 s at mpfr:256, approximate 1.8 s and 9.8 s.
@@ -350,6 +351,40 @@ struct MarinJob {
     rough: Descent<f64>,
 }
 
+impl MarinJob {
+    /// The output for these knots, G there and at chord length, and ‖π_B(∇G)‖ after Newton.
+    fn output<T: Field>(&self, knots: Vec<T>, g: T, chord: T, gradient_norm: f64) -> Out<T> {
+        let objective = if self.data.form == Objective::Exact {
+            "exact (Eq. 31)"
+        } else {
+            "approx (Eq. 34)"
+        };
+        // t_0 = 0 and t_n = 1 are fixed by the constraints, exactly: printed as such, not as
+        // 77 digits of "1.000…" at the working precision.
+        let last = knots.len().saturating_sub(1);
+        let knots = knots
+            .into_iter()
+            .enumerate()
+            .map(|(i, t)| match i {
+                0 => Out::Text("0".into()),
+                i if i == last => Out::Text("1".into()),
+                _ => Out::Num(t),
+            })
+            .collect();
+        Out::object(vec![
+            ("t", Out::List(knots)),
+            ("G", Out::Num(g)),
+            ("G_chord", Out::Num(chord)),
+            // ‖π_B(∇G)‖ at the result: the stopping rule's quantity, at the working precision
+            // after Newton.
+            ("projected_gradient_norm", Out::F64(gradient_norm)),
+            ("iterations", Out::Int(self.rough.iterations as i64)),
+            ("descent_converged", Out::Bool(self.rough.converged)),
+            ("objective", Out::Text(objective.into())),
+        ])
+    }
+}
+
 impl RealJob for MarinJob {
     fn run<T: Real>(&self, ctx: &T::Ctx) -> Result<Out<T>, RunError> {
         let to_t = |q: &BigRational| T::from_rational(q, ctx);
@@ -362,43 +397,49 @@ impl RealJob for MarinJob {
         let a: Vec<T> = self.data.alpha.iter().map(to_t).collect();
         let m = refine(&self.rough, &z, &a, self.data.form)
             .map_err(|e| InputError(format!("field \"points\": {e}")))?;
-        let objective = if self.data.form == Objective::Exact {
-            "exact (Eq. 31)"
-        } else {
-            "approx (Eq. 34)"
-        };
-        // t_0 = 0 and t_n = 1 are fixed by the constraints, exactly: printed as such, not as
-        // 77 digits of "1.000…" at the working precision.
-        let last = m.knots.len().saturating_sub(1);
-        let knots = m
-            .knots
-            .into_iter()
-            .enumerate()
-            .map(|(i, t)| match i {
-                0 => Out::Text("0".into()),
-                i if i == last => Out::Text("1".into()),
-                _ => Out::Num(t),
-            })
-            .collect();
-        Ok(Out::object(vec![
-            ("t", Out::List(knots)),
-            ("G", Out::Num(m.objective)),
-            ("G_chord", Out::Num(m.chord_objective)),
-            // ‖π_B(∇G)‖ at the result: the stopping rule's quantity, at the working precision after Newton.
-            (
-                "projected_gradient_norm",
-                Out::F64(m.projected_gradient_norm.to_f64()),
-            ),
-            ("iterations", Out::Int(self.rough.iterations as i64)),
-            ("descent_converged", Out::Bool(self.rough.converged)),
-            ("objective", Out::Text(objective.into())),
-        ]))
+        let norm = m.projected_gradient_norm.to_f64();
+        Ok(self.output(m.knots, m.objective, m.chord_objective, norm))
     }
 
-    fn provable(&self) -> Result<(), &'static str> {
-        Err(MINIMIZATION)
+    /// Newton's result at `bits` proven by Krawczyk's test and a positive definite reduced
+    /// Hessian in balls (`algo::param::proven`): the knots and G are enclosures of a strict
+    /// local minimum's.
+    fn run_ball(&self, bits: u32) -> Result<Out<Ball>, RunError> {
+        let to_float = |q: &BigRational| Float::from_rational(q, &bits);
+        let to_ball = |q: &BigRational| Ball::from_rational(q, &bits);
+        let z: Vec<Vec<Float>> = self
+            .data
+            .z
+            .iter()
+            .map(|c| c.iter().map(to_float).collect())
+            .collect();
+        let a: Vec<Float> = self.data.alpha.iter().map(to_float).collect();
+        let m = refine(&self.rough, &z, &a, self.data.form)
+            .map_err(|e| InputError(format!("field \"points\": {e}")))?;
+        let h: Vec<Float> = m
+            .knots
+            .windows(2)
+            .map(|w| Float::with_val(bits, &w[1] - &w[0]))
+            .collect();
+        let zb: Vec<Vec<Ball>> = self
+            .data
+            .z
+            .iter()
+            .map(|c| c.iter().map(to_ball).collect())
+            .collect();
+        let ab: Vec<Ball> = self.data.alpha.iter().map(to_ball).collect();
+        let proven = prove_minimum(&h, &zb, &ab, self.data.form).map_err(|e| {
+            InputError(format!(
+                "field \"points\": the minimizer is not proven at {bits} bits ({e}); raise the precision"
+            ))
+        })?;
+        let chord = objective(&chord_length_spacing(&zb), &zb, &ab, self.data.form)
+            .map_err(|e| InputError(format!("field \"points\": {e}")))?;
+        Ok(self.output(
+            proven.knots,
+            proven.objective,
+            chord,
+            m.projected_gradient_norm.to_f64(),
+        ))
     }
 }
-
-/// Why a `marin` result is not proven: Newton's method stops at a tolerance.
-const MINIMIZATION: &str = "the minimization stops at a tolerance, which a ball cannot prove";

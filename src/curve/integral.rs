@@ -89,6 +89,12 @@ pub enum IntegralError {
     Invalid(String),
 }
 
+/// The integrand: its Taylor series, and the bound of a piece where the series fails.
+struct Integrand<'a, F> {
+    series: &'a F,
+    bound: &'a dyn Fn(&Float, &Float) -> Option<Ball>,
+}
+
 /// One piece [lo, hi] (exact MPFR ends) and its enclosure.
 struct Piece {
     lo: Float,
@@ -128,6 +134,24 @@ pub fn integrate(
     b: &Ball,
     options: &IntegralOptions,
 ) -> Result<ProvenIntegral, IntegralError> {
+    integrate_with(f, &|_, _| None, a, b, options)
+}
+
+/// [`integrate`] for an integrand whose Taylor models fail on some pieces (an essential
+/// singularity at an end, |t − c|^σ at a point c): `bound(lo, hi)` encloses ∫ over the piece
+/// [lo, hi] some other way (from bounds of f there) where f's series is not finite, `None` if
+/// it cannot either. Such pieces are halved like the others, so a bound that shrinks with the
+/// piece converges.
+///
+/// # Errors
+/// As [`integrate`].
+pub fn integrate_with(
+    f: &impl Fn(&Ball, usize) -> Option<Taylor<Ball>>,
+    bound: &dyn Fn(&Float, &Float) -> Option<Ball>,
+    a: &Ball,
+    b: &Ball,
+    options: &IntegralOptions,
+) -> Result<ProvenIntegral, IntegralError> {
     if options.order == 0 {
         return Err(IntegralError::Invalid("order 0".into()));
     }
@@ -140,6 +164,7 @@ pub fn integrate(
         return Err(IntegralError::Invalid("b < a".into()));
     }
     let ends = ends_contribution(f, a, b)?;
+    let integrand = Integrand { series: f, bound };
     if lo == hi {
         return Ok(ProvenIntegral {
             value: ends,
@@ -161,14 +186,21 @@ pub fn integrate(
                 &lo + Float::with_val(bits + 64, &width * k as u32) / initial as u32,
             ),
         };
-        split_into(f, at(i), at(i + 1), options.order, &smallest, &mut queue)?;
+        split_into(
+            &integrand,
+            at(i),
+            at(i + 1),
+            options.order,
+            &smallest,
+            &mut queue,
+        )?;
     }
-    refine(f, queue, &ends, bits, &smallest, options)
+    refine(&integrand, queue, &ends, bits, &smallest, options)
 }
 
 /// Halve the widest piece until the sum's radius meets the tolerance (see the module doc).
-fn refine(
-    f: &impl Fn(&Ball, usize) -> Option<Taylor<Ball>>,
+fn refine<F: Fn(&Ball, usize) -> Option<Taylor<Ball>>>(
+    f: &Integrand<'_, F>,
     mut queue: BinaryHeap<Piece>,
     ends: &Ball,
     bits: u32,
@@ -253,8 +285,8 @@ fn midpoint(lo: &Float, hi: &Float) -> Float {
 
 /// Enclose ∫ over [lo, hi] and queue it; a piece without a finite enclosure is halved until
 /// it has one or is narrower than `smallest` (then the integrand is not finite there).
-fn split_into(
-    f: &impl Fn(&Ball, usize) -> Option<Taylor<Ball>>,
+fn split_into<F: Fn(&Ball, usize) -> Option<Taylor<Ball>>>(
+    integrand: &Integrand<'_, F>,
     lo: Float,
     hi: Float,
     order: usize,
@@ -263,7 +295,9 @@ fn split_into(
 ) -> Result<(), IntegralError> {
     let mut pending = vec![(lo, hi)];
     while let Some((lo, hi)) = pending.pop() {
-        match piece_integral(f, &lo, &hi, order) {
+        let enclosed = piece_integral(integrand.series, &lo, &hi, order)
+            .or_else(|| (integrand.bound)(&lo, &hi).filter(Field::is_finite));
+        match enclosed {
             Some(value) => queue.push(Piece { lo, hi, value }),
             None => {
                 let mid = midpoint(&lo, &hi);

@@ -163,6 +163,21 @@ impl<T: Real> Erbs<T> {
                 ),
             });
         }
+        Ok(Erbs::with_normalizers(knots, params, reading, |erbs, j| {
+            erbs.integral(knots, j, knots.at(j), knots.at(j + 1))
+        }))
+    }
+
+    /// The basis with each S_j computed by `normalize(basis, j)` for the non-empty intervals
+    /// (a proven quadrature for balls: [`super::proven_erbs`]); the parameter count is the
+    /// caller's to check.
+    pub(crate) fn with_normalizers(
+        knots: &Knots<T>,
+        params: Vec<ErbsParams<T>>,
+        reading: CentreReading,
+        normalize: impl Fn(&Erbs<T>, usize) -> T,
+    ) -> Self {
+        let intervals = knots.as_slice().len() - 1;
         let mut erbs = Erbs {
             params,
             reading,
@@ -173,13 +188,13 @@ impl<T: Real> Erbs<T> {
             .map(|j| {
                 let (a, b) = (knots.at(j), knots.at(j + 1));
                 if a < b {
-                    erbs.integral(knots, j, a, b)
+                    normalize(&erbs, j)
                 } else {
                     T::zero_in(&a.ctx())
                 }
             })
             .collect();
-        Ok(erbs)
+        erbs
     }
 
     /// The parameters of interval j.
@@ -336,6 +351,35 @@ impl<T: Real> Blend<T> for Erbs<T> {
     /// the interval; the side it belongs to takes it directly and the other its complement, so
     /// a value near 0 is not the difference of two numbers near 1.
     fn pair(&self, knots: &Knots<T>, j: usize, t: &T, order: usize) -> (Taylor<T>, Taylor<T>) {
+        self.pair_with(knots, j, t, order, &|lo, hi| {
+            self.integral(knots, j, lo, hi)
+        })
+    }
+
+    fn slope(&self, knots: &Knots<T>, j: usize, t: &T) -> T {
+        self.slope_series(knots, j, t, 0).value().clone()
+    }
+
+    fn sweeps(&self) -> bool {
+        true
+    }
+
+    fn increment(&self, knots: &Knots<T>, j: usize, from: &T, to: &T) -> T {
+        self.integral(knots, j, from, to) / self.normalizer(j)
+    }
+}
+
+impl<T: Real> Erbs<T> {
+    /// [`Blend::pair`] with ∫Ψ_j over [lo, hi] computed by `integral` (tanh–sinh here, a
+    /// proven quadrature for [`super::proven_erbs::ProvenErbs`]).
+    pub(crate) fn pair_with(
+        &self,
+        knots: &Knots<T>,
+        j: usize,
+        t: &T,
+        order: usize,
+        integral: &dyn Fn(&T, &T) -> T,
+    ) -> (Taylor<T>, Taylor<T>) {
         let ctx = t.ctx();
         let (a, b) = (knots.at(j), knots.at(j + 1));
         let s = self.normalizer(j);
@@ -347,9 +391,9 @@ impl<T: Real> Blend<T> for Erbs<T> {
         } else if *t >= *b {
             (zero, false)
         } else if *t <= mid {
-            (self.integral(knots, j, a, t) / s, true)
+            (integral(a, t) / s, true)
         } else {
-            (self.integral(knots, j, t, b) / s, false)
+            (integral(t, b) / s, false)
         };
         let other = one - &near;
         let (falling, rising) = if from_left {
@@ -367,24 +411,16 @@ impl<T: Real> Blend<T> for Erbs<T> {
         )
     }
 
-    fn slope(&self, knots: &Knots<T>, j: usize, t: &T) -> T {
-        self.slope_series(knots, j, t, 0).value().clone()
-    }
-
-    fn sweeps(&self) -> bool {
-        true
-    }
-
-    fn increment(&self, knots: &Knots<T>, j: usize, from: &T, to: &T) -> T {
-        self.integral(knots, j, from, to) / self.normalizer(j)
-    }
-}
-
-impl<T: Real> Erbs<T> {
     /// F_j′ = Ψ_j/S_j as a series of `order` at t. At the knots every derivative of Ψ is 0
     /// for α > 0 (the limit), which the series at t_j cannot represent; it is evaluated at
     /// a knot only for α = 0, where the kernel has no denominator.
-    fn slope_series(&self, knots: &Knots<T>, j: usize, t: &T, order: usize) -> Taylor<T> {
+    pub(crate) fn slope_series(
+        &self,
+        knots: &Knots<T>,
+        j: usize,
+        t: &T,
+        order: usize,
+    ) -> Taylor<T> {
         let (a, b) = (knots.at(j), knots.at(j + 1));
         let flat_at_knots = !self.params(j).alpha.is_zero();
         if flat_at_knots && (*t <= *a || *t >= *b) {

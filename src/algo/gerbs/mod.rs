@@ -42,6 +42,7 @@ pub mod bfbs;
 pub mod dubins;
 pub mod erbs;
 pub mod path;
+pub mod proven_erbs;
 /// The quadrature rules the ERBS uses (the building block [`crate::numeric::quadrature`]).
 pub mod quadrature {
     pub use crate::numeric::quadrature::*;

@@ -789,7 +789,8 @@ impl<B: Blend<Ball>> GerbsPath<Ball, B> {
         if self.blend.sweeps() {
             return Err(GerbsError::Parameter {
                 field: "kind",
-                message: "the ERBS basis is a quadrature: its path length is not proven".into(),
+                message: "the ERBS basis is a quadrature along the path: its length is not proven"
+                    .into(),
             });
         }
         let knots = self.knots.as_slice();

@@ -6,6 +6,7 @@
 //! - [`one_d`]: the exact minimizing parametrization of scalar data, cases I–III (Sec. 2).
 //!
 //! - [`gradient`]: ∇G and its projection onto the simplex Σhᵢ = 1.
+//! - [`proven`]: the minimizer of G proven in balls (Krawczyk, and a positive definite Hessian).
 //! - [`descent`]: the minimization of G for K ≥ 1 components: gradient projection (Eq. 30)
 //!   in f64, then Newton's method at any precision (`descend`, `polish`).
 //!
@@ -28,3 +29,4 @@ pub mod gradient;
 pub mod natural;
 pub mod objective;
 pub mod one_d;
+pub mod proven;
