@@ -20,14 +20,20 @@
 //!    method imposes, an identity at the one point where both sides vanish) reproduces
 //!    nothing: the claim tests the statement where it could fail, or is not a claim.
 //! 3. **Typo or discrepancy.** An evident garble — the print differs from a consistent reading
-//!    by one lost or swapped symbol (a sign, a conjugate mark, a pair of parentheses, an index
-//!    offset, a digit) — with one consistent reading on which no number the paper computes
-//!    depends, is `typo`. A statement the paper's own method contradicts otherwise (a printed
-//!    value, a formula that is wrong beyond one symbol, a claim about its results) is
-//!    `discrepancy`.
+//!    by one lost or swapped symbol (a sign, a conjugate mark, a factor, a pair of parentheses,
+//!    an index offset, a digit, two exchanged factors or words), or by the same such edit at each place
+//!    one quantity is printed — with one consistent reading that the paper itself fixes and on
+//!    which no number the paper computes depends, is `typo`. Several independent edits (signs
+//!    lost from four different vectors) are not one garble, and a wrong, added or missing word
+//!    or phrase is not a symbol: where the paper's own numbers or method contradict the print,
+//!    it is `discrepancy`; where the method poses both readings and nothing printed decides
+//!    between them, clause 5 applies. A statement the paper's own method contradicts otherwise
+//!    (a printed value, a formula that is wrong beyond one symbol, a claim about its results)
+//!    is `discrepancy`.
 //! 4. **Printed values.** Within half a unit of the last printed digit is `reproduced`,
 //!    within one unit `reproduced-rounding`. A count has no last digit: it is equal
-//!    (`reproduced`) or not (`discrepancy`).
+//!    (`reproduced`) or not (`discrepancy`), and what it counts is evaluated on computed
+//!    values, never on the ranges the rounding of printed values allows.
 //! 5. **Two readings.** A sentence that admits two readings is checked under both: both hold,
 //!    `reproduced`; neither, `discrepancy`; exactly one, `undetermined` (the evidence gives
 //!    both). `undetermined` also marks a statement the paper gives too little to decide.

@@ -492,13 +492,13 @@ fn budgets_and_non_finite_results_are_refused_naming_the_field() {
         r#"{"xi": "1e10000"}"#,
     ));
     assert!(mpfr["amplitude"].as_str().unwrap().contains("e10000"));
-    // At 16 bits the inertia brackets still prove κ₂'s first three digits (the 256-bit value
-    // for m = 60 is 3.99437…e135).
+    // At 16 bits the inertia brackets still prove κ₂'s first four digits (the 256-bit value
+    // for m = 30 is 1.218974…e59).
     let low = json(&trajverify(
         &["run", "hermite-condition", "--scalar", "mpfr:16"],
-        r#"{"derivatives": 60, "interval": [0, 1], "matrix": "transform"}"#,
+        r#"{"derivatives": 30, "interval": [0, 1], "matrix": "transform"}"#,
     ));
-    assert_eq!(low["condition_number"], "3.99e135", "{low}");
+    assert_eq!(low["condition_number"], "1.219e59", "{low}");
     // No proven digit at all is not printed as if it were one: the issue's case III data at
     // 16 bits (t₁ = 0.1352…, which 16-bit balls cannot resolve).
     let noise = trajverify(

@@ -235,11 +235,11 @@ pub fn knot_vector_words() -> Outcome {
             "n = 2…12: strictly increasing: {strictly}; t_2 < t_3 < … < t_(n+1) (no repeated interior knot): {interior_simple}; t_1 = t_2 and t_(n+1) = t_(n+2) as printed"
         ),
         "rational",
-        if !strictly && interior_simple { Verdict::Typo } else { Verdict::Failed },
+        if !strictly && interior_simple { Verdict::Discrepancy } else { Verdict::Failed },
         "the knot vectors of the printed rule (gerbs.sec3.knots), exactly: the end knots repeat, as the same sentence says, so the \
          vector is increasing, not strictly; the interior knots are simple ('interior multiplicity of zero' read as no repeated \
-         interior knot). One word ('strictly') against the sentence's own knots, one consistent reading, no number depends on it: \
-         clause 3",
+         interior knot). A wrong word is not a one-symbol garble (clause 3, as for bspline.sec6.data_points): the sentence's \
+         own knots contradict 'strictly', a discrepancy on which no number depends",
     )
 }
 

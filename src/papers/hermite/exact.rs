@@ -149,7 +149,8 @@ pub fn eq16_17_index_ranges() -> (Outcome, String) {
          p_(m+2)…p_(2m+1) for m+1 values ∇^m…∇^1, q_n: the counts disagree. The exact matrix of the map \
          (columns = images of unit boundary vectors) shows each of p_0…p_m depends on the start data only and \
          each of p_(m+1)…p_(2m+1) on the end data only, for every m = 1…20 ({}); {fig2}. Eq. 18 read as one \
-         vector is right (claim hermite.eq18.vector); only the index ranges of Eqs. 16–17 are off by one.",
+         vector is right (claim hermite.eq18.vector), though its partition bar sits at the same offset as the ranges of \
+         Eqs. 16–17.",
         first_bad.unwrap_or_default()
     );
     (

@@ -152,8 +152,9 @@ fn sec3_checks(ledger: &mut Ledger) {
                 &computed,
                 "n is the degree 2m + 1 there, one less than the count of conditions",
             ),
-            Severity::Minor,
-            "Eqs. 14–18 work with the degree, as Fig. 2 shows; only the sentence's n is off by one",
+            Severity::Material,
+            "it is the last definition of n before Eqs. 14–17, so a reader implementing them as printed gets wrong control points \
+             (for Fig. 2, an end velocity of 5/6 instead of 1); the printed Fig. 2 vector fixes the reading",
         ),
     );
     let first = statements::first_derivative_factor();

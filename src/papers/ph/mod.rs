@@ -545,12 +545,12 @@ fn theorem_checks(ledger: &mut Ledger) -> (Vec<theorems::Jumps>, Vec<theorems::G
     ledger.record("phodcos.thm3.invariance", rigid);
     ledger.record("phodcos.thm3.reflection", reflect);
     ledger.record("phodcos.thm4.reversion", reverse);
-    // Typo (policy clause 3): the signs of the odd derivatives are lost, with one consistent
-    // reading (phodcos.thm4.reversion holds with them).
+    // Four signs are lost (v̄_b, v̄_e, j̄_b, j̄_e), on four quantities: several edits, not one
+    // garble (policy clause 3), so a discrepancy; phodcos.thm4.reversion holds with them.
     ledger.record(
         "phodcos.thm4.reversed_data_as_printed",
         found(
-            printed.with_verdict(Verdict::Typo),
+            printed,
             "v̄_b = v_e, ā_b = a_e, … (no signs)",
             "the odd derivatives of reversed data change sign; with the signs Theorem 4 holds",
             Material,
@@ -569,7 +569,10 @@ fn theorem_checks(ledger: &mut Ledger) -> (Vec<theorems::Jumps>, Vec<theorems::G
     ledger.record(
         "phodcos.eq22b.left_product",
         found(
-            theorems::left_product(),
+            // Two exchanged factors, one swap with one consistent reading (the right product,
+            // which Sec. 5G's continuity needs) and no printed number depending on it: a typo
+            // by clause 3, material because it is the formula a reader implements.
+            typo_if_discrepancy(theorems::left_product()),
             "A_i ← A_α A_i",
             "the roll correction must multiply on the right, A_i A_α; on the left it moves the curve",
             Material,
@@ -594,6 +597,16 @@ fn theorem_checks(ledger: &mut Ledger) -> (Vec<theorems::Jumps>, Vec<theorems::G
     (jumps, geo, length)
 }
 
+/// A check that found the print contradicted, judged a typo by clause 3 (one swap with one
+/// consistent reading); a check that failed stays failed.
+fn typo_if_discrepancy(outcome: Outcome) -> Outcome {
+    if outcome.verdict == Verdict::Discrepancy {
+        outcome.with_verdict(Verdict::Typo)
+    } else {
+        outcome
+    }
+}
+
 /// Sec. 6A: the NRHO conversion, its continuity, the resonance and Fig. 4's transitions.
 fn nrho_checks(ledger: &mut Ledger) -> (nrho::Nrho, [String; 4]) {
     let nrho = nrho::compute();
@@ -616,7 +629,7 @@ fn nrho_checks(ledger: &mut Ledger) -> (nrho::Nrho, [String; 4]) {
             "four transitions per orbital period in σ and ω",
             "holds per lunar orbit, not within one NRHO period",
             Minor,
-            "the 9:2 resonance the paragraph states is unaffected; only the span of \"orbital period\" is unclear",
+            "no printed number depends on it; only the span of \"orbital period\" is unclear (the resonance is judged in phodcos.sec6a.resonance)",
         )
     };
     ledger.record("phodcos.fig4.four_transitions", transitions);

@@ -455,8 +455,8 @@ pub fn other_orders() -> (OtherOrders, [Outcome; 3]) {
     let equal_out = Outcome::new(
         format!("orders {}", fmt_list(&equal_orders)),
         format!("mpfr:{BITS}"),
-        if eq_tail.iter().all(|o| (o - 6.0).abs() < 0.1) { Verdict::Discrepancy } else { Verdict::Failed },
-        "θ0 = θ4 = θ8 = 1/2, τ = 0: read literally, Theorem 1 says \"otherwise E = O(h)\", but with τ = 0 every A_k inherits the right factor Q(θ) of its end (Lemma 1 gives X_0 Q for B Q), so equal angles multiply the whole preimage by Q(1/2) on the right, which leaves A i A* unchanged (the fibre the paper uses to fix θ4 = 0): the curve is the φ* = 0 curve and the order is 6. The condition is θ0 = θ4 = θ8 (mod π), not = 0.",
+        if eq_tail.iter().all(|o| (o - 6.0).abs() < 0.1) { Verdict::Undetermined } else { Verdict::Failed },
+        "θ0 = θ4 = θ8 = 1/2, τ = 0. Two readings (clause 5). (a) θ4 free: Theorem 1's \"otherwise E = O(h)\" fails, since with τ = 0 every A_k inherits the right factor Q(θ) of its end (Lemma 1 gives X_0 Q for B Q), so equal angles multiply the whole preimage by Q(1/2) on the right, which leaves A i A* unchanged: the curve is the φ* = 0 curve and the order is 6 (computed above). (b) θ4 = 0, as the paper fixes it just before Theorem 1 (the fibre of A i A*): equal non-zero angles are then not admissible, and the theorem holds (phodcos.thm1.order6, phodcos.thm1.order1). Exactly one reading holds: undetermined. Equal angles agree only modulo 2π in the preimage's sense of Q(θ): (0, π, 0) and (π, 0, π) converge at O(h), so 'mod π' is not the condition.",
     );
     let e4 = tau_rows[4].error.hi.to_f64();
     let e8 = tau_rows[8].error.hi.to_f64();
@@ -675,9 +675,9 @@ pub fn section(ledger: &mut Ledger) -> Section {
         crate::papers::found(
             equal,
             "θ0 = θ4 = θ8 = 0 gives O(h⁶), otherwise O(h)",
-            "equal non-zero angles also give O(h⁶): the condition is θ0 = θ4 = θ8 (mod π), not = 0",
+            "with θ4 free, equal non-zero angles θ0 = θ4 = θ8 give the same curve as zero angles and O(h⁶); with θ4 = 0 fixed, as the paper does before the theorem, it holds",
             crate::ledger::Severity::Minor,
-            "the paper's recommended choice φ* = 0 is unaffected; only the stated converse is too strong",
+            "the paper's recommended choice φ* = 0 is unaffected; only the converse depends on whether θ4 is fixed",
         ),
     );
     ledger.record("phodcos.thm1.no_convergence", none);
