@@ -29,7 +29,7 @@
 use super::quadrature::{default_tolerance, TanhSinh};
 use super::{Blend, GerbsError, Knots};
 use crate::curve::taylor::Taylor;
-use crate::scalar::{powi, Real};
+use crate::scalar::{powi, Field, Real};
 
 /// The intrinsic parameters of one knot interval.
 #[derive(Clone, Debug, PartialEq)]
@@ -112,6 +112,27 @@ impl<T: Real> ErbsParams<T> {
     }
 }
 
+/// One parameter set, or one per knot interval.
+///
+/// # Errors
+/// [`GerbsError::Parameter`] (`params`) for any other count.
+pub(crate) fn check_param_count<T: Field, P>(
+    knots: &Knots<T>,
+    params: &[P],
+) -> Result<(), GerbsError> {
+    let intervals = knots.as_slice().len() - 1;
+    if params.len() != 1 && params.len() != intervals {
+        return Err(GerbsError::Parameter {
+            field: "params",
+            message: format!(
+                "give one value or one per knot interval ({intervals}), got {}",
+                params.len()
+            ),
+        });
+    }
+    Ok(())
+}
+
 /// x as a small whole number, when it is exactly one.
 fn whole<T: Real>(x: &T) -> Option<u32> {
     let r = x.to_f64().round();
@@ -153,16 +174,7 @@ impl<T: Real> Erbs<T> {
         params: Vec<ErbsParams<T>>,
         reading: CentreReading,
     ) -> Result<Self, GerbsError> {
-        let intervals = knots.as_slice().len() - 1;
-        if params.len() != 1 && params.len() != intervals {
-            return Err(GerbsError::Parameter {
-                field: "params",
-                message: format!(
-                    "give one value or one per knot interval ({intervals}), got {}",
-                    params.len()
-                ),
-            });
-        }
+        check_param_count(knots, &params)?;
         Ok(Erbs::with_normalizers(knots, params, reading, |erbs, j| {
             erbs.integral(knots, j, knots.at(j), knots.at(j + 1))
         }))

@@ -40,16 +40,7 @@ impl ProvenErbs {
         reading: CentreReading,
         options: IntegralOptions,
     ) -> Result<Self, GerbsError> {
-        let intervals = knots.as_slice().len() - 1;
-        if params.len() != 1 && params.len() != intervals {
-            return Err(GerbsError::Parameter {
-                field: "params",
-                message: format!(
-                    "give one value or one per knot interval ({intervals}), got {}",
-                    params.len()
-                ),
-            });
-        }
+        super::erbs::check_param_count(knots, &params)?;
         let erbs = Erbs::with_normalizers(knots, params, reading, |erbs, j| {
             proven_integral(erbs, knots, j, knots.at(j), knots.at(j + 1), &options)
         });
