@@ -23,14 +23,18 @@
 //! use trajverify::scalar::ball::Ball;
 //! use trajverify::scalar::{Field, Float, Real};
 //!
-//! // x² − 2 = 0 near 1.41: √2 proven in a ball at 128 bits.
+//! // x² − 2 = 0: √2 proven in a ball at 128 bits, from an approximation good to 1e-8 (the
+//! // ball is about as wide as the approximation's error squared) and from MPFR's √2.
 //! let bits = 128;
 //! let f = |x: &[Ball]| Some(vec![x[0].clone() * &x[0] - &Ball::from_i64(2, &bits)]);
 //! let j = |x: &[Ball]| Some(Matrix::from_rows(vec![vec![x[0].clone() * &Ball::from_i64(2, &bits)]]));
-//! let root = krawczyk(&[Float::with_val(bits, 1.41421356)], f, j).unwrap();
 //! let sqrt2 = Ball::from_i64(2, &bits).sqrt();
-//! assert!(root[0].contains(sqrt2.mid()));
-//! assert!(root[0].rad() < 1e-35);
+//! let rough = krawczyk(&[Float::with_val(bits, 1.41421356)], f, j).unwrap();
+//! assert!(rough[0].contains(sqrt2.mid()));
+//! assert!(rough[0].rad() < 1e-14);
+//! let close = krawczyk(&[Float::with_val(bits, 2).sqrt()], f, j).unwrap();
+//! assert!(close[0].contains(sqrt2.mid()));
+//! assert!(close[0].rad() < 1e-35);
 //! ```
 
 use super::linalg::{inverse, Matrix};
