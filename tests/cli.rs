@@ -842,7 +842,7 @@ fn num(v: &Value) -> f64 {
 }
 
 #[test]
-fn gerbs_basis_bfbs_is_exact_and_erbs_certified() {
+fn gerbs_basis_bfbs_is_exact_and_erbs_proven() {
     // At t = 3/10, u = (t − 1/4)/(1/4) = 1/5 on (t_3, t_4): B_4 = 10u³ − 15u⁴ + 6u⁵ = 181/3125,
     // B_4′ = (30u² − 60u³ + 30u⁴)/h = 384/125, and B_3 = 1 − B_4.
     let r = trajverify(
@@ -855,7 +855,7 @@ fn gerbs_basis_bfbs_is_exact_and_erbs_certified() {
     assert_eq!(strings(&row[2]), ["181/3125", "384/125"]);
     assert_eq!(strings(&row[1]), ["2944/3125", "-384/125"]);
     assert_eq!(strings(&row[0]), ["0", "0"]);
-    // ERBS in MPFR: certified digits, partition of unity, B_k(t_k) = 1.
+    // ERBS in MPFR: proven digits (Taylor-model quadrature), partition of unity, B_k(t_k) = 1.
     let r = trajverify(
         &["run", "gerbs-basis", "--scalar", "mpfr:128"],
         &format!(
@@ -871,7 +871,7 @@ fn gerbs_basis_bfbs_is_exact_and_erbs_certified() {
         .collect();
     let sum: f64 = at_03.iter().map(|b| b[0].parse::<f64>().unwrap()).sum();
     assert!((sum - 1.0).abs() < 1e-15, "{sum}");
-    assert!(at_03[1][0].len() > 30, "certified digits: {}", at_03[1][0]);
+    assert!(at_03[1][0].len() > 30, "proven digits: {}", at_03[1][0]);
     assert_eq!(num(&v["values"][1][2][0]), 1.0, "B_4(t_4) = 1");
     assert_eq!(v["scalar"], "mpfr:128");
 }
