@@ -102,6 +102,21 @@ fn named<T>(out: Out<T>, scalar: ScalarKind) -> Out<T> {
     out.with_field("scalar", Out::Text(scalar.to_string()))
 }
 
+/// An f64 output, checked against the proven `reference` first when the job `checks` it
+/// ([`check_f64`]).
+fn f64_output(
+    out: Out<f64>,
+    checks: bool,
+    reference: impl Fn(u32) -> Result<Out<Ball>, RunError>,
+) -> Result<Rendered, RunError> {
+    let out = if checks {
+        check_f64(out, reference)?
+    } else {
+        out
+    };
+    Ok(Rendered::plain(named(out, ScalarKind::F64)))
+}
+
 /// A ball computation, refused (exit 2) when it branched on a comparison its balls could not
 /// decide: that branch may not hold for every point of the balls, so nothing it computed is
 /// proven. The precision is the user's to raise.
@@ -160,15 +175,9 @@ pub fn refuse_ball(scalar: ScalarKind, reason: &str) -> Result<(), RunError> {
 /// `job` in the number type `scalar` names.
 pub fn run_field(job: &impl FieldJob, scalar: ScalarKind) -> Result<Rendered, RunError> {
     match scalar {
-        ScalarKind::F64 => {
-            let out = job.run::<f64>(&())?;
-            let out = if job.checks_f64() {
-                check_f64(out, |bits| job.run::<Ball>(&bits))?
-            } else {
-                out
-            };
-            Ok(Rendered::plain(named(out, scalar)))
-        }
+        ScalarKind::F64 => f64_output(job.run::<f64>(&())?, job.checks_f64(), |bits| {
+            job.run::<Ball>(&bits)
+        }),
         ScalarKind::Rational => Ok(Rendered::plain(named(job.run::<BigRational>(&())?, scalar))),
         ScalarKind::Mpfr(bits) => proven_digits(scalar, || job.run::<Ball>(&bits)),
         ScalarKind::Ball(bits) => proven(scalar, || job.run::<Ball>(&bits)),
@@ -192,15 +201,9 @@ pub fn run_real_or_exact(
     exact: impl FnOnce() -> Result<Out<BigRational>, RunError>,
 ) -> Result<Rendered, RunError> {
     match scalar {
-        ScalarKind::F64 => {
-            let out = job.run::<f64>(&())?;
-            let out = if job.checks_f64() {
-                check_f64(out, |bits| job.run_ball(bits))?
-            } else {
-                out
-            };
-            Ok(Rendered::plain(named(out, scalar)))
-        }
+        ScalarKind::F64 => f64_output(job.run::<f64>(&())?, job.checks_f64(), |bits| {
+            job.run_ball(bits)
+        }),
         ScalarKind::Rational => Ok(Rendered::plain(named(exact()?, scalar))),
         ScalarKind::Mpfr(bits) => match job.provable() {
             Ok(()) => proven_digits(scalar, || job.run_ball(bits)),

@@ -214,19 +214,7 @@ pub fn render_proven(out: &Out<Ball>, path: &str) -> Result<Value, RunError> {
             m.insert("radius".into(), Value::String(printed.radius));
             Value::Object(m)
         }
-        Out::List(items) => Value::Array(
-            items
-                .iter()
-                .enumerate()
-                .map(|(i, v)| render_proven(v, &format!("{path}[{i}]")))
-                .collect::<Result<_, _>>()?,
-        ),
-        Out::Object(fields) => Value::Object(
-            fields
-                .iter()
-                .map(|(k, v)| render_proven(v, &field_path(path, k)).map(|r| (k.clone(), r)))
-                .collect::<Result<Map<_, _>, _>>()?,
-        ),
+        Out::List(_) | Out::Object(_) => return render_tree(out, path, render_proven),
         Out::Bounds(lo, hi) => {
             let printed = crate::scalar::ball::printed_interval(lo, hi, lo.prec().min(hi.prec()))
                 .ok_or_else(|| {
@@ -402,19 +390,7 @@ pub fn render_digits(out: &Out<Ball>, path: &str) -> Result<Value, RunError> {
                 )))
             }
         },
-        Out::List(items) => Value::Array(
-            items
-                .iter()
-                .enumerate()
-                .map(|(i, v)| render_digits(v, &format!("{path}[{i}]")))
-                .collect::<Result<_, _>>()?,
-        ),
-        Out::Object(fields) => Value::Object(
-            fields
-                .iter()
-                .map(|(k, v)| render_digits(v, &field_path(path, k)).map(|r| (k.clone(), r)))
-                .collect::<Result<Map<_, _>, _>>()?,
-        ),
+        Out::List(_) | Out::Object(_) => return render_tree(out, path, render_digits),
         Out::Bounds(lo, hi) => {
             match crate::scalar::ball::interval_digits(lo, hi, lo.prec().min(hi.prec())) {
                 (0, _) => {
@@ -429,6 +405,31 @@ pub fn render_digits(out: &Out<Ball>, path: &str) -> Result<Value, RunError> {
             }
         }
         other => render_plain_leaf(other),
+    })
+}
+
+/// A list or an object of a ball tree, each item rendered by `render` with its path (the one
+/// walk behind [`render_proven`] and [`render_digits`]); any other node by `render` itself.
+fn render_tree(
+    out: &Out<Ball>,
+    path: &str,
+    render: fn(&Out<Ball>, &str) -> Result<Value, RunError>,
+) -> Result<Value, RunError> {
+    Ok(match out {
+        Out::List(items) => Value::Array(
+            items
+                .iter()
+                .enumerate()
+                .map(|(i, v)| render(v, &format!("{path}[{i}]")))
+                .collect::<Result<_, _>>()?,
+        ),
+        Out::Object(fields) => Value::Object(
+            fields
+                .iter()
+                .map(|(k, v)| render(v, &field_path(path, k)).map(|r| (k.clone(), r)))
+                .collect::<Result<Map<_, _>, _>>()?,
+        ),
+        other => render(other, path)?,
     })
 }
 

@@ -243,6 +243,19 @@ struct MarinInput {
     form: Objective,
 }
 
+impl MarinInput {
+    /// The components and weights rounded once into `T`.
+    fn rounded<T: Field>(&self, ctx: &T::Ctx) -> (Vec<Vec<T>>, Vec<T>) {
+        let to_t = |q: &BigRational| T::from_rational(q, ctx);
+        let z = self
+            .z
+            .iter()
+            .map(|c| c.iter().map(to_t).collect())
+            .collect();
+        (z, self.alpha.iter().map(to_t).collect())
+    }
+}
+
 fn read_marin(doc: &Map<String, Value>) -> Result<MarinInput, InputError> {
     input::only_fields(doc, &["points", "weights", "objective"])?;
     let (points, _) = input::uniform_values(input::field(doc, "points")?, "points")?;
@@ -387,14 +400,7 @@ impl MarinJob {
 
 impl RealJob for MarinJob {
     fn run<T: Real>(&self, ctx: &T::Ctx) -> Result<Out<T>, RunError> {
-        let to_t = |q: &BigRational| T::from_rational(q, ctx);
-        let z: Vec<Vec<T>> = self
-            .data
-            .z
-            .iter()
-            .map(|c| c.iter().map(to_t).collect())
-            .collect();
-        let a: Vec<T> = self.data.alpha.iter().map(to_t).collect();
+        let (z, a) = self.data.rounded::<T>(ctx);
         let m = refine(&self.rough, &z, &a, self.data.form)
             .map_err(|e| InputError(format!("field \"points\": {e}")))?;
         let norm = m.projected_gradient_norm.to_f64();
@@ -405,15 +411,7 @@ impl RealJob for MarinJob {
     /// Hessian in balls (`algo::param::proven`): the knots and G are enclosures of a strict
     /// local minimum's.
     fn run_ball(&self, bits: u32) -> Result<Out<Ball>, RunError> {
-        let to_float = |q: &BigRational| Float::from_rational(q, &bits);
-        let to_ball = |q: &BigRational| Ball::from_rational(q, &bits);
-        let z: Vec<Vec<Float>> = self
-            .data
-            .z
-            .iter()
-            .map(|c| c.iter().map(to_float).collect())
-            .collect();
-        let a: Vec<Float> = self.data.alpha.iter().map(to_float).collect();
+        let (z, a) = self.data.rounded::<Float>(&bits);
         let m = refine(&self.rough, &z, &a, self.data.form)
             .map_err(|e| InputError(format!("field \"points\": {e}")))?;
         let h: Vec<Float> = m
@@ -421,13 +419,7 @@ impl RealJob for MarinJob {
             .windows(2)
             .map(|w| Float::with_val(bits, &w[1] - &w[0]))
             .collect();
-        let zb: Vec<Vec<Ball>> = self
-            .data
-            .z
-            .iter()
-            .map(|c| c.iter().map(to_ball).collect())
-            .collect();
-        let ab: Vec<Ball> = self.data.alpha.iter().map(to_ball).collect();
+        let (zb, ab) = self.data.rounded::<Ball>(&bits);
         let proven = prove_minimum(&h, &zb, &ab, self.data.form).map_err(|e| {
             InputError(format!(
                 "field \"points\": the minimizer is not proven at {bits} bits ({e}); raise the precision"

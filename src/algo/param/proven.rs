@@ -41,7 +41,7 @@ use super::gradient::gradient;
 use super::natural::SplineError;
 use super::objective::{objective, Objective};
 use crate::numeric::krawczyk::{krawczyk, KrawczykError};
-use crate::numeric::linalg::Matrix;
+use crate::numeric::linalg::{ldl_pivots, Matrix};
 use crate::scalar::ball::Ball;
 use crate::scalar::dual::Dual;
 use crate::scalar::{Field, Float};
@@ -173,18 +173,5 @@ fn reduced_positive_definite(h: &Matrix<Ball>) -> bool {
         }
     }
     let zero = Ball::zero_in(&h[(0, 0)].ctx());
-    for k in 0..m {
-        let pivot = r[(k, k)].clone();
-        if zero.decide_lt(&pivot) != Some(true) {
-            return false;
-        }
-        for i in k + 1..m {
-            let factor = r[(i, k)].clone() / &pivot;
-            for j in k + 1..m {
-                let update = factor.clone() * &r[(k, j)];
-                r[(i, j)] -= &update;
-            }
-        }
-    }
-    true
+    ldl_pivots(&r).is_some_and(|pivots| pivots.iter().all(|d| zero.decide_lt(d) == Some(true)))
 }

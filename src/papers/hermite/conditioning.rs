@@ -237,7 +237,15 @@ pub fn proven_breakdown(rows: &[KappaRow]) -> Option<usize> {
 
 /// Fig. 5 proven: every κ₂ (T = 1) enclosed exactly, the certified value inside.
 pub fn proven_outcome(rows: &[KappaRow]) -> Outcome {
-    let outcome = proven_enclosures(rows);
+    unprinted(
+        proven_enclosures(rows),
+        "the enclosures prove the report's table; the figure prints no value",
+    )
+}
+
+/// An undetermined Fig. 5 outcome with its finding: the figure prints no value to compare
+/// (any other verdict is returned as it is).
+fn unprinted(outcome: Outcome, reason: &str) -> Outcome {
     if outcome.verdict != Verdict::Undetermined {
         return outcome;
     }
@@ -249,7 +257,7 @@ pub fn proven_outcome(rows: &[KappaRow]) -> Outcome {
             "nothing printed to compare",
         ),
         crate::ledger::Severity::Minor,
-        "the enclosures prove the report's table; the figure prints no value",
+        reason,
     )
 }
 
@@ -315,21 +323,10 @@ pub fn claims(rows: &[KappaRow]) -> [Outcome; 3] {
         if increasing { Verdict::Reproduced } else { Verdict::Discrepancy },
         format!("certified κ2 compared consecutively (their certified digits separate them). Growth law: {}", growth_law(rows)),
     );
-    let table = table_outcome(rows);
-    let table = if table.verdict == Verdict::Undetermined {
-        let computed = table.reproduced.clone();
-        table.finding(
-            (
-                "a plot of κ2 against m, no value printed",
-                &computed,
-                "nothing printed to compare",
-            ),
-            crate::ledger::Severity::Minor,
-            "the figure's trend is checked by its own claims; no value of it is printed",
-        )
-    } else {
-        table
-    };
+    let table = unprinted(
+        table_outcome(rows),
+        "the figure's trend is checked by its own claims; no value of it is printed",
+    );
     [table, grows, interval_outcome(rows, max_bits)]
 }
 

@@ -50,7 +50,7 @@ pub fn figure1(s: &NaturalCubicSpline<Float>) -> String {
         panel("θ'(t)", 2, vec![]),
         panel("θ''(t)", 3, vec![]),
     ];
-    plot::render(&panels, (1, 3), (1200, 380)).unwrap_or_default()
+    plot::render_or_note(&panels, (1, 3), (1200, 380))
 }
 
 /// Figs. 3–5: x, x', x'' and y, y', y'' against t, one figure per parametrization (name,
@@ -79,7 +79,7 @@ pub fn component_figures(parametrizations: &[(&str, Vec<f64>)], z: &[Vec<f64>]) 
     }
     figures
         .iter()
-        .map(|panels| plot::render(panels, (2, 3), (1200, 640)).unwrap_or_default())
+        .map(|panels| plot::render_or_note(panels, (2, 3), (1200, 640)))
         .collect()
 }
 
@@ -147,7 +147,7 @@ pub fn figure2(t: &[f64], z: &[Vec<f64>]) -> String {
         legend: Corner::UpperRight,
         ..Panel::default()
     };
-    plot::render(&[panel], (1, 1), (640, 640)).unwrap_or_default()
+    plot::render_or_note(&[panel], (1, 1), (640, 640))
 }
 
 /// Fig. 6: the polygon, the data, and the chord-length and minimizing splines.
@@ -166,7 +166,7 @@ pub fn corner(c: &CornerCurves) -> String {
         legend: Corner::UpperLeft,
         ..Panel::default()
     };
-    plot::render(&[panel], (1, 1), (640, 640)).unwrap_or_default()
+    plot::render_or_note(&[panel], (1, 1), (640, 640))
 }
 
 /// Fig. 9: the axis #3 spline against t for each parametrization (printed knots), with the
@@ -203,5 +203,5 @@ pub fn figure9(parametrizations: &[(String, Vec<f64>)], axis: &[f64], counts: &[
             ..Panel::default()
         });
     }
-    plot::render(&panels, (1, panels.len()), (400 * panels.len() as u32, 400)).unwrap_or_default()
+    plot::render_or_note(&panels, (1, panels.len()), (400 * panels.len() as u32, 400))
 }
