@@ -182,8 +182,9 @@ pub struct Claim {
     pub reproduced: String,
     /// The number type of the computation (e.g. `mpfr:256`, `rational`).
     pub scalar: String,
-    /// How its numbers are known: exact, proven (ball), certified (two precisions) or
-    /// floating (f64 alone).
+    /// How its numbers are known, the weakest of the number types `scalar` names: exact,
+    /// proven (ball), certified (two MPFR precisions, both named) or floating (f64, or MPFR at
+    /// one precision).
     pub assurance: Assurance,
     /// The verdict.
     pub verdict: Verdict,
@@ -203,9 +204,10 @@ pub enum Assurance {
     Exact,
     /// Ball arithmetic: every number is proven to lie in its enclosure.
     Proven,
-    /// MPFR at two precisions: the digits on which they agree (strong evidence, not a proof).
+    /// MPFR at two precisions, both named: the digits on which they agree (strong evidence,
+    /// not a proof).
     Certified,
-    /// f64 alone: no statement about its digits.
+    /// Rounded arithmetic whose digits nothing checked: f64, or MPFR at one precision.
     Floating,
 }
 
@@ -218,18 +220,52 @@ impl Assurance {
         Assurance::Floating,
     ];
 
-    /// The strongest assurance a check's scalar field names: `rational` or `Q(sqrt2)` exact,
-    /// `ball:` proven, `mpfr:` certified, otherwise floating.
+    /// The **weakest** assurance of the number types a check's scalar field names (its parts
+    /// separated by commas or "and", remarks in parentheses ignored): `rational` or `Q(sqrt2)`
+    /// exact, `ball:` proven, `mpfr:` certified only when the field names two MPFR precisions
+    /// (`mpfr:128/256`, or `mpfr:128, mpfr:256`: a run at one precision checks nothing),
+    /// anything else (f64) floating. A claim is labelled no stronger than its weakest number.
     pub fn of_scalar(scalar: &str) -> Assurance {
-        if scalar.contains("rational") || scalar.contains("Q(sqrt2)") {
-            Assurance::Exact
-        } else if scalar.contains("ball:") {
-            Assurance::Proven
-        } else if scalar.contains("mpfr:") {
-            Assurance::Certified
-        } else {
-            Assurance::Floating
+        // Q(sqrt2)'s own parentheses are not a remark.
+        let mut text = String::new();
+        let mut depth = 0usize;
+        for c in scalar.replace("Q(sqrt2)", "Qsqrt2").chars() {
+            match c {
+                '(' => depth += 1,
+                ')' => depth = depth.saturating_sub(1),
+                _ if depth == 0 => text.push(c),
+                _ => {}
+            }
         }
+        let mut precisions: Vec<&str> = text
+            .split("mpfr:")
+            .skip(1)
+            .flat_map(|rest| {
+                let end = rest
+                    .find(|c: char| !c.is_ascii_digit() && c != '/')
+                    .unwrap_or(rest.len());
+                rest[..end].split('/').filter(|p| !p.is_empty())
+            })
+            .collect();
+        precisions.sort_unstable();
+        precisions.dedup();
+        text.split(',')
+            .flat_map(|part| part.split(" and "))
+            .map(str::trim)
+            .filter(|part| !part.is_empty())
+            .map(|part| {
+                if part.contains("rational") || part.contains("Qsqrt2") {
+                    Assurance::Exact
+                } else if part.contains("ball:") {
+                    Assurance::Proven
+                } else if part.contains("mpfr:") && precisions.len() >= 2 {
+                    Assurance::Certified
+                } else {
+                    Assurance::Floating
+                }
+            })
+            .max()
+            .unwrap_or(Assurance::Floating)
     }
 
     /// The name used in claims.json and the reports.
@@ -511,4 +547,36 @@ pub struct Paper {
     pub specs: &'static [ClaimSpec],
     /// Runs every check and builds the report.
     pub verify: fn() -> PaperOutput,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Assurance::{self, *};
+
+    #[test]
+    fn assurance_is_the_weakest_number_type_named() {
+        let cases = [
+            ("rational", Exact),
+            ("Q(sqrt2)", Exact),
+            ("rational, Q(sqrt2)", Exact),
+            ("rational (inertia)", Exact),
+            ("ball:256", Proven),
+            ("ball:inertia (exact brackets, MPFR ends rounded outward)", Proven),
+            ("mpfr:128/256", Certified),
+            ("mpfr:128, mpfr:256", Certified),
+            ("mpfr:128/256 and Q(sqrt2)", Certified),
+            ("rational, mpfr:128, mpfr:256", Certified),
+            // One precision checks nothing: as unchecked as f64.
+            ("mpfr:256", Floating),
+            ("rational, mpfr:256", Floating),
+            ("mpfr:128, ball:256", Floating),
+            ("f64, mpfr:128/256", Floating),
+            ("f64 (search), mpfr:128/256 (the maximum and its t)", Floating),
+            ("f64 (splines on certified knots)", Floating),
+            ("", Floating),
+        ];
+        for (scalar, expected) in cases {
+            assert_eq!(Assurance::of_scalar(scalar), expected, "{scalar}");
+        }
+    }
 }

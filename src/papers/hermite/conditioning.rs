@@ -319,7 +319,7 @@ pub fn claims(rows: &[KappaRow]) -> [Outcome; 3] {
     let increasing = certified.windows(2).all(|w| w[1].exact > w[0].exact);
     let grows = Outcome::new(
         if increasing { format!("strictly increasing for m = 0…{MAX_M}") } else { "not monotone".to_string() },
-        format!("mpfr:{max_bits}"),
+        format!("mpfr:{max_bits}/{}", 2 * max_bits),
         if increasing { Verdict::Reproduced } else { Verdict::Discrepancy },
         format!("certified κ2 compared consecutively (their certified digits separate them). Growth law: {}", growth_law(rows)),
     );
@@ -357,7 +357,7 @@ fn table_outcome(rows: &[KappaRow]) -> Outcome {
             format_float_digits(&Float::with_val(64, certified.last().map_or(0.0, |k| k.value.approx)), 6),
             breakdown.map_or("— (never)".to_string(), |m| m.to_string())
         ),
-        format!("mpfr:{max_bits}"),
+        format!("mpfr:{max_bits}/{}", 2 * max_bits),
         // Fig. 5 prints no value to compare, and names its matrix only as "the matrix form of
         // the presented transform" (clause 5: too little printed to decide); the table is
         // computed for the report, and the claims on growth and the interval check what the
@@ -413,7 +413,7 @@ fn interval_outcome(rows: &[KappaRow], max_bits: u32) -> Outcome {
     });
     Outcome::new(
         format!("κ2 changes with the interval for every m ≥ 1; at m = 10: {}", at10.clone().unwrap_or_default()),
-        format!("mpfr:{max_bits}"),
+        format!("mpfr:{max_bits}/{}", 2 * max_bits),
         if same.is_empty() { Verdict::Reproduced } else { Verdict::Discrepancy },
         format!(
             "certified κ2 for T = 1/2, 2, 10 compared with T = 1 for m = 1…{MAX_M}: equal in {} cases {same:?}; at m = 0 the \
