@@ -561,7 +561,10 @@ mod tests {
             ("rational, Q(sqrt2)", Exact),
             ("rational (inertia)", Exact),
             ("ball:256", Proven),
-            ("ball:inertia (exact brackets, MPFR ends rounded outward)", Proven),
+            (
+                "ball:inertia (exact brackets, MPFR ends rounded outward)",
+                Proven,
+            ),
             ("mpfr:128/256", Certified),
             ("mpfr:128, mpfr:256", Certified),
             ("mpfr:128/256 and Q(sqrt2)", Certified),
@@ -571,7 +574,10 @@ mod tests {
             ("rational, mpfr:256", Floating),
             ("mpfr:128, ball:256", Floating),
             ("f64, mpfr:128/256", Floating),
-            ("f64 (search), mpfr:128/256 (the maximum and its t)", Floating),
+            (
+                "f64 (search), mpfr:128/256 (the maximum and its t)",
+                Floating,
+            ),
             ("f64 (splines on certified knots)", Floating),
             ("", Floating),
         ];
