@@ -874,6 +874,33 @@ fn gerbs_basis_bfbs_is_exact_and_erbs_proven() {
     assert!(at_03[1][0].len() > 30, "proven digits: {}", at_03[1][0]);
     assert_eq!(num(&v["values"][1][2][0]), 1.0, "B_4(t_4) = 1");
     assert_eq!(v["scalar"], "mpfr:128");
+    // Knots 1/3 and 2/3 are balls: t = 1/2 is their midpoint at every precision (which end
+    // to integrate from is a choice, not a decision to refuse), t = 0.4 is inside, and at a
+    // knot the exact distance 0 gives B = 1 exactly.
+    for scalar in ["ball:64", "mpfr:64"] {
+        let r = trajverify(
+            &["run", "gerbs-basis", "--scalar", scalar],
+            r#"{"knots": ["0", "0", "1/3", "2/3", "1", "1"], "kind": "erbs", "at": ["1/2", "0.4", "1/3"], "derivatives": 1}"#,
+        );
+        assert_eq!(r.code, 0, "{scalar}: {}", r.stderr);
+        let v = json(&r);
+        let value = |row: usize, b: usize, k: usize| -> f64 {
+            let x = &v["values"][row][b][k];
+            num(x.get("value").unwrap_or(x))
+        };
+        assert!((value(0, 1, 0) - 0.5).abs() < 1e-12, "{v}");
+        assert!((value(1, 1, 0) - 0.983654973335918).abs() < 1e-12, "{v}");
+        assert!((value(1, 2, 1) - 1.298316347706426).abs() < 1e-9, "{v}");
+        assert_eq!(value(2, 1, 0), 1.0, "{v}");
+    }
+    // A derivative that does not exist (2σ = 1/2, the second derivative at exactly the
+    // centre 1/4) is null, decided on the exact input; the first exists and prints.
+    let v = json(&trajverify(
+        &["run", "gerbs-basis"],
+        r#"{"knots": ["0", "0", "1/2", "1", "1"], "kind": "erbs", "params": {"sigma": "1/4"}, "at": ["1/4"], "derivatives": 2}"#,
+    ));
+    assert!(v["values"][0][0][2].is_null(), "{v}");
+    assert!(num(&v["values"][0][0][1]) < -500.0, "{v}");
 }
 
 #[test]
@@ -923,9 +950,10 @@ fn gerbs_path_interpolates_the_waypoints_with_curvature_one_over_r() {
         "a proven run has no \"not proven\" label: {v}"
     );
     // An ERBS weight near a knot is a real value of about 1e-47: the y of the first line's
-    // sample prints as that tiny value (the ERBS run is labelled "not proven"), not a refusal.
+    // sample prints as the zero its ball proves ("0eK"), not a refusal; the ERBS path's length
+    // is proven like the BFBS one's.
     let erbs = trajverify(
-        &["run", "gerbs-path", "--scalar", "mpfr:128"],
+        &["run", "gerbs-path", "--scalar", "mpfr:64"],
         r#"{"waypoints": [[0,0],[10,0],[10,10],[20,10]], "radius": 2, "theta_o": "pi/8", "kind": "erbs", "samples": 401}"#,
     );
     assert_eq!(erbs.code, 0, "{}", erbs.stderr);
@@ -942,6 +970,10 @@ fn gerbs_path_interpolates_the_waypoints_with_curvature_one_over_r() {
         .as_str()
         .unwrap()
         .starts_with("0.0117809724509617"));
+    assert!(v.get("digits").is_none(), "{v}");
+    let length = v["length"].as_str().unwrap();
+    // f64's tanh–sinh gives 30.127151260198…; the ball proves at least ten digits.
+    assert!(length.starts_with("30.12715126"), "{length}");
 }
 
 #[test]
@@ -1171,14 +1203,17 @@ fn ball_prints_the_digits_its_enclosure_proves_and_the_radius() {
             .starts_with("0.58578643762690495119831127579"),
         "{bang}"
     );
-    // A result a ball cannot prove yet is refused on one line, exit 2: an ERBS path's length.
-    let run = trajverify(
-        &["run", "gerbs-path", "--scalar", "ball:128"],
+    // An ERBS path's length is proven too (F_j carried along the path by proven increments):
+    // its ball holds the f64 tanh–sinh value 30.127151260198… and is narrow.
+    let erbs = json(&trajverify(
+        &["run", "gerbs-path", "--scalar", "ball:64"],
         r#"{"waypoints": [[0,0],[10,0],[10,10],[20,10]], "radius": 2, "theta_o": "pi/8", "kind": "erbs", "samples": 5}"#,
-    );
-    assert_eq!(run.code, 2, "gerbs-path: {}", run.stderr);
-    assert_eq!(run.stderr.trim().lines().count(), 1, "{}", run.stderr);
-    assert!(run.stderr.contains("ball:128"), "{}", run.stderr);
+    ));
+    let length = &erbs["length"];
+    let value: f64 = length["value"].as_str().unwrap().parse().unwrap();
+    let radius: f64 = length["radius"].as_str().unwrap().parse().unwrap();
+    assert!((value - 30.127151260198).abs() <= radius + 1e-12, "{erbs}");
+    assert!(radius < 1e-9, "{erbs}");
     // Marin's minimizer is proven by Krawczyk's test: the knots are enclosures.
     let marin = json(&trajverify(
         &["run", "marin", "--scalar", "ball:128"],

@@ -7,8 +7,7 @@
 //! output. `mpfr:<bits>` **is** ball arithmetic at `bits` printed as decimals: each number
 //! with the digits its enclosure proves, so a printed digit cannot be wrong however many bits
 //! the problem needs (a run at p and 2p bits can agree on wrong digits when the problem
-//! needs more than both). A method balls cannot prove yet says so ([`RealJob::provable`]) and
-//! prints agreeing digits, labelled. A command whose proven form is not its generic body (κ₂
+//! needs more than both). A command whose proven form is not its generic body (κ₂
 //! by inertia, conversion errors by branch and bound) is a [`ProvenJob`], run by
 //! [`run_proven_job`]. This is the only `match` on the number type in `run`.
 
@@ -16,8 +15,7 @@ use super::input::{fail, RunError};
 use super::output::Out;
 use super::Rendered;
 use crate::scalar::ball::{tally, Ball};
-use crate::scalar::{BigRational, Field, Float, Real, ScalarKind};
-use serde_json::Value;
+use crate::scalar::{BigRational, Field, Real, ScalarKind};
 
 /// A computation that needs only `+ − × ÷`: runs in f64, rationals, MPFR and balls.
 pub trait FieldJob {
@@ -38,12 +36,6 @@ pub trait RealJob {
     /// values it converges to).
     fn run_ball(&self, bits: u32) -> Result<Out<Ball>, RunError> {
         self.run::<Ball>(&bits)
-    }
-    /// `Err(why)` for a method whose result balls cannot prove yet (an iteration stopped at a
-    /// tolerance, a quadrature without an enclosed remainder): `mpfr:<bits>` then prints the
-    /// digits on which runs at `bits` and `2·bits` agree, labelled as not proven.
-    fn provable(&self) -> Result<(), &'static str> {
-        Ok(())
     }
     /// Whether an f64 answer is checked against a proven enclosure ([`check_f64`]).
     fn checks_f64(&self) -> bool {
@@ -161,17 +153,6 @@ fn proven(
     )?))
 }
 
-/// Refuse `--scalar ball:<bits>` for a method whose result a ball cannot prove (an
-/// iteration stopped by a tolerance, a quadrature whose truncation error is not enclosed).
-pub fn refuse_ball(scalar: ScalarKind, reason: &str) -> Result<(), RunError> {
-    match scalar {
-        ScalarKind::Ball(_) => fail(format!(
-            "option --scalar: {scalar} is not available here: {reason}"
-        )),
-        _ => Ok(()),
-    }
-}
-
 /// `job` in the number type `scalar` names.
 pub fn run_field(job: &impl FieldJob, scalar: ScalarKind) -> Result<Rendered, RunError> {
     match scalar {
@@ -205,32 +186,9 @@ pub fn run_real_or_exact(
             job.run_ball(bits)
         }),
         ScalarKind::Rational => Ok(Rendered::plain(named(exact()?, scalar))),
-        ScalarKind::Mpfr(bits) => match job.provable() {
-            Ok(()) => proven_digits(scalar, || job.run_ball(bits)),
-            Err(why) => agreeing(scalar, bits, why, |p| job.run::<Float>(&p)),
-        },
+        ScalarKind::Mpfr(bits) => proven_digits(scalar, || job.run_ball(bits)),
         ScalarKind::Ball(bits) => proven(scalar, || job.run_ball(bits)),
     }
-}
-
-/// The fallback of a method balls cannot prove yet ([`RealJob::provable`]): MPFR at `bits`
-/// and at `2·bits`, printed with the digits the two agree on, and labelled as such in the
-/// output's `"digits"` field — agreement is evidence, not a proof.
-fn agreeing(
-    scalar: ScalarKind,
-    bits: u32,
-    why: &str,
-    run: impl Fn(u32) -> Result<Out<Float>, RunError>,
-) -> Result<Rendered, RunError> {
-    Ok(
-        Rendered::certified(named(run(bits)?, scalar), named(run(2 * bits)?, scalar)).with_extra(
-            "digits",
-            Value::String(format!(
-                "agreeing at {bits} and {} bits, not proven: {why}",
-                2 * bits
-            )),
-        ),
-    )
 }
 
 /// A computation with its own f64 form and a proven form in balls (κ₂ by inertia, conversion

@@ -22,7 +22,7 @@ use crate::report;
 use crate::scalar::ScalarKind;
 use clap::{Parser, Subcommand, ValueEnum};
 use input::RunError;
-use output::{render_certified, render_plain, Out};
+use output::{render_plain, Out};
 use serde_json::Value;
 use std::io::Read;
 use std::path::PathBuf;
@@ -216,37 +216,23 @@ fn parse_scalar(s: &str) -> Result<ScalarKind, String> {
 
 /// What `run` prints, before it is turned into JSON text.
 pub struct Rendered {
-    body: Body,
+    body: Value,
     /// Fields appended to the output object after rendering (e.g. exact values).
     extra: Vec<(String, Value)>,
-}
-
-enum Body {
-    Json(Value),
-    /// Two MPFR results, at p and 2p bits, to be printed with their agreeing digits (the
-    /// fallback of a method balls cannot prove yet, labelled as such).
-    Certified(Box<(Out<rug::Float>, Out<rug::Float>)>),
 }
 
 impl Rendered {
     /// An output in one number type, printed as it is.
     pub fn plain<T: crate::scalar::Field>(out: Out<T>) -> Self {
         Rendered {
-            body: Body::Json(render_plain(&out)),
+            body: render_plain(&out),
             extra: Vec::new(),
         }
     }
     /// Output already rendered as JSON (strings carry their certified digits).
     pub fn json(value: Value) -> Self {
         Rendered {
-            body: Body::Json(value),
-            extra: Vec::new(),
-        }
-    }
-    /// An MPFR output at p and at 2p bits, printed with the digits the two agree on.
-    pub fn certified(lo: Out<rug::Float>, hi: Out<rug::Float>) -> Self {
-        Rendered {
-            body: Body::Certified(Box::new((lo, hi))),
+            body: value,
             extra: Vec::new(),
         }
     }
@@ -257,10 +243,7 @@ impl Rendered {
     }
     /// The final JSON value (certified digits resolved, extra fields appended).
     fn into_value(self) -> Result<Value, RunError> {
-        let mut value = match self.body {
-            Body::Json(v) => v,
-            Body::Certified(pair) => render_certified(&pair.0, &pair.1, "")?,
-        };
+        let mut value = self.body;
         if let Value::Object(map) = &mut value {
             map.extend(self.extra);
         }

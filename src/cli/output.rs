@@ -3,13 +3,11 @@
 //! An algorithm builds an [`Out<T>`] in whatever number type it ran in. Rendering is the only
 //! place the number type matters: exact fractions for rationals, shortest round-trip decimals
 //! for f64, for `mpfr:<bits>` the digits a ball computation at `<bits>` proves
-//! ([`render_digits`]), for `ball:<bits>` the enclosures ([`render_proven`]), and for the two
-//! methods balls cannot prove yet the digits on which runs at p and 2p bits agree
-//! ([`render_certified`], labelled not proven).
+//! ([`render_digits`]), and for `ball:<bits>` the enclosures ([`render_proven`]).
 
 use super::input::RunError;
 use crate::scalar::ball::Ball;
-use crate::scalar::certify::{certify, format_float_digits};
+use crate::scalar::certify::format_float_digits;
 use crate::scalar::{Field, Float, Real};
 use serde_json::{Map, Value};
 
@@ -19,9 +17,8 @@ pub enum Out<T> {
     Num(T),
     /// A number that may vanish mathematically, with the scale of the quantities it was
     /// computed from. Printed like [`Out::Num`], except that a ball around 0 prints as the zero
-    /// it proves, "0eK" ([`proven_text`]: a straight line's conversion error), and, in the
-    /// agreeing fallback, two values far below the scale as such a zero ([`agreed_text`]: an
-    /// ERBS weight far below the resolution), not as a refusal.
+    /// it proves, "0eK" ([`proven_text`]: a straight line's conversion error, an ERBS weight
+    /// far below the resolution), not as a refusal.
     MaybeZero(T, T),
     List(Vec<Out<T>>),
     Object(Vec<(String, Out<T>)>),
@@ -121,9 +118,8 @@ pub fn noise_level<T: Real>(scale: &T) -> T {
 }
 
 /// x, or 0 when |x| is below `level`, in f64 only: an f64 answer prints its mathematical
-/// zeros as 0, not as rounding noise. MPFR keeps its value (a run that cannot prove its
-/// digits prints agreeing ones, and a zero there is a claim of its own: [`agreed_text`]), and
-/// enclosures keep their balls around 0, the honest answer.
+/// zeros as 0, not as rounding noise. Enclosures (which `mpfr:<bits>` prints too) keep their
+/// balls around 0, the honest answer.
 pub fn flush<T: Real>(x: T, level: Option<&T>) -> T {
     if T::ENCLOSURE || T::scalar_name(&x.ctx()) != "f64" {
         return x;
@@ -442,98 +438,6 @@ fn render_plain_leaf<T>(out: &Out<T>) -> Value {
         Out::F64(x) => f64_value(*x),
         _ => Value::Null,
     }
-}
-
-/// Render the more precise tree `hi` with the digits it shares with `lo`. Fails (naming the
-/// field) if a number is not finite or has no certified digit at all (input errors: the
-/// input is beyond the precision), or if the trees differ in shape (an internal error).
-pub fn render_certified(lo: &Out<Float>, hi: &Out<Float>, path: &str) -> Result<Value, RunError> {
-    Ok(match (lo, hi) {
-        (Out::Num(a), Out::Num(b)) => certified_number(a, b, None, path)?,
-        (Out::MaybeZero(a, sa), Out::MaybeZero(b, sb)) => {
-            certified_number(a, b, Some((sa, sb)), path)?
-        }
-        (Out::List(xs), Out::List(ys)) if xs.len() == ys.len() => Value::Array(
-            xs.iter()
-                .zip(ys)
-                .enumerate()
-                .map(|(i, (x, y))| render_certified(x, y, &format!("{path}[{i}]")))
-                .collect::<Result<_, _>>()?,
-        ),
-        (Out::Object(xs), Out::Object(ys)) if xs.len() == ys.len() => {
-            let mut map = Map::new();
-            for ((k, x), (_, y)) in xs.iter().zip(ys) {
-                map.insert(k.clone(), render_certified(x, y, &field_path(path, k))?);
-            }
-            Value::Object(map)
-        }
-        (_, other @ (Out::Int(_) | Out::Text(_) | Out::Bool(_) | Out::F64(_) | Out::Null)) => {
-            render_plain(other)
-        }
-        _ => {
-            return Err(RunError::internal(format!(
-                "outputs at two precisions differ in shape at \"{path}\""
-            )))
-        }
-    })
-}
-
-/// The digits `a` (at p bits) and `b` (at 2p bits) agree on; with `scales` (the scales of
-/// the quantities each was computed from), when they agree on none but both lie below
-/// 2^(−p/2) of the lower precision's scale, the zero at that unit, "0eK" with both values
-/// within ½·10^K of 0 (see [`Out::MaybeZero`]); the flag says which. `None`: no digit agrees.
-/// (The fallback of methods balls cannot prove yet: agreement, not a proof.)
-pub fn agreed_text(
-    a: &Float,
-    b: &Float,
-    scales: Option<(&Float, &Float)>,
-) -> Option<(String, bool)> {
-    let c = certify(a, b);
-    if c.digits > 0 || (a.is_zero() && b.is_zero()) {
-        return Some((c.text, false));
-    }
-    // Both far below the lower precision's resolution of the scale: the higher one may
-    // resolve a real value there (an ERBS weight of 1e-58 beside a path of size 20), but a
-    // p-bit result holds no digit of it; printed as 0 at the unit both stay within.
-    let (sa, _) = scales?;
-    let level = sa.clone().abs() >> (a.prec() / 2);
-    let reach = if a.clone().abs() > b.clone().abs() {
-        a.clone().abs()
-    } else {
-        b.clone().abs()
-    };
-    (reach < level).then(|| {
-        let k = zero_unit_exponent(&Float::with_val(level.prec(), -&level), &level);
-        (format!("0e{k}"), true)
-    })
-}
-
-/// One number with the digits `lo` and `hi` agree on; with `scales`, a value that is noise
-/// at both precisions is 0 (see [`Out::MaybeZero`]).
-fn certified_number(
-    a: &Float,
-    b: &Float,
-    scales: Option<(&Float, &Float)>,
-    path: &str,
-) -> Result<Value, RunError> {
-    if !a.is_finite() || !b.is_finite() {
-        let bad = if a.is_finite() { b } else { a };
-        return Err(not_finite(
-            path,
-            &bad.to_string(),
-            &format!("mpfr:{}", bad.prec()),
-        ));
-    }
-    if let Some((text, _)) = agreed_text(a, b, scales) {
-        return Ok(Value::String(text));
-    }
-    Err(RunError::Input(format!(
-        "output \"{path}\": no digit agrees between {} and {} bits ({} vs {}); raise the precision",
-        a.prec(),
-        b.prec(),
-        format_float_digits(a, 6),
-        format_float_digits(b, 6)
-    )))
 }
 
 /// The refusal of a result that is not finite in the chosen number type.

@@ -2,11 +2,13 @@
 //!
 //! Inputs are read exactly (rationals, or constant expressions such as `"pi/8"` for angles)
 //! and checked before anything is computed: knots, waypoints (collinearity decided exactly on
-//! the rationals), radius, basis parameters. The computation then runs in f64, or in MPFR at
-//! p and 2p bits with the agreeing digits printed; the BFBS basis also runs exactly.
+//! the rationals), radius, basis parameters. The computation then runs in f64, or in balls
+//! (`mpfr:<bits>` prints their proven digits); the BFBS basis also runs exactly. In balls the
+//! ERBS integrals are proven ([`ProvenErbs`]), and so is every path length
+//! ([`GerbsPath::proven_length`]).
 
 use super::budget::{self, check_time, Rates};
-use super::dispatch::{refuse_ball, run_real, run_real_or_exact, RealJob};
+use super::dispatch::{run_real, run_real_or_exact, RealJob};
 use super::input::{self, fail, InputError, RealInput, RunError};
 use super::output::{flush, largest, noise_level, Out};
 use super::Rendered;
@@ -58,8 +60,8 @@ fn gerbs_error(e: GerbsError) -> InputError {
     }
 }
 
-/// x, or null where the quantity does not exist: an ERBS with 2σ < k has an unbounded k-th
-/// derivative at the centre of an interval (|t − c|^{2σ}), and so may the path's curvature.
+/// x, or null where the quantity does not exist: an ERBS has no k-th derivative at the centre
+/// of an interval when k − 1 ≥ 2σ (|t − c|^{2σ}, 2σ not even), and so may the path's curvature.
 fn finite_or_null<T: Field>(x: T) -> Out<T> {
     if x.is_finite() {
         Out::Num(x)
@@ -350,42 +352,84 @@ struct BasisJob {
 }
 
 impl BasisJob {
-    fn values<T: Field, B: Blend<T>>(&self, knots: &Knots<T>, blend: &B) -> Out<T> {
+    fn values<T: Field, B: Blend<T>>(
+        &self,
+        knots: &Knots<T>,
+        blend: &B,
+    ) -> Result<Out<T>, RunError> {
         let ctx = knots.at(1).ctx();
-        let rows = self
-            .at
-            .iter()
-            .map(|q| {
-                // The knot interval and side are decided on the exact point, never on its
-                // rounding (a point 1e-40 below a knot rounds onto it).
-                let d = match self.knots.interval(q, self.side) {
-                    Some(j) => {
-                        // The distances to the interval's ends exact, rounded once.
-                        let at = Located {
-                            t: T::from_rational(q, &ctx),
-                            interval: j,
-                            after_start: T::from_rational(&(q.clone() - self.knots.at(j)), &ctx),
-                            before_end: T::from_rational(&(self.knots.at(j + 1).clone() - q), &ctx),
-                        };
-                        basis_derivatives_located(knots, blend, &at, self.derivatives)
-                    }
-                    None => Vec::new(),
-                };
-                // Only an ERBS derivative can fail to exist (2σ below its order at an
-                // interval's centre); a BFBS is a polynomial, so a value that is not finite
-                // there left the number type's range and is refused at the output.
-                let entry = |x: T| match self.params {
-                    BasisParams::Erbs { .. } => finite_or_null(x),
-                    BasisParams::Bfbs(_) => Out::Num(x),
-                };
-                Out::List(
-                    d.into_iter()
-                        .map(|b| Out::List(b.into_iter().map(entry).collect()))
-                        .collect(),
-                )
-            })
-            .collect();
-        Out::object(vec![("values", Out::List(rows))])
+        let mut rows = Vec::with_capacity(self.at.len());
+        for (i, q) in self.at.iter().enumerate() {
+            // The knot interval and side are decided on the exact point, never on its
+            // rounding (a point 1e-40 below a knot rounds onto it).
+            let Some(j) = self.knots.interval(q, self.side) else {
+                rows.push(Out::List(Vec::new()));
+                continue;
+            };
+            // The distances to the interval's ends exact, rounded once.
+            let at = Located {
+                t: T::from_rational(q, &ctx),
+                interval: j,
+                after_start: T::from_rational(&(q.clone() - self.knots.at(j)), &ctx),
+                before_end: T::from_rational(&(self.knots.at(j + 1).clone() - q), &ctx),
+            };
+            let mut row = Vec::new();
+            for (b, derivatives) in basis_derivatives_located(knots, blend, &at, self.derivatives)
+                .into_iter()
+                .enumerate()
+            {
+                let mut entries = Vec::with_capacity(derivatives.len());
+                for (k, x) in derivatives.into_iter().enumerate() {
+                    entries.push(if x.is_finite() {
+                        Out::Num(x)
+                    } else if self.derivative_missing(q, j, k) {
+                        // It does not exist (decided on the exact input): null, as documented.
+                        Out::Null
+                    } else {
+                        // A BFBS is a polynomial, and an ERBS derivative exists everywhere but
+                        // at its centre: a value that is not finite left the number type's
+                        // range or (in balls) was not proven.
+                        return fail(format!(
+                            "output \"values\"[{i}][{b}][{k}]: derivative {k} of B_{} at t = {q} is \
+                             not finite at this precision (out of range, or not proven); raise \
+                             the precision",
+                            b + 2
+                        ));
+                    });
+                }
+                row.push(Out::List(entries));
+            }
+            rows.push(Out::List(row));
+        }
+        Ok(Out::object(vec![("values", Out::List(rows))]))
+    }
+
+    /// Whether derivative `k` of the ERBS does not exist at the exact point q of interval j:
+    /// q is exactly the centre c_j, 2σ is not an even integer (Ψ holds |t − c|^{2σ}) and
+    /// k − 1 ≥ 2σ. Decided only on rational parameters; `false` otherwise (and for a BFBS).
+    fn derivative_missing(&self, q: &BigRational, j: usize, k: usize) -> bool {
+        let BasisParams::Erbs { sets, centre } = &self.params else {
+            return false;
+        };
+        let set = if sets.len() == 1 {
+            &sets[0]
+        } else {
+            &sets[j - 1]
+        };
+        let (RealInput::Exact(lambda), RealInput::Exact(sigma)) = (&set[3], &set[4]) else {
+            return false;
+        };
+        let (a, b) = (self.knots.at(j), self.knots.at(j + 1));
+        let one = BigRational::from_integer(1.into());
+        let c = match centre {
+            CentreReading::Cited => (one - lambda) * a + lambda * b,
+            CentreReading::AsPrinted => (one - lambda) * a - lambda * b,
+        };
+        let two_sigma = sigma * BigRational::from_integer(2.into());
+        let even =
+            two_sigma.is_integer() && num_traits::Zero::is_zero(&(two_sigma.to_integer() % 2u32));
+        // B^(k) = Ψ^(k−1)/S, and the m-th derivative of |t − c|^{2σ} exists at c iff m < 2σ.
+        *q == c && !even && k >= 1 && BigRational::from_integer((k - 1).into()) >= two_sigma
     }
 
     fn knots_in<T: Field>(&self, ctx: &T::Ctx) -> Result<Knots<T>, InputError> {
@@ -404,11 +448,11 @@ impl RealJob for BasisJob {
         let knots = self.knots_in::<T>(ctx)?;
         Ok(match &self.params {
             BasisParams::Bfbs(i) => {
-                self.values(&knots, &Bfbs::new(i.clone()).map_err(gerbs_error)?)
+                self.values(&knots, &Bfbs::new(i.clone()).map_err(gerbs_error)?)?
             }
             BasisParams::Erbs { sets, centre } => {
                 let erbs = BasisParams::erbs(sets, *centre, &knots, ctx)?;
-                self.values(&knots, &erbs)
+                self.values(&knots, &erbs)?
             }
         })
     }
@@ -418,19 +462,15 @@ impl RealJob for BasisJob {
         let knots = self.knots_in::<Ball>(&bits)?;
         Ok(match &self.params {
             BasisParams::Bfbs(i) => {
-                self.values(&knots, &Bfbs::new(i.clone()).map_err(gerbs_error)?)
+                self.values(&knots, &Bfbs::new(i.clone()).map_err(gerbs_error)?)?
             }
             BasisParams::Erbs { sets, centre } => {
                 let erbs = BasisParams::proven_erbs(sets, *centre, &knots, bits)?;
-                self.values(&knots, &erbs)
+                self.values(&knots, &erbs)?
             }
         })
     }
 }
-
-/// Why an ERBS path is not proven: its length sweeps the basis's quadrature along the path.
-const ERBS_QUADRATURE: &str =
-    "the ERBS path length is a tanh–sinh quadrature whose truncation error a ball does not enclose";
 
 /// `run gerbs-basis`: B_2 … B_{n+1} and their derivatives at the given points.
 pub fn run_gerbs_basis(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, RunError> {
@@ -459,7 +499,7 @@ pub fn run_gerbs_basis(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<R
         match &job.params {
         BasisParams::Bfbs(i) => {
             let bfbs = Bfbs::new(i.clone()).map_err(gerbs_error)?;
-            Ok(job.values(&job.knots, &bfbs))
+            job.values(&job.knots, &bfbs)
         }
         BasisParams::Erbs { .. } => fail(
             "option --scalar: the ERBS basis is an integral of exp(…) (quadrature); use f64 or mpfr:<bits>",
@@ -725,18 +765,22 @@ impl RealJob for PathJob {
         // Taylor models of a higher order at a higher precision: the pieces needed fall as
         // the tolerance^(1/(N+2)) (measured at 256 bits on the README's path: order 16 did not
         // reach the tolerance in 4096 pieces, order 64 took 1000 pieces in 4.7 s).
-        let options = IntegralOptions {
-            order: (bits as usize / 4).clamp(12, 56),
-            ..IntegralOptions::default()
+        let options = match self.params {
+            BasisParams::Bfbs(_) => IntegralOptions {
+                order: (bits as usize / 4).clamp(12, 56),
+                ..IntegralOptions::default()
+            },
+            // The ERBS kernel's series over a piece grow fast with the order (its essential
+            // singularities at the knots), so a higher order does not pay: measured on the
+            // README's path, orders 8–24 took 430–630 pieces an interval at 64 bits, order 12
+            // the fastest. 2048 pieces an interval prove 16 digits of its length (1024: 14).
+            BasisParams::Erbs { .. } => IntegralOptions {
+                order: 12,
+                max_pieces: 2048,
+                ..IntegralOptions::default()
+            },
         };
         self.proven_path(&spec, bits, &options)
-    }
-
-    fn provable(&self) -> Result<(), &'static str> {
-        match self.params {
-            BasisParams::Bfbs(_) => Ok(()),
-            BasisParams::Erbs { .. } => Err(ERBS_QUADRATURE),
-        }
     }
 }
 
@@ -755,7 +799,13 @@ impl PathJob {
                 let length = path.proven_length(options).map_err(gerbs_error)?;
                 Ok(self.out(&path, &spec.waypoints, &bits, Some(length)))
             }
-            BasisParams::Erbs { .. } => fail(format!("option --scalar: {ERBS_QUADRATURE}")),
+            BasisParams::Erbs { sets, centre } => {
+                let knots = Knots::uniform(spec.waypoints.len(), &bits).map_err(gerbs_error)?;
+                let erbs = BasisParams::proven_erbs(sets, *centre, &knots, bits)?;
+                let path = GerbsPath::new(spec, erbs).map_err(gerbs_error)?;
+                let length = path.proven_length(options).map_err(gerbs_error)?;
+                Ok(self.out(&path, &spec.waypoints, &bits, Some(length)))
+            }
         }
     }
 }
@@ -790,9 +840,6 @@ pub fn run_gerbs_path(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Re
         None => return fail("input: missing field \"theta_o\" (the paper uses \"pi/8\")"),
     };
     let kind = kind(doc)?;
-    if matches!(kind, Kind::Erbs) {
-        refuse_ball(scalar, ERBS_QUADRATURE)?;
-    }
     let knots = Knots::<BigRational>::uniform(waypoints.len(), &()).map_err(gerbs_error)?;
     let params = basis_params(doc, kind, &nonempty_intervals(&knots))?;
     let samples = match doc.get("samples") {
@@ -855,12 +902,15 @@ fn path_budget(
                 }
                 .seconds(8e-5 * w * s + 1e-3 * w * w, scalar)
         }
-        (Kind::Erbs, ScalarKind::Mpfr(_)) => Rates {
-            f64: 0.0,
-            mpfr256: erbs_extra(scalar),
-            rational: 0.0,
+        // The ERBS length proven the same way, F_j carried along each interval by proven
+        // increments: measured on the README's path (W = 5) 0.12, 0.9, 3.8 and 10.5 CPU-s an
+        // interval at 32, 64, 128 and 256 bits (2048 pieces an interval at most); each sample
+        // integrates the kernel from its nearer knot to full relative accuracy, 0.016 s at 64
+        // bits and up to 0.05 s at 128 (W = 4, S = 401: 26 s).
+        (Kind::Erbs, ScalarKind::Mpfr(bits) | ScalarKind::Ball(bits)) => {
+            let per_interval = 4.0 * (f64::from(bits) / 128.0).powf(1.5);
+            per_interval * (w - 1.0) / 2.0 + 0.05 * s * f64::from(bits) / 128.0
         }
-        .seconds(0.018 * w * s + 12.0 * w + 0.08 * w * w, scalar),
         (Kind::Bfbs, _) => 1.2e-6 * w * s + 2e-5 * w * w,
         (Kind::Erbs, _) => 1.8e-6 * w * s + 3e-5 * w * w,
     };

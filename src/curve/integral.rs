@@ -139,9 +139,10 @@ pub fn integrate(
 
 /// [`integrate`] for an integrand whose Taylor models fail on some pieces (an essential
 /// singularity at an end, |t − c|^σ at a point c): `bound(lo, hi)` encloses ∫ over the piece
-/// [lo, hi] some other way (from bounds of f there) where f's series is not finite, `None` if
-/// it cannot either. Such pieces are halved like the others, so a bound that shrinks with the
-/// piece converges.
+/// [lo, hi] some other way (from bounds of f there), `None` if it cannot. Every piece keeps
+/// the narrower of the two enclosures, so the bound also serves where the series is finite
+/// but wide. Pieces are halved like the others, so a bound that shrinks with the piece
+/// converges.
 ///
 /// # Errors
 /// As [`integrate`].
@@ -268,9 +269,12 @@ fn ends_contribution(
     Ok(ends)
 }
 
-/// The sum of every piece's enclosure and the ends' contribution.
+/// The sum of every piece's enclosure and the ends' contribution, accumulated 32 bits above
+/// the working precision: thousands of additions rounded at p bits would otherwise leave a
+/// floor of (pieces · 2^−p) of the sum that no refinement narrows.
 fn sum(queue: &BinaryHeap<Piece>, ends: &Ball) -> Ball {
-    let mut total = ends.clone();
+    let mut total = Ball::zero_in(&(ends.ctx() + 32));
+    total += ends;
     for p in queue.iter() {
         total += &p.value;
     }
@@ -295,8 +299,14 @@ fn split_into<F: Fn(&Ball, usize) -> Option<Taylor<Ball>>>(
 ) -> Result<(), IntegralError> {
     let mut pending = vec![(lo, hi)];
     while let Some((lo, hi)) = pending.pop() {
-        let enclosed = piece_integral(integrand.series, &lo, &hi, order)
-            .or_else(|| (integrand.bound)(&lo, &hi).filter(Field::is_finite));
+        // Both are enclosures of one integral: the narrower is kept (next to an essential
+        // singularity the series may be finite but far wider than the range's bound).
+        let series = piece_integral(integrand.series, &lo, &hi, order);
+        let bound = (integrand.bound)(&lo, &hi).filter(Field::is_finite);
+        let enclosed = match (series, bound) {
+            (Some(s), Some(b)) => Some(if b.rad() < s.rad() { b } else { s }),
+            (s, b) => s.or(b),
+        };
         match enclosed {
             Some(value) => queue.push(Piece { lo, hi, value }),
             None => {

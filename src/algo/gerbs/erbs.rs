@@ -27,7 +27,7 @@
 // `!(x > 0)` is meant: a NaN parameter must fail the range checks too.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 use super::quadrature::{default_tolerance, TanhSinh};
-use super::{Blend, GerbsError, Knots};
+use super::{Blend, GerbsError, Knots, Located};
 use crate::curve::taylor::Taylor;
 use crate::scalar::{powi, Field, Real};
 
@@ -363,8 +363,19 @@ impl<T: Real> Blend<T> for Erbs<T> {
     /// the interval; the side it belongs to takes it directly and the other its complement, so
     /// a value near 0 is not the difference of two numbers near 1.
     fn pair(&self, knots: &Knots<T>, j: usize, t: &T, order: usize) -> (Taylor<T>, Taylor<T>) {
-        self.pair_with(knots, j, t, order, &|lo, hi| {
-            self.integral(knots, j, lo, hi)
+        self.pair_located(knots, &Located::from_t(knots, t, j), order)
+    }
+
+    /// [`Blend::pair`] at a located parameter: the distances to the ends decide, exactly
+    /// where they are exact, which end is t's own.
+    fn pair_located(
+        &self,
+        knots: &Knots<T>,
+        at: &Located<T>,
+        order: usize,
+    ) -> (Taylor<T>, Taylor<T>) {
+        self.pair_with(knots, at, order, &|lo, hi| {
+            self.integral(knots, at.interval, lo, hi)
         })
     }
 
@@ -387,22 +398,27 @@ impl<T: Real> Erbs<T> {
     pub(crate) fn pair_with(
         &self,
         knots: &Knots<T>,
-        j: usize,
-        t: &T,
+        at: &Located<T>,
         order: usize,
         integral: &dyn Fn(&T, &T) -> T,
     ) -> (Taylor<T>, Taylor<T>) {
+        let (j, t) = (at.interval, &at.t);
         let ctx = t.ctx();
         let (a, b) = (knots.at(j), knots.at(j + 1));
         let s = self.normalizer(j);
-        let mid = (a.clone() + b) / &T::from_i64(2, &ctx);
         let (zero, one) = (T::zero_in(&ctx), T::one_in(&ctx));
-        // (∫ from the nearer end) / S, and whether that end is t_j.
-        let (near, from_left) = if *t <= *a {
-            (zero, true)
-        } else if *t >= *b {
-            (zero, false)
-        } else if *t <= mid {
+        // (∫ from the nearer end) / S, and whether that end is t_j. At or beyond an end the
+        // integral is 0; which end is nearer is a choice of accuracy, not of value, so an
+        // enclosure that cannot tell takes t_j without counting an undecided comparison
+        // (t = 1/2 between the knots 1/3 and 2/3 is at the middle at every precision).
+        // A distance that an enclosure cannot tell from 0 counts as inside: the interval was
+        // decided on the exact t, and the integral over a span that small is proven small.
+        let inside = |d: &T| zero.decide_lt(d) != Some(false);
+        let (near, from_left) = if !inside(&at.after_start) {
+            (zero.clone(), true)
+        } else if !inside(&at.before_end) {
+            (zero.clone(), false)
+        } else if at.before_end.decide_lt(&at.after_start) != Some(true) {
             (integral(a, t) / s, true)
         } else {
             (integral(t, b) / s, false)
@@ -416,7 +432,13 @@ impl<T: Real> Erbs<T> {
         if order == 0 {
             return (Taylor::constant(falling), Taylor::constant(rising));
         }
-        let psi = self.slope_series(knots, j, t, order - 1);
+        let flat_at_knots = !self.params(j).alpha.is_zero();
+        let psi = if flat_at_knots && !(inside(&at.after_start) && inside(&at.before_end)) {
+            // At a knot every derivative of Ψ is 0 (the limit; see `slope_series`).
+            Taylor::constant(T::zero_in(&ctx)).with_order(order - 1)
+        } else {
+            self.kernel_series(knots, j, t, order - 1)
+        };
         (
             Taylor::integrate(&(-psi.clone()), falling, order + 1),
             Taylor::integrate(&psi, rising, order + 1),
@@ -435,9 +457,18 @@ impl<T: Real> Erbs<T> {
     ) -> Taylor<T> {
         let (a, b) = (knots.at(j), knots.at(j + 1));
         let flat_at_knots = !self.params(j).alpha.is_zero();
-        if flat_at_knots && (*t <= *a || *t >= *b) {
+        // Decided without counting: an enclosure of t that overlaps a knot is taken as inside,
+        // where the kernel's series over it is not finite, and is refused where printed.
+        let beyond = |x: &T, y: &T| y.decide_lt(x) == Some(false);
+        if flat_at_knots && (beyond(t, a) || beyond(b, t)) {
             return Taylor::constant(T::zero_in(&t.ctx())).with_order(order);
         }
+        self.kernel_series(knots, j, t, order)
+    }
+
+    /// Ψ_j/S_j as a series of `order` at t inside interval j.
+    fn kernel_series(&self, knots: &Knots<T>, j: usize, t: &T, order: usize) -> Taylor<T> {
+        let (a, b) = (knots.at(j), knots.at(j + 1));
         let var = Taylor::variable(t.clone(), order);
         let left = var.clone() - &Taylor::constant(a.clone());
         let right = Taylor::constant(b.clone()) - &var;

@@ -262,6 +262,20 @@ pub trait Blend<T: Field> {
         self.rising(knots, j, t, 1).derivatives()[1].clone()
     }
 
+    /// F_j′ as a series of `order` at t inside interval j. Kinds whose F_j is a quadrature
+    /// override it to give the integrand's series without the quadrature.
+    fn slope_series(&self, knots: &Knots<T>, j: usize, t: &T, order: usize) -> Taylor<T> {
+        self.rising(knots, j, t, order + 1).derivative_series()
+    }
+
+    /// An enclosure of F_j′ at every point of [lo, hi] that lies in interval j, for the
+    /// pieces where its series is not finite (an essential singularity at a knot); `None`
+    /// (the default) where the kind has no such bound.
+    fn slope_range(&self, knots: &Knots<T>, j: usize, lo: &T, hi: &T) -> Option<T> {
+        let _ = (knots, j, lo, hi);
+        None
+    }
+
     /// Whether F_j is a quadrature, so that a sweep over many points (a path length) should
     /// carry F_j from one point to the next with [`Blend::increment`] instead of integrating
     /// from a knot every time.

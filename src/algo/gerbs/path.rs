@@ -17,14 +17,15 @@
 // `!(x > 0)` is meant: a NaN parameter must fail the range checks too.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 use super::quadrature::TanhSinh;
-use super::{basis_series_on, Blend, GerbsError, Knots, Side};
-use crate::curve::integral::{integrate, IntegralOptions};
+use super::{basis_series_located, Blend, GerbsError, Knots, Located, Side};
+use crate::curve::integral::{integrate, integrate_with, IntegralOptions};
 use crate::curve::parametric::{check_domain, CurveError, ParamCurve, ParamCurveArclen};
 use crate::curve::taylor::Taylor;
 use crate::numeric::quadrature::default_tolerance;
 use crate::scalar::ball::{carried, Ball};
-use crate::scalar::{Field, Real};
+use crate::scalar::{Field, Float, Real};
 use rayon::prelude::*;
+use rug::float::Round;
 use std::cell::RefCell;
 
 /// Unit tangents m_i and turn signs s_i of Algorithm 1.
@@ -566,10 +567,17 @@ impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
 
     /// p as series in t to `order` on knot interval j (1-based), chosen by the caller.
     pub fn series_on(&self, t: &T, j: usize, order: usize) -> [Taylor<T>; 2] {
+        self.series_located(&Located::from_t(&self.knots, t, j), order)
+    }
+
+    /// [`GerbsPath::series_on`] at a located parameter (its distances to the interval's ends
+    /// given, exactly where they are known exactly).
+    pub fn series_located(&self, at: &Located<T>, order: usize) -> [Taylor<T>; 2] {
+        let t = &at.t;
         let ctx = t.ctx();
         let zero = Taylor::constant(T::zero_in(&ctx)).with_order(order);
         let mut p = [zero.clone(), zero];
-        let basis = basis_series_on(&self.knots, &self.blend, t, j, order);
+        let basis = basis_series_located(&self.knots, &self.blend, at, order);
         let var = Taylor::variable(t.clone(), order);
         for (i, b) in basis.iter().enumerate() {
             if b.c.iter().all(Field::is_zero) {
@@ -618,7 +626,18 @@ impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
         };
         let j = j.or_else(|| self.knots.interval(&t, side));
         match j {
-            Some(j) => self.at_on(&t, j),
+            Some(j) => {
+                // t is the interval's start (from the right) or end (from the left), or a knot
+                // equal to it: that distance is exactly 0, not t_k − t_j formed from two
+                // roundings of one knot (an enclosure of 1/3 minus itself is not 0).
+                let mut at = Located::from_t(&self.knots, &t, j);
+                match side {
+                    Side::Right if j >= k => at.after_start = T::zero_in(&t.ctx()),
+                    Side::Left if j < k => at.before_end = T::zero_in(&t.ctx()),
+                    _ => {}
+                }
+                self.point_from(&t, self.series_located(&at, 3))
+            }
             None => self.point_from(&t, self.series(&t, 3, side)),
         }
     }
@@ -786,13 +805,6 @@ impl<B: Blend<Ball>> GerbsPath<Ball, B> {
     where
         B: Sync,
     {
-        if self.blend.sweeps() {
-            return Err(GerbsError::Parameter {
-                field: "kind",
-                message: "the ERBS basis is a quadrature along the path: its length is not proven"
-                    .into(),
-            });
-        }
         let knots = self.knots.as_slice();
         let bits = knots[0].ctx();
         // The knot intervals in parallel (each carries the caller's tally of undecided
@@ -814,6 +826,144 @@ impl<B: Blend<Ball>> GerbsPath<Ball, B> {
         j: usize,
         options: &IntegralOptions,
     ) -> Result<Ball, GerbsError>
+    where
+        B: Sync,
+    {
+        if self.blend.sweeps() {
+            self.proven_sweep_length(j, options)
+        } else {
+            self.proven_closed_length(j, options)
+        }
+    }
+
+    /// The proven length over knot interval j of a path whose F_j is a quadrature (ERBS).
+    /// F_j is carried along the interval: its value at an exact point is the proven
+    /// increment from the nearest point already known, and over a piece [p, q] it lies
+    /// between F_j(p) and F_j(q) (F_j rises: F_j′ = Ψ_j/S_j ≥ 0). With F_j′'s series
+    /// ([`Blend::slope_series`]) that gives the speed's Taylor models; on the pieces where
+    /// they are not finite (next to a knot, where Ψ_j has an essential singularity, or at
+    /// the kernel's centre) the speed is bounded from F_j′'s range ([`Blend::slope_range`])
+    /// and the integral over the piece is its width times that bound. Knots known only as
+    /// balls (1/3) are replaced by exact inner ends, the span between them bounded the same
+    /// way.
+    fn proven_sweep_length(&self, j: usize, options: &IntegralOptions) -> Result<Ball, GerbsError> {
+        let (a, b) = (self.knots.at(j), self.knots.at(j + 1));
+        let bits = a.ctx();
+        let not_proven = |what: String| GerbsError::Parameter {
+            field: "waypoints",
+            message: format!("the path's length is not proven on knot interval {j}: {what}"),
+        };
+        let zero = Ball::zero_in(&bits);
+        if a.rad() == 0.0 && b.rad() == 0.0 && a.mid() >= b.mid() {
+            return Ok(zero); // an empty interval (a doubled end knot)
+        }
+        // The inner ends at the working precision (rounded inward: outside the knots' balls),
+        // so that the integrator's tolerance is relative to the working precision.
+        let (lo, _) = Float::with_val_round(bits, a.upper(), Round::Up);
+        let (hi, _) = Float::with_val_round(bits, b.lower(), Round::Down);
+        if !(lo < hi) {
+            // An interval within its knots' rounding: its length is bounded like an end.
+            return self
+                .speed_bound(j, &Ball::hull(a, b), None)
+                .ok_or_else(|| not_proven("no bound of the speed".into()));
+        }
+        let rising = CarriedRising::new(&self.knots, &self.blend, j);
+        let speed = |t: &Ball, order: usize| -> Option<Taylor<Ball>> {
+            let slope = self.blend.slope_series(&self.knots, j, t, order);
+            if !slope.c.iter().all(Field::is_finite) {
+                return None;
+            }
+            let f = Taylor::integrate(&slope, rising.over(t), order + 2);
+            let [x, y] = self.series_from_rising(t, j, order + 1, f);
+            let (dx, dy) = (x.derivative_series(), y.derivative_series());
+            let speed = (dx.clone() * &dx + &(dy.clone() * &dy)).sqrt();
+            speed.c.iter().all(Field::is_finite).then_some(speed)
+        };
+        let bound = |p: &Float, q: &Float| -> Option<Ball> {
+            let f = Ball::hull(&rising.at(p), &rising.at(q));
+            self.speed_bound(j, &Ball::from_bounds(p, q), Some(f))
+        };
+        // The spans [t_j, lo] and [hi, t_{j+1}] inside the knots' balls.
+        let mut total = zero.clone();
+        for end in [a, b] {
+            if end.rad() > 0.0 {
+                let span = self
+                    .speed_bound(j, end, None)
+                    .ok_or_else(|| not_proven("no bound of the speed at a knot".into()))?;
+                total += &span;
+            }
+        }
+        let mut cuts = vec![Ball::exact(lo)];
+        for c in self.blend.break_points(&self.knots, j) {
+            let c = Ball::exact(c.mid().clone());
+            if cuts[0].decide_lt(&c) == Some(true) && c.mid() < &hi {
+                cuts.push(c);
+            }
+        }
+        cuts.push(Ball::exact(hi));
+        for w in cuts.windows(2) {
+            let piece = integrate_with(&speed, &bound, &w[0], &w[1], options)
+                .map_err(|e| not_proven(e.to_string()))?;
+            total += &piece.value;
+        }
+        Ok(total)
+    }
+
+    /// A bound of ∫|p′| over the part of the ball `piece` inside interval j: the piece's
+    /// width times the bounds of |p′| there, from F_j over the piece (`rising`, or [0, 1]
+    /// when none is given) and F_j′'s range there.
+    fn speed_bound(&self, j: usize, piece: &Ball, rising: Option<Ball>) -> Option<Ball> {
+        let bits = piece.ctx();
+        let (lo, hi) = (Ball::exact(piece.lower()), Ball::exact(piece.upper()));
+        let slope = self.blend.slope_range(&self.knots, j, &lo, &hi)?;
+        let value =
+            rising.unwrap_or_else(|| Ball::hull(&Ball::zero_in(&bits), &Ball::one_in(&bits)));
+        let series = Taylor {
+            c: vec![value, slope],
+        };
+        let [x, y] = self.series_from_rising(piece, j, 1, series);
+        let (dx, dy) = (x.c[1].clone(), y.c[1].clone());
+        let speed = (dx.clone() * &dx + &(dy.clone() * &dy)).sqrt();
+        // |p′| ≥ 0: its lower bound is clamped there. The integral over the piece lies
+        // between its width times the two bounds (rounded outward), so it narrows as the
+        // piece's width squared.
+        let zero = Float::with_val(bits, 0);
+        let upper = speed.upper();
+        let lower = speed.lower().max(&zero);
+        let width = Float::with_val(bits + 64, piece.upper() - piece.lower());
+        let (high, _) = Float::with_val_round(bits + 64, &upper * &width, Round::Up);
+        let (low, _) = Float::with_val_round(bits + 64, &lower * &width, Round::Down);
+        (high.is_finite() && low <= high).then(|| Ball::from_bounds(&low, &high))
+    }
+
+    /// The path's series at t on interval j from F_j's series (`rising`, of `order`): the
+    /// falling B_j = 1 − F_j and the rising B_{j+1} = F_j blend their local curves.
+    fn series_from_rising(
+        &self,
+        t: &Ball,
+        j: usize,
+        order: usize,
+        rising: Taylor<Ball>,
+    ) -> [Taylor<Ball>; 2] {
+        let bits = t.ctx();
+        let n = self.curves.len();
+        let falling = Taylor::constant(Ball::one_in(&bits)).with_order(order) - &rising;
+        let zero = Taylor::constant(Ball::zero_in(&bits)).with_order(order);
+        let mut p = [zero.clone(), zero];
+        let var = Taylor::variable(t.clone(), order);
+        for (k, basis) in [(j, falling), (j + 1, rising)] {
+            if !(2..=n + 1).contains(&k) {
+                continue;
+            }
+            let c = self.local_series(k, &var);
+            p[0] += &(c[0].clone() * &basis);
+            p[1] += &(c[1].clone() * &basis);
+        }
+        p
+    }
+
+    /// The proven length over knot interval j of a path whose F_j is in closed form.
+    fn proven_closed_length(&self, j: usize, options: &IntegralOptions) -> Result<Ball, GerbsError>
     where
         B: Sync,
     {
@@ -840,6 +990,63 @@ impl<B: Blend<Ball>> GerbsPath<Ball, B> {
             total += &piece.value;
         }
         Ok(total)
+    }
+}
+
+/// F_j along knot interval j of a blend whose F_j is a quadrature, in balls: the values
+/// known so far (the knots, F_j = 0 and 1, and exact points), each new point's value the
+/// proven increment from the nearest known one.
+struct CarriedRising<'a, B> {
+    knots: &'a Knots<Ball>,
+    blend: &'a B,
+    j: usize,
+    /// (t, F_j(t)) sorted by t.
+    known: RefCell<Vec<(Ball, Ball)>>,
+}
+
+impl<'a, B: Blend<Ball>> CarriedRising<'a, B> {
+    fn new(knots: &'a Knots<Ball>, blend: &'a B, j: usize) -> Self {
+        let (a, b) = (knots.at(j), knots.at(j + 1));
+        let bits = a.ctx();
+        let known = vec![
+            (a.clone(), Ball::zero_in(&bits)),
+            (b.clone(), Ball::one_in(&bits)),
+        ];
+        CarriedRising {
+            knots,
+            blend,
+            j,
+            known: RefCell::new(known),
+        }
+    }
+
+    /// F_j at the exact point x of the interval.
+    fn at(&self, x: &Float) -> Ball {
+        let mut known = self.known.borrow_mut();
+        let i = known.partition_point(|(s, _)| s.mid() <= x);
+        let prev = &known[i - 1];
+        if prev.0.mid() == x && prev.0.rad() == 0.0 {
+            return prev.1.clone();
+        }
+        let t = Ball::exact(x.clone());
+        let distance = |from: &Ball, to: &Float| Float::with_val(64, to - from.mid()).abs();
+        let f = match known.get(i) {
+            Some(next) if distance(&next.0, x) < distance(&prev.0, x) => {
+                next.1.clone() - &self.blend.increment(self.knots, self.j, &t, &next.0)
+            }
+            _ => prev.1.clone() + &self.blend.increment(self.knots, self.j, &prev.0, &t),
+        };
+        known.insert(i, (t, f.clone()));
+        f
+    }
+
+    /// F_j over a ball: at its exact midpoint, or between its ends' values (F_j rises).
+    fn over(&self, t: &Ball) -> Ball {
+        if t.rad() == 0.0 {
+            self.at(t.mid())
+        } else {
+            Ball::hull(&self.at(&t.lower()), &self.at(&t.upper()))
+        }
     }
 }
 

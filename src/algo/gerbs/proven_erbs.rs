@@ -14,7 +14,7 @@
 //! width^(1+2σ): the adaptive halving converges either way.
 
 use super::erbs::{CentreReading, Erbs, ErbsParams};
-use super::{Blend, GerbsError, Knots};
+use super::{Blend, GerbsError, Knots, Located};
 use crate::curve::integral::{integrate_with, IntegralOptions};
 use crate::curve::taylor::Taylor;
 use crate::scalar::ball::Ball;
@@ -42,7 +42,19 @@ impl ProvenErbs {
     ) -> Result<Self, GerbsError> {
         super::erbs::check_param_count(knots, &params)?;
         let erbs = Erbs::with_normalizers(knots, params, reading, |erbs, j| {
-            proven_integral(erbs, knots, j, knots.at(j), knots.at(j + 1), &options)
+            let (a, b) = (knots.at(j), knots.at(j + 1));
+            // S_j divides every value of the basis, so it is narrowed to 2^(6−p) of itself
+            // (the integrator's default leaves 2^(16−p)): a first pass gives its size.
+            let rough = proven_integral(erbs, knots, j, a, b, &options);
+            let size = rough.mid().to_f64().abs();
+            if !rough.is_finite() || size == 0.0 {
+                return rough;
+            }
+            let tight = IntegralOptions {
+                tolerance: Some(size * (2f64).powi(6 - a.ctx().min(1000) as i32)),
+                ..options.clone()
+            };
+            proven_integral(erbs, knots, j, a, b, &tight)
         });
         Ok(ProvenErbs { erbs, options })
     }
@@ -74,14 +86,31 @@ fn proven_integral(
         psi.c.iter().all(Field::is_finite).then_some(psi)
     };
     let bound = |p: &Float, q: &Float| piece_bound(erbs, knots, j, p, q);
+    // Ends known only as balls (a knot 1/3, a rounded t) are replaced by their exact
+    // midpoints, and ∫ between an end and its midpoint is at most the radius: 0 < Ψ ≤ 1, its
+    // exponent being −β·N/D ≤ 0. (The kernel's series is not finite on a ball that reaches
+    // past a knot, so the integrator's own end bound would refuse there.)
+    let slack = lo.rad() + hi.rad();
+    let (lo, hi) = (Ball::exact(lo.mid().clone()), Ball::exact(hi.mid().clone()));
+    if hi.mid() <= lo.mid() {
+        // Equal exact ends: 0; a span shorter than the ends' rounding: within the slack of 0;
+        // exact ends in the wrong order: not an integral this function is asked for.
+        return if hi.mid() == lo.mid() || slack > 0.0 {
+            Ball::zero_in(&bits).widen(slack * (1.0 + 1e-15))
+        } else {
+            unbounded()
+        };
+    }
     let mut cuts = vec![lo.clone()];
     if let Some(c) = erbs.break_points(knots, j).into_iter().next() {
-        if lo.decide_lt(&c) == Some(true) && c.decide_lt(hi) == Some(true) {
+        // Any cut is valid; the exact midpoint of the centre's ball keeps every end exact.
+        let c = Ball::exact(c.mid().clone());
+        if lo.decide_lt(&c) == Some(true) && c.decide_lt(&hi) == Some(true) {
             cuts.push(c);
         }
     }
     cuts.push(hi.clone());
-    let mut total = Ball::zero_in(&bits);
+    let mut total = Ball::zero_in(&bits).widen(slack * (1.0 + 1e-15));
     for w in cuts.windows(2) {
         match integrate_with(&series, &bound, &w[0], &w[1], options) {
             Ok(piece) => total += &piece.value,
@@ -100,11 +129,28 @@ fn piece_bound(
     p: &Float,
     q: &Float,
 ) -> Option<Ball> {
+    let (lower, upper) = kernel_range(erbs, knots, j, p, q)?;
+    let bits = p.prec().max(q.prec());
+    let width = Float::with_val(bits + 1, q - p);
+    let hi = Float::with_val(bits + 64, &upper * &width);
+    let lo = Float::with_val(bits + 64, &lower * &width);
+    (hi.is_finite() && lo <= hi)
+        .then(|| Ball::from_bounds(&lo, &hi).widen(hi.to_f64().abs() * 1e-15))
+}
+
+/// Bounds (lower, upper) of Ψ_j over [p, q] from bounds of its numerator and denominator
+/// there (see the module doc); `None` where the denominator is not proven positive.
+fn kernel_range(
+    erbs: &Erbs<Ball>,
+    knots: &Knots<Ball>,
+    j: usize,
+    p: &Float,
+    q: &Float,
+) -> Option<(Float, Float)> {
     let bits = p.prec().max(q.prec());
     let params = erbs.params(j);
     let (a, b) = (knots.at(j), knots.at(j + 1));
     let piece = Ball::from_bounds(p, q);
-    let width = Ball::exact(Float::with_val(bits + 1, q - p));
     let zero = Float::with_val(bits, 0);
     // |t − c| over the piece: its lowest point (0 when the piece reaches c) and its highest.
     let offset = piece.clone() - &erbs.centre_point(knots, j);
@@ -146,17 +192,23 @@ fn piece_bound(
         }
         Some((params.alpha.clone() * &(l.ln() + &(params.gamma.clone() * &r.ln()))).exp())
     };
-    let d_max = denominator(&left.1, &right.1)?;
-    // Ψ ≤ exp(−β N_min / D_max); Ψ ≥ exp(−β N_max / D_min) where D_min > 0, else Ψ ≥ 0.
-    let upper = (-(params.beta.clone() * &n_min / &d_max)).exp().upper();
+    // Ψ ≤ exp(−β N_min / D_max) where D_max is proven positive, else Ψ ≤ 1 (its exponent is
+    // ≤ 0: a piece that reaches into a knot's ball); Ψ ≥ exp(−β N_max / D_min) where
+    // D_min > 0, else Ψ ≥ 0.
+    let upper = match denominator(&left.1, &right.1) {
+        Some(d_max) => (-(params.beta.clone() * &n_min / &d_max)).exp().upper(),
+        None => Float::with_val(bits, 1),
+    };
+    let upper = if upper > 1 {
+        Float::with_val(bits, 1)
+    } else {
+        upper
+    };
     let lower = denominator(&left.0, &right.0)
         .map(|d_min| (-(params.beta.clone() * &n_max / &d_min)).exp().lower())
         .filter(|l| l.is_finite() && *l >= 0)
         .unwrap_or(zero);
-    let hi = Float::with_val(bits + 64, &upper * width.mid());
-    let lo = Float::with_val(bits + 64, &lower * width.mid());
-    (hi.is_finite() && lo <= hi)
-        .then(|| Ball::from_bounds(&lo, &hi).widen(hi.to_f64().abs() * 1e-15))
+    (upper.is_finite() && lower <= upper).then_some((lower, upper))
 }
 
 impl Blend<Ball> for ProvenErbs {
@@ -175,13 +227,32 @@ impl Blend<Ball> for ProvenErbs {
         t: &Ball,
         order: usize,
     ) -> (Taylor<Ball>, Taylor<Ball>) {
-        self.erbs.pair_with(knots, j, t, order, &|lo, hi| {
-            self.integral(knots, j, lo, hi)
+        self.pair_located(knots, &Located::from_t(knots, t, j), order)
+    }
+
+    fn pair_located(
+        &self,
+        knots: &Knots<Ball>,
+        at: &Located<Ball>,
+        order: usize,
+    ) -> (Taylor<Ball>, Taylor<Ball>) {
+        self.erbs.pair_with(knots, at, order, &|lo, hi| {
+            self.integral(knots, at.interval, lo, hi)
         })
     }
 
     fn slope(&self, knots: &Knots<Ball>, j: usize, t: &Ball) -> Ball {
         self.erbs.slope(knots, j, t)
+    }
+
+    fn slope_series(&self, knots: &Knots<Ball>, j: usize, t: &Ball, order: usize) -> Taylor<Ball> {
+        self.erbs.slope_series(knots, j, t, order)
+    }
+
+    /// Ψ_j/S_j bounded over the piece as in the module doc.
+    fn slope_range(&self, knots: &Knots<Ball>, j: usize, lo: &Ball, hi: &Ball) -> Option<Ball> {
+        let (lower, upper) = kernel_range(&self.erbs, knots, j, &lo.lower(), &hi.upper())?;
+        Some(Ball::from_bounds(&lower, &upper) / self.erbs.normalizer(j))
     }
 
     fn break_points(&self, knots: &Knots<Ball>, j: usize) -> Vec<Ball> {
@@ -192,7 +263,18 @@ impl Blend<Ball> for ProvenErbs {
         true
     }
 
+    /// F_j(to) − F_j(from) to an absolute tolerance of 2^(8−p) (F_j lies in [0, 1]): a
+    /// sweep along the path needs F_j's value, not the tiny increments' relative digits,
+    /// which next to a knot would cost thousands of pieces each.
     fn increment(&self, knots: &Knots<Ball>, j: usize, from: &Ball, to: &Ball) -> Ball {
-        self.integral(knots, j, from, to) / self.erbs.normalizer(j)
+        let s = self.erbs.normalizer(j);
+        // The working precision is the knots' (an exact point carries as many bits as its
+        // binary expansion needs).
+        let bits = knots.at(j).ctx();
+        let options = IntegralOptions {
+            tolerance: Some(s.mid().to_f64().abs() * (2f64).powi(8 - bits.min(1000) as i32)),
+            ..self.options.clone()
+        };
+        proven_integral(&self.erbs, knots, j, from, to, &options) / s
     }
 }
