@@ -9,7 +9,6 @@ use crate::algo::param::natural::NaturalCubicSpline;
 use crate::algo::param::objective::{
     chord_length_spacing, knots_from_spacing, objective, Objective,
 };
-use crate::algo::param::one_d::extreme_indices;
 use crate::scalar::certify::{certify, Certified};
 use crate::scalar::{BigRational, Field, Float};
 
@@ -319,25 +318,35 @@ fn second_derivative_claim(
 /// extremes of the component, compared with chord length.
 fn third_jump_claim(parametrizations: &[(&str, Vec<f64>)], data: &[Vec<f64>]) -> Outcome {
     // Per parametrization and component: Σ |θ‴(t_j+) − θ‴(t_j−)| over the non-extreme knots.
-    let sums: Vec<Vec<f64>> = parametrizations
+    let sums: Result<Vec<Vec<f64>>, String> = parametrizations
         .iter()
-        .map(|(_, t)| {
+        .map(|(name, t)| {
             data.iter()
                 .map(|z| {
-                    let extremes = extreme_indices(z).unwrap_or_default();
-                    let Ok(s) = NaturalCubicSpline::new(t.clone(), z.clone()) else {
-                        return f64::NAN;
-                    };
+                    let extremes = weak_extremes(z);
+                    let s = NaturalCubicSpline::new(t.clone(), z.clone())
+                        .map_err(|e| format!("the spline on {name}'s knots: {e}"))?;
                     let m = s.second_derivatives_at_knots();
                     let third = |i: usize| (m[i] - m[i - 1]) / (t[i] - t[i - 1]);
-                    (1..t.len() - 1)
+                    Ok((1..t.len() - 1)
                         .filter(|j| !extremes.contains(j))
                         .map(|j| (third(j + 1) - third(j)).abs())
-                        .sum()
+                        .sum())
                 })
                 .collect()
         })
         .collect();
+    let sums = match sums {
+        Ok(s) => s,
+        Err(e) => {
+            return Outcome::new(
+                "not computed",
+                "f64 (splines on certified knots)",
+                Verdict::Failed,
+                format!("a spline the claim needs could not be built: {e}"),
+            )
+        }
+    };
     let reduced = sums.len() == 3
         && sums[1..]
             .iter()
@@ -352,9 +361,19 @@ fn third_jump_claim(parametrizations: &[(&str, Vec<f64>)], data: &[Vec<f64>]) ->
         "f64 (splines on certified knots)",
         if reduced { Verdict::Reproduced } else { Verdict::Discrepancy },
         "natural cubic splines of the Table II components; at each interior knot that is not a relative extreme of that component's \
-         data, the jump of the (piecewise constant) third derivative, summed per component. Criterion: both sums smaller for t^EX and \
+         data, the jump of the (piecewise constant) third derivative, summed per component. A relative extreme is an interior knot \
+         whose two data differences do not share a sign (so both ends of a repeated value, as y has, count as extremes). Criterion: both sums smaller for t^EX and \
          for t^AP than for chord length",
     )
+}
+
+/// The interior indices j whose data differences z_j − z_{j−1} and z_{j+1} − z_j do not share
+/// a sign: the relative extremes, with both ends of a plateau (a repeated value) among them.
+/// Decided on the data as given (Table II's decimals, exact in f64's comparisons).
+fn weak_extremes(z: &[f64]) -> Vec<usize> {
+    (1..z.len().saturating_sub(1))
+        .filter(|&j| (z[j] - z[j - 1]) * (z[j + 1] - z[j]) <= 0.0)
+        .collect()
 }
 
 /// The spline of one component on knots `t`, sampled with its two derivatives on a uniform

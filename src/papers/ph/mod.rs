@@ -406,7 +406,7 @@ struct Results {
     /// The largest jumps at the joints for 2 and 8 segments.
     jumps: Vec<theorems::Jumps>,
     /// Eq. (13) differences per segment count, and the length of the test curve.
-    geometry: (Vec<theorems::GeometryRow>, f64),
+    geometry: (Vec<theorems::GeometryRow>, Option<f64>),
     nrho: nrho::Nrho,
     /// The four NRHO findings, one line each.
     nrho_findings: [String; 4],
@@ -539,7 +539,13 @@ fn preliminary_checks(ledger: &mut Ledger) -> Vec<(&'static str, Outcome)> {
 }
 
 /// Theorems 2–4, the continuity of Sec. 5E, Eq. (22b) and the geometry of Eq. (13).
-fn theorem_checks(ledger: &mut Ledger) -> (Vec<theorems::Jumps>, Vec<theorems::GeometryRow>, f64) {
+fn theorem_checks(
+    ledger: &mut Ledger,
+) -> (
+    Vec<theorems::Jumps>,
+    Vec<theorems::GeometryRow>,
+    Option<f64>,
+) {
     let [planar, rigid, reflect, reverse, printed] = theorems::theorems();
     ledger.record("phodcos.thm2.planarity", planar);
     ledger.record("phodcos.thm3.invariance", rigid);

@@ -203,7 +203,10 @@ fn geometry(r: &Results) -> String {
         .collect();
     format!(
         "## Eq. (13): arc length, curvature, torsion\n\nLength of Eq. (23) on [0, 1]: {}.\n\n{}\n",
-        fmt(*length, number::PROSE_DIGITS),
+        length.map_or_else(
+            || "not computed (see `phodcos.eq13.geometry`)".to_string(),
+            |l| fmt(l, number::PROSE_DIGITS)
+        ),
         table(&["segments", "E", "|ΔL|", "max |Δκ|", "max |Δτ|"], &rows)
     )
 }
