@@ -92,12 +92,10 @@ fn column<const K: usize>(table: &[[&str; K]], c: usize) -> Vec<BigRational> {
     table.iter().map(|r| num(r[c])).collect()
 }
 
-/// f64 knots (our minimizers) as exact rationals.
-fn exact(knots: &[f64]) -> Vec<BigRational> {
-    knots
-        .iter()
-        .map(|x| BigRational::from_float(*x).unwrap_or_default())
-        .collect()
+/// f64 knots (our minimizers) as exact rationals; `None` if one is not finite (the claim
+/// that needs them then fails, never measuring a default).
+fn exact(knots: &[f64]) -> Option<Vec<BigRational>> {
+    knots.iter().map(|x| BigRational::from_float(*x)).collect()
 }
 
 /// Fig. 9: axis #3 under the printed t^CL, t^WC, t^AP (and our t^AP), and the two readings
@@ -112,19 +110,18 @@ pub fn fig9(our_approx: &[f64]) -> (Vec<OvershootRow>, [Outcome; 2]) {
         .enumerate()
         .filter_map(|(c, name)| measure(name, &column(&TABLE6, c), &axis))
         .collect();
+    let failed = |why: &str| {
+        let outcome = || Outcome::new("", "mpfr:128/256", Verdict::Failed, why);
+        [outcome(), outcome()]
+    };
     if our_approx.len() == axis.len() {
-        rows.extend(measure("t^AP (ours)", &exact(our_approx), &axis));
+        let Some(knots) = exact(our_approx) else {
+            return (rows, failed("our t^AP has a knot that is not finite"));
+        };
+        rows.extend(measure("t^AP (ours)", &knots, &axis));
     }
     if rows.len() < 3 {
-        let failed = || {
-            Outcome::new(
-                "",
-                "mpfr:128/256",
-                Verdict::Failed,
-                "a spline could not be built",
-            )
-        };
-        return (rows, [failed(), failed()]);
+        return (rows, failed("a spline could not be built"));
     }
     let range = axis_range(&axis);
     let overshoots = |r: &OvershootRow| {
@@ -183,53 +180,80 @@ struct Totals {
 }
 
 impl Totals {
+    /// The totals over every component; `None` when a knot vector is missing (not finite)
+    /// or a component's spline cannot be built (a total over fewer components would compare
+    /// unlike with like).
     fn of(
         example: &'static str,
         name: &str,
-        knots: &[BigRational],
+        knots: Option<&[BigRational]>,
         components: &[Vec<BigRational>],
-    ) -> Totals {
+    ) -> Option<Totals> {
+        let knots = knots?;
         let rows: Vec<OvershootRow> = components
             .iter()
-            .filter_map(|z| measure(name, knots, z))
-            .collect();
-        Totals {
+            .map(|z| measure(name, knots, z))
+            .collect::<Option<_>>()?;
+        Some(Totals {
             example,
             parametrization: name.to_string(),
             overshooting: rows.iter().map(|r| r.overshooting).sum(),
             largest_sum: rows.iter().map(|r| r.largest.approx).sum(),
-        }
+        })
     }
+}
+
+/// The overshoot totals of every case of [`reduced`]: Table II on each plane
+/// parametrization, the robot axes on the printed t^CL and on ours; `Err(case)` names the
+/// first case that could not be measured.
+fn totals_of_cases(
+    plane: &[(&'static str, Vec<f64>)],
+    robot_approx: &[f64],
+) -> Result<Vec<Totals>, String> {
+    let table2: [Vec<BigRational>; 2] = [
+        TABLE2.iter().map(|(x, _)| num(x)).collect(),
+        TABLE2.iter().map(|(_, y)| num(y)).collect(),
+    ];
+    let robot: Vec<Vec<BigRational>> = (0..6).map(|c| column(&TABLE4, c)).collect();
+    let mut cases: Vec<(String, Option<Totals>)> = plane
+        .iter()
+        .map(|(name, t)| {
+            let totals = Totals::of("Table II", name, exact(t).as_deref(), &table2);
+            (format!("Table II {name}"), totals)
+        })
+        .collect();
+    let printed = column(&TABLE6, 0);
+    cases.push((
+        "robot t^CL (printed)".into(),
+        Totals::of("robot", "t^CL (printed)", Some(&printed), &robot),
+    ));
+    if robot_approx.len() == robot[0].len() {
+        let totals = Totals::of(
+            "robot",
+            "t^AP (ours)",
+            exact(robot_approx).as_deref(),
+            &robot,
+        );
+        cases.push(("robot t^AP (ours)".into(), totals));
+    }
+    cases.into_iter().map(|(case, t)| t.ok_or(case)).collect()
 }
 
 /// Bullet (i) after Corollary 3: overshoots are reduced by the minimizing parametrization,
 /// on the paper's two higher-dimensional examples (Table II with t^EX and t^AP; the robot
 /// axes with t^AP), against chord length.
 pub fn reduced(plane: &[(&'static str, Vec<f64>)], robot_approx: &[f64]) -> Outcome {
-    let table2: [Vec<BigRational>; 2] = [
-        TABLE2.iter().map(|(x, _)| num(x)).collect(),
-        TABLE2.iter().map(|(_, y)| num(y)).collect(),
-    ];
-    let robot: Vec<Vec<BigRational>> = (0..6).map(|c| column(&TABLE4, c)).collect();
-    let mut cases: Vec<Totals> = plane
-        .iter()
-        .map(|(name, t)| Totals::of("Table II", name, &exact(t), &table2))
-        .collect();
-    cases.push(Totals::of(
-        "robot",
-        "t^CL (printed)",
-        &column(&TABLE6, 0),
-        &robot,
-    ));
-    if robot_approx.len() == robot[0].len() {
-        cases.push(Totals::of(
-            "robot",
-            "t^AP (ours)",
-            &exact(robot_approx),
-            &robot,
-        ));
-    }
-    let totals = cases;
+    let totals = match totals_of_cases(plane, robot_approx) {
+        Ok(t) => t,
+        Err(case) => {
+            return Outcome::new(
+                "",
+                "mpfr:128/256",
+                Verdict::Failed,
+                format!("{case}: a knot is not finite or a component's spline could not be built"),
+            )
+        }
+    };
     let mut judgements = Vec::new();
     for example in ["Table II", "robot"] {
         let of: Vec<&Totals> = totals.iter().filter(|c| c.example == example).collect();
@@ -290,7 +314,7 @@ pub fn table2_no_problem(plane: &[(&'static str, Vec<f64>)]) -> Outcome {
     let mut listing = Vec::new();
     for (name, t) in plane {
         for (axis, z) in ["x", "y"].iter().zip(&table2) {
-            let Some(row) = measure(name, &exact(t), z) else {
+            let Some(row) = exact(t).and_then(|knots| measure(name, &knots, z)) else {
                 return Outcome::new(
                     "",
                     "mpfr:128/256",
