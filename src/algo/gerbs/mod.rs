@@ -240,17 +240,14 @@ pub trait Blend<T: Field> {
         self.falling(knots, at.interval, &at.t, order)
     }
 
-    /// Both 1 − F_j and F_j at a located parameter.
+    /// Both 1 − F_j and F_j at a located parameter. Kinds whose F_j is a quadrature
+    /// override it to compute F_j once for both.
     fn pair_located(
         &self,
         knots: &Knots<T>,
         at: &Located<T>,
         order: usize,
     ) -> (Taylor<T>, Taylor<T>) {
-        if self.sweeps() {
-            // A quadrature computes F_j once for both.
-            return self.pair(knots, at.interval, &at.t, order);
-        }
         (
             self.falling_located(knots, at, order),
             self.rising_located(knots, at, order),

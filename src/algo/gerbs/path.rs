@@ -575,15 +575,32 @@ impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
     pub fn series_located(&self, at: &Located<T>, order: usize) -> [Taylor<T>; 2] {
         let t = &at.t;
         let ctx = t.ctx();
-        let zero = Taylor::constant(T::zero_in(&ctx)).with_order(order);
-        let mut p = [zero.clone(), zero];
         let basis = basis_series_located(&self.knots, &self.blend, at, order);
         let var = Taylor::variable(t.clone(), order);
-        for (i, b) in basis.iter().enumerate() {
-            if b.c.iter().all(Field::is_zero) {
-                continue;
-            }
-            let c = self.local_series(i + 2, &var);
+        // B_k is basis[k − 2]; a basis function outside its support is the zero series.
+        let active = basis
+            .iter()
+            .enumerate()
+            .filter(|(_, b)| !b.c.iter().all(Field::is_zero))
+            .map(|(i, b)| (i + 2, b));
+        self.blend_local_curves(&var, order, &ctx, active)
+    }
+
+    /// Σ c_{k−1} B_k over the given (k, B_k), as series in t (`var`) to `order`.
+    fn blend_local_curves<'b>(
+        &self,
+        var: &Taylor<T>,
+        order: usize,
+        ctx: &T::Ctx,
+        basis: impl IntoIterator<Item = (usize, &'b Taylor<T>)>,
+    ) -> [Taylor<T>; 2]
+    where
+        T: 'b,
+    {
+        let zero = Taylor::constant(T::zero_in(ctx)).with_order(order);
+        let mut p = [zero.clone(), zero];
+        for (k, b) in basis {
+            let c = self.local_series(k, var);
             p[0] += &(c[0].clone() * b);
             p[1] += &(c[1].clone() * b);
         }
@@ -874,9 +891,7 @@ impl<B: Blend<Ball>> GerbsPath<Ball, B> {
                 return None;
             }
             let f = Taylor::integrate(&slope, rising.over(t), order + 2);
-            let [x, y] = self.series_from_rising(t, j, order + 1, f);
-            let (dx, dy) = (x.derivative_series(), y.derivative_series());
-            let speed = (dx.clone() * &dx + &(dy.clone() * &dy)).sqrt();
+            let speed = speed_series(self.series_from_rising(t, j, order + 1, f));
             speed.c.iter().all(Field::is_finite).then_some(speed)
         };
         let bound = |p: &Float, q: &Float| -> Option<Ball> {
@@ -948,18 +963,11 @@ impl<B: Blend<Ball>> GerbsPath<Ball, B> {
         let bits = t.ctx();
         let n = self.curves.len();
         let falling = Taylor::constant(Ball::one_in(&bits)).with_order(order) - &rising;
-        let zero = Taylor::constant(Ball::zero_in(&bits)).with_order(order);
-        let mut p = [zero.clone(), zero];
         let var = Taylor::variable(t.clone(), order);
-        for (k, basis) in [(j, falling), (j + 1, rising)] {
-            if !(2..=n + 1).contains(&k) {
-                continue;
-            }
-            let c = self.local_series(k, &var);
-            p[0] += &(c[0].clone() * &basis);
-            p[1] += &(c[1].clone() * &basis);
-        }
-        p
+        let active = [(j, &falling), (j + 1, &rising)]
+            .into_iter()
+            .filter(|(k, _)| (2..=n + 1).contains(k));
+        self.blend_local_curves(&var, order, &bits, active)
     }
 
     /// The proven length over knot interval j of a path whose F_j is in closed form.
@@ -973,9 +981,7 @@ impl<B: Blend<Ball>> GerbsPath<Ball, B> {
             return Ok(total);
         }
         let speed = |t: &Ball, order: usize| -> Option<Taylor<Ball>> {
-            let [x, y] = self.series_on(t, j, order + 1);
-            let (dx, dy) = (x.derivative_series(), y.derivative_series());
-            let speed = (dx.clone() * &dx + &(dy.clone() * &dy)).sqrt();
+            let speed = speed_series(self.series_on(t, j, order + 1));
             speed.c.iter().all(Field::is_finite).then_some(speed)
         };
         let mut cuts = vec![a.clone()];
@@ -991,6 +997,12 @@ impl<B: Blend<Ball>> GerbsPath<Ball, B> {
         }
         Ok(total)
     }
+}
+
+/// |p′| as a series, from p's series [x, y] (one order shorter).
+fn speed_series([x, y]: [Taylor<Ball>; 2]) -> Taylor<Ball> {
+    let (dx, dy) = (x.derivative_series(), y.derivative_series());
+    (dx.clone() * &dx + &(dy.clone() * &dy)).sqrt()
 }
 
 /// F_j along knot interval j of a blend whose F_j is a quadrature, in balls: the values

@@ -50,11 +50,7 @@ impl ProvenErbs {
             if !rough.is_finite() || size == 0.0 {
                 return rough;
             }
-            let tight = IntegralOptions {
-                tolerance: Some(size * (2f64).powi(6 - a.ctx().min(1000) as i32)),
-                ..options.clone()
-            };
-            proven_integral(erbs, knots, j, a, b, &tight)
+            proven_integral(erbs, knots, j, a, b, &absolute(&options, size, 6, a.ctx()))
         });
         Ok(ProvenErbs { erbs, options })
     }
@@ -62,6 +58,15 @@ impl ProvenErbs {
     /// ∫_lo^hi Ψ_j, proven (an unbounded ball when it cannot be enclosed).
     pub fn integral(&self, knots: &Knots<Ball>, j: usize, lo: &Ball, hi: &Ball) -> Ball {
         proven_integral(&self.erbs, knots, j, lo, hi, &self.options)
+    }
+}
+
+/// `options` with the absolute tolerance size · 2^(spare − bits): `spare` bits short of the
+/// working precision `bits`, relative to a known size.
+fn absolute(options: &IntegralOptions, size: f64, spare: i32, bits: u32) -> IntegralOptions {
+    IntegralOptions {
+        tolerance: Some(size * (2f64).powi(spare - bits.min(1000) as i32)),
+        ..options.clone()
     }
 }
 
@@ -138,8 +143,10 @@ fn piece_bound(
         .then(|| Ball::from_bounds(&lo, &hi).widen(hi.to_f64().abs() * 1e-15))
 }
 
-/// Bounds (lower, upper) of Ψ_j over [p, q] from bounds of its numerator and denominator
-/// there (see the module doc); `None` where the denominator is not proven positive.
+/// Bounds (lower, upper) of Ψ_j over the part of [p, q] inside interval j, from bounds of its
+/// numerator and denominator there (see the module doc); where the denominator is not proven
+/// positive (a piece reaching into a knot's ball) 0 ≤ Ψ ≤ 1. `None` only when a bound is not
+/// finite.
 fn kernel_range(
     erbs: &Erbs<Ball>,
     knots: &Knots<Ball>,
@@ -271,10 +278,7 @@ impl Blend<Ball> for ProvenErbs {
         // The working precision is the knots' (an exact point carries as many bits as its
         // binary expansion needs).
         let bits = knots.at(j).ctx();
-        let options = IntegralOptions {
-            tolerance: Some(s.mid().to_f64().abs() * (2f64).powi(8 - bits.min(1000) as i32)),
-            ..self.options.clone()
-        };
+        let options = absolute(&self.options, s.mid().to_f64().abs(), 8, bits);
         proven_integral(&self.erbs, knots, j, from, to, &options) / s
     }
 }
