@@ -273,15 +273,16 @@ pub fn bfbs_vs_erbs() -> (Outcome, Vec<PathPoint<f64>>, Vec<PathPoint<f64>>) {
 }
 
 /// The Dubins path through the waypoint poses (headings atan2(m_i)).
-pub fn dubins_legs() -> Vec<DubinsPath<f64>> {
+///
+/// # Errors
+/// A leg whose shortest word cannot be found, as text.
+pub fn dubins_legs() -> Result<Vec<DubinsPath<f64>>, String> {
     let w = super::setup::waypoints::<f64>(&());
     let tan = bfbs_path::<f64>(&(), ArcConvention::TurnDirection)
         .tangents()
         .clone();
     let headings: Vec<f64> = tan.m.iter().map(|m| m[1].atan2(m[0])).collect();
-    // Every leg of the paper's waypoints exists; a missing one would empty the list, which
-    // the Fig. 7 claim would show in its words.
-    through_poses(&w, &headings, &(RADIUS as f64)).unwrap_or_default()
+    through_poses(&w, &headings, &(RADIUS as f64)).map_err(|e| e.to_string())
 }
 
 /// Dense points of the Dubins legs.
@@ -299,7 +300,13 @@ pub fn dubins_points(legs: &[DubinsPath<f64>], step: f64) -> Vec<[f64; 2]> {
 
 /// Fig. 7: ERBS against Dubins.
 pub fn against_dubins(erbs: &[PathPoint<f64>]) -> (Outcome, Vec<DubinsPath<f64>>) {
-    let legs = dubins_legs();
+    let legs = match dubins_legs() {
+        Ok(legs) => legs,
+        Err(e) => {
+            let why = format!("the Dubins path through the poses could not be planned: {e}");
+            return (Outcome::new("", "f64", Verdict::Failed, why), Vec::new());
+        }
+    };
     let pts = dubins_points(&legs, 0.05);
     let deviation = erbs
         .iter()

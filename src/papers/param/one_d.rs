@@ -208,11 +208,10 @@ fn case_one() -> Outcome {
 
 /// Eq. 8 (θ′ = 0 inside) and Eq. 11 (jump zero) at the Table I minimizer, at two precisions.
 fn slope_and_jump(t_lo: &[Float], t_hi: &[Float]) -> [Outcome; 2] {
-    let measure = |t: &[Float], bits: u32| -> (f64, f64) {
+    let measure = |t: &[Float], bits: u32| -> Result<(f64, f64), String> {
         let z = table1_z::<Float>(&bits);
-        let Ok(s) = NaturalCubicSpline::new(t.to_vec(), z.clone()) else {
-            return (f64::NAN, f64::NAN);
-        };
+        let s = NaturalCubicSpline::new(t.to_vec(), z.clone())
+            .map_err(|e| format!("the spline at {bits} bits: {e}"))?;
         let n = t.len() - 1;
         let slope = (1..n)
             .map(|i| s.eval_all(&t[i])[1].clone().abs().to_f64())
@@ -231,10 +230,16 @@ fn slope_and_jump(t_lo: &[Float], t_hi: &[Float]) -> [Outcome; 2] {
         let jump = (1..n)
             .map(|i| ((term(i + 1) + term(i)).abs() / term(i).abs()).to_f64())
             .fold(0.0, f64::max);
-        (slope, jump)
+        Ok((slope, jump))
     };
-    let (s_lo, j_lo) = measure(t_lo, 128);
-    let (s_hi, j_hi) = measure(t_hi, 256);
+    let measured = measure(t_lo, 128).and_then(|lo| Ok((lo, measure(t_hi, 256)?)));
+    let ((s_lo, j_lo), (s_hi, j_hi)) = match measured {
+        Ok(m) => m,
+        Err(e) => {
+            let failed = || Outcome::new("", "mpfr:128/256", Verdict::Failed, e.clone());
+            return [failed(), failed()];
+        }
+    };
     let fmt = |x: f64| format_float_digits(&Float::with_val(53, x), 3);
     [
         Outcome::new(
