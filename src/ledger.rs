@@ -348,6 +348,17 @@ impl Outcome {
         }
     }
 
+    /// A check that could not compute a number it needs: the claim fails, with the error as
+    /// its evidence (never a default standing in for the number).
+    pub fn failed(scalar: impl Into<String>, error: impl std::fmt::Display) -> Self {
+        Outcome::new(
+            "",
+            scalar,
+            Verdict::Failed,
+            format!("the check could not compute its numbers: {error}"),
+        )
+    }
+
     /// The same outcome with another verdict (a policy clause applied after the check).
     pub fn with_verdict(mut self, verdict: Verdict) -> Self {
         self.verdict = verdict;

@@ -135,4 +135,22 @@ fn the_readme_states_the_current_coverage_and_verdict_counts() {
             paper.short
         );
     }
+    // The assurance sentence: "In the committed ledger N claims are exact, N proven by balls,
+    // N certified and N rest on …".
+    let count = |a: &str| claims.iter().filter(|c| c["assurance"] == a).count();
+    let sentence = format!(
+        "In the committed ledger {} claims are exact, {} proven by balls, {} certified and {} rest on",
+        count("exact"),
+        count("proven"),
+        count("certified"),
+        count("floating")
+    );
+    assert!(
+        readme
+            .split_whitespace()
+            .collect::<Vec<_>>()
+            .join(" ")
+            .contains(&sentence),
+        "README.md lacks the ledger's assurance counts: {sentence}"
+    );
 }

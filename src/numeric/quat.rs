@@ -254,6 +254,19 @@ pub enum QuadraticError {
     Zero,
 }
 
+impl std::fmt::Display for QuadraticError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            QuadraticError::Zero => write!(
+                f,
+                "a = 0 (|a| computed as zero): X ⋆ X = a has no solution with a frame"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for QuadraticError {}
+
 /// Lemma 2 (Eq. 6b): X_φ = √|a| (a/|a| + i)/|a/|a| + i| Q(φ), the solutions of X ⋆ X = a.
 ///
 /// When a is a negative multiple of i the formula divides by zero; the solutions are then

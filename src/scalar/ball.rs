@@ -773,6 +773,17 @@ impl Field for Ball {
     fn is_finite(&self) -> bool {
         self.mid.is_finite() && self.rad.is_finite()
     }
+    fn magnitude_bounds(&self) -> (f64, f64) {
+        let (lo, hi) = (self.lower(), self.upper());
+        let lower = if lo > 0 {
+            lo.to_f64_round(Round::Down)
+        } else if hi < 0 {
+            (-hi).to_f64_round(Round::Down)
+        } else {
+            0.0
+        };
+        (lower, self.abs_upper())
+    }
     fn to_f64(&self) -> f64 {
         self.mid.to_f64()
     }

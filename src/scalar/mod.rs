@@ -178,6 +178,14 @@ pub trait Field:
             self.clone()
         }
     }
+    /// Bounds (lower, upper) of |x| as doubles. For enclosures ([`ball::Ball`]) they hold
+    /// for every point of the ball (rounded outward: a proven residual bound |r| ≤ upper, a
+    /// proven separation |d| ≥ lower); for f64, MPFR and rationals both are |x| rounded to
+    /// the nearest double, which proves nothing about the rounding that produced x.
+    fn magnitude_bounds(&self) -> (f64, f64) {
+        let m = self.abs().to_f64();
+        (m, m)
+    }
     /// All the digits this value carries, uncertified: an exact fraction for rationals,
     /// the shortest round-trip decimal for f64, every significant digit of the precision for
     /// MPFR. Use [`certify`] for digits that two precisions agree on.

@@ -470,9 +470,8 @@ pub fn joint_jumps<T: Real>(
                     scale /= &h;
                 }
                 let jump = (dl[j].clone() - &dr[j]).abs() * &scale;
-                if jump > jumps[j] {
-                    jumps[j] = jump;
-                }
+                // An enclosure of the maximum in balls: no comparison to decide.
+                jumps[j] = jumps[j].max_with(&jump);
             }
         }
     }

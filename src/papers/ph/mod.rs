@@ -435,7 +435,10 @@ fn checks(ledger: &mut Ledger) -> Results {
             "Eq. (18) is the step of Algorithm 1 a reader implements",
         ),
     );
-    let (interp, ph) = theorems::algorithm1();
+    let (interp, ph) = theorems::algorithm1().unwrap_or_else(|e| {
+        let failed = Outcome::failed(format!("ball:{}", theorems::BITS), e);
+        (failed.clone(), failed)
+    });
     ledger.record("phodcos.alg1.interpolates", interp);
     ledger.record("phodcos.alg1.ph_condition", ph);
 
@@ -454,7 +457,7 @@ fn checks(ledger: &mut Ledger) -> Results {
     let loop_runs = algorithm2::runs();
     ledger.record("phodcos.alg2.loop", algorithm2::outcome(&loop_runs));
 
-    let (jumps, geo, length) = theorem_checks(ledger);
+    let (jumps, geo, length) = theorem_checks(ledger, &table1.proven);
     let (nrho, nrho_findings) = nrho_checks(ledger);
     Results {
         coefficients,
@@ -541,6 +544,7 @@ fn preliminary_checks(ledger: &mut Ledger) -> Vec<(&'static str, Outcome)> {
 /// Theorems 2–4, the continuity of Sec. 5E, Eq. (22b) and the geometry of Eq. (13).
 fn theorem_checks(
     ledger: &mut Ledger,
+    proven: &[proven::ProvenRow],
 ) -> (
     Vec<theorems::Jumps>,
     Vec<theorems::GeometryRow>,
@@ -564,14 +568,21 @@ fn theorem_checks(
         ),
     );
 
-    let jumps: Vec<theorems::Jumps> = [2usize, 8]
+    let jumps = [2usize, 8]
         .iter()
         .map(|&n| theorems::continuity(n))
-        .collect();
-    ledger.record(
-        "phodcos.sec5e.continuity",
-        theorems::continuity_outcome(&jumps),
-    );
+        .collect::<Result<Vec<_>, _>>();
+    let (jumps, continuity) = match jumps {
+        Ok(jumps) => {
+            let outcome = theorems::continuity_outcome(&jumps);
+            (jumps, outcome)
+        }
+        Err(e) => (
+            Vec::new(),
+            Outcome::failed(format!("ball:{}", theorems::BITS), e),
+        ),
+    };
+    ledger.record("phodcos.sec5e.continuity", continuity);
     ledger.record(
         "phodcos.eq22b.left_product",
         found(
@@ -597,7 +608,7 @@ fn theorem_checks(
         ),
     );
     ledger.record("phodcos.eq13b.formula", theorems::curvature_formula());
-    let (geo, length, geo_out) = theorems::geometry();
+    let (geo, length, geo_out) = theorems::geometry(proven);
     ledger.record("phodcos.eq13.geometry", geo_out);
 
     (jumps, geo, length)

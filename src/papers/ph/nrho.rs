@@ -164,7 +164,7 @@ pub fn compute() -> Nrho {
     pw.align_roll();
     let jumps_rotating = super::theorems::jumps_of(&pw)
         .iter()
-        .map(|v| v[..3].iter().cloned().fold(0.0, f64::max))
+        .map(|v| v[..3].iter().fold(0.0f64, |m, x| m.max(x.1)))
         .collect();
     Nrho {
         rotating,

@@ -11,7 +11,8 @@ use crate::algo::ph::hermite::{interpolate, FreeParameters};
 use crate::algo::ph::{bernstein_jet, frame_and_omega, PhCurve};
 use crate::numeric::linalg::{determinant, Matrix};
 use crate::numeric::quat::{solve_linear, solve_quadratic, vec3, Quat};
-use crate::scalar::{BigRational, Field, Float};
+use crate::scalar::ball::Ball;
+use crate::scalar::{BigRational, Field, Real};
 
 type Q = BigRational;
 
@@ -100,50 +101,61 @@ pub fn lemma1() -> Outcome {
     )
 }
 
-/// Lemma 2 (Eq. 6): X_φ solves X^{2⋆} = a for every φ, and every solution is an X_φ.
+/// Lemma 2 (Eq. 6): X_φ solves X^{2⋆} = a for every φ, and every solution is an X_φ; in
+/// balls, so the residuals are proven bounds.
 pub fn lemma2() -> Outcome {
     let mut rng = SplitMix64::new(0x1e42);
-    let tolerance = Float::with_val(BITS, 1e-70);
-    let (mut worst_residual, mut worst_form) = (Float::with_val(BITS, 0), Float::with_val(BITS, 0));
-    for _ in 0..20 {
+    let tolerance = 1e-60;
+    let ball = |v: f64| Ball::from_f64(v, &BITS);
+    let (mut worst_residual, mut worst_form) = (0.0f64, 0.0f64);
+    let mut unsolved = Vec::new();
+    for set in 0..20 {
         let x = Quat::from_components(
             quaternion(&mut rng)
                 .components()
-                .map(|c| Float::from_rational(&c, &BITS)),
+                .map(|c| Ball::from_rational(&c, &BITS)),
         );
         let a = x.star_square();
         let scale = vec3::norm(&a);
         for phi in [0.0, 0.3, 1.0, 2.5, 4.0] {
-            let Ok(sol) = solve_quadratic(&a, &Float::with_val(BITS, phi)) else {
-                continue;
-            };
-            let r = vec3::norm(&vec3::sub(&sol.star_square(), &a)) / &scale;
-            worst_residual = crate::scalar::max_of(worst_residual, r);
+            match solve_quadratic(&a, &ball(phi)) {
+                Ok(sol) => {
+                    let r = vec3::norm(&vec3::sub(&sol.star_square(), &a)) / &scale;
+                    worst_residual = worst_residual.max(r.magnitude_bounds().1);
+                }
+                Err(e) => unsolved.push(format!("set {set}, φ = {phi}: {e}")),
+            }
         }
         // Every solution: X = X₀Q(φ) iff X₀⁻¹X = cos φ + i sin φ, a unit with no j, k part.
-        if let Ok(x0) = solve_quadratic(&a, &Float::with_val(BITS, 0)) {
-            let y = x0
-                .conj()
-                .mul(&x)
-                .scale(&(Float::with_val(BITS, 1) / x0.norm2()));
-            let off =
-                (y.y.clone() * &y.y + &(y.z.clone() * &y.z)).sqrt() + &(y.norm2() - 1u32).abs();
-            worst_form = crate::scalar::max_of(worst_form, off);
+        match solve_quadratic(&a, &ball(0.0)) {
+            Ok(x0) => {
+                let one = ball(1.0);
+                let y = x0.conj().mul(&x).scale(&(one.clone() / &x0.norm2()));
+                let off =
+                    (y.y.clone() * &y.y + &(y.z.clone() * &y.z)).sqrt() + &(y.norm2() - &one).abs();
+                worst_form = worst_form.max(off.magnitude_bounds().1);
+            }
+            Err(e) => unsolved.push(format!("set {set}, φ = 0: {e}")),
         }
+    }
+    if !unsolved.is_empty() {
+        return Outcome::failed(
+            format!("ball:{BITS}"),
+            format!("Eq. (6b) had no solution for {}", unsolved.join("; ")),
+        );
     }
     let ok = worst_residual < tolerance && worst_form < tolerance;
     Outcome::new(
         format!(
-            "largest relative |X_φ^(2⋆) − a| = {:.1e} over 5 φ each; every random solution X is X₀Q(φ) to {:.1e}",
-            worst_residual.to_f64(),
-            worst_form.to_f64()
+            "largest relative |X_φ^(2⋆) − a| ≤ {worst_residual:.1e} over 5 φ each; every random solution X is X₀Q(φ) to {worst_form:.1e} (proven bounds)"
         ),
-        format!("mpfr:{BITS}"),
+        format!("ball:{BITS}"),
         Verdict::holds(ok),
-        "20 random rational X with a = X ⋆ X, at 256 bits: Eq. (6b) for φ = 0, 0.3, 1, 2.5, 4 solves X^(2⋆) = a; and X₀⁻¹X (X₀ = X_0 \
-         of Eq. 6b) has no j, k components and unit norm, i.e. X = X₀(cos φ + i sin φ) for some φ, so the family is every solution. \
-         Criterion 1e-70 (256 bits carry 77 digits). For a a negative multiple of i, |a/|a| + i| = 0 and Eq. (6b) is undefined, as \
-         the lemma's hypothesis says (the library then uses √|a| j Q(φ))",
+        "20 random rational X with a = X ⋆ X, in ball arithmetic at 256 bits (every figure an upper bound of its enclosure): Eq. (6b) \
+         for φ = 0, 0.3, 1, 2.5, 4 solves X^(2⋆) = a; and X₀⁻¹X (X₀ = X_0 of Eq. 6b) has no j, k components and unit norm, i.e. \
+         X = X₀(cos φ + i sin φ) for some φ, so the family is every solution. Criterion 1e-60 on the proven bounds. For a a \
+         negative multiple of i, |a/|a| + i| = 0 and Eq. (6b) is undefined, as the lemma's hypothesis says (the library then uses \
+         √|a| j Q(φ))",
     )
 }
 
@@ -297,45 +309,51 @@ pub fn eq11_12() -> Outcome {
 pub fn theta4_redundant() -> Outcome {
     let mut rng = SplitMix64::new(0x7434);
     let (mut worst_curve, mut worst_preimage) = (0.0f64, 0.0f64);
-    let mut failed = 0;
-    for _ in 0..10 {
-        let data = into::<Float>(&random_data(&mut rng), &BITS);
-        let free: FreeParameters<Float> = free_into(&random_free(&mut rng), &BITS);
-        let psi = Float::with_val(BITS, rng.int(-30, 30)) / 10u32;
+    for set in 0..10 {
+        let data = into::<Ball>(&random_data(&mut rng), &BITS);
+        let free: FreeParameters<Ball> = free_into(&random_free(&mut rng), &BITS);
+        let psi = Ball::from_ratio(rng.int(-30, 30), 10, &BITS);
         let mut with_theta4 = free.clone();
         with_theta4.theta_start += &psi;
         with_theta4.theta_mid += &psi;
         with_theta4.theta_end += &psi;
-        let (Ok(base), Ok(turned)) = (interpolate(&data, &free), interpolate(&data, &with_theta4))
-        else {
-            failed += 1;
-            continue;
+        let (base, turned) = match (interpolate(&data, &free), interpolate(&data, &with_theta4)) {
+            (Ok(base), Ok(turned)) => (base, turned),
+            (Err(e), _) | (_, Err(e)) => {
+                return Outcome::failed(
+                    format!("ball:{BITS}"),
+                    format!("Algorithm 1 on data set {set}: {e}"),
+                )
+            }
         };
+        let one = Ball::from_i64(1, &BITS);
         let scale = base
             .control_points()
             .iter()
-            .map(|p| vec3::norm(p).to_f64())
-            .fold(1.0, f64::max);
+            .fold(one, |m, p| m.max_with(&vec3::norm(p)));
         for (p, r) in base.control_points().iter().zip(turned.control_points()) {
-            worst_curve = worst_curve.max(vec3::norm(&vec3::sub(p, &r)).to_f64() / scale);
+            let relative = vec3::norm(&vec3::sub(p, &r)) / &scale;
+            worst_curve = worst_curve.max(relative.magnitude_bounds().1);
         }
         let rotation = crate::numeric::quat::q_phi(&psi);
         for (a, b) in base.preimage.iter().zip(&turned.preimage) {
             let diff = b.clone() - &a.mul(&rotation);
-            worst_preimage = worst_preimage.max((diff.norm2().sqrt() / b.norm2().sqrt()).to_f64());
+            let relative = diff.norm2().sqrt() / &b.norm2().sqrt();
+            worst_preimage = worst_preimage.max(relative.magnitude_bounds().1);
         }
     }
-    let ok = failed == 0 && worst_curve < 1e-70 && worst_preimage < 1e-70;
+    let ok = worst_curve < 1e-60 && worst_preimage < 1e-60;
     Outcome::new(
         format!(
-            "adding ψ to θ₀, θ₄, θ₈ leaves the curve unchanged (largest control-point difference {worst_curve:.1e}, relative) and turns \
-             the preimage to A_i Q(ψ) ({worst_preimage:.1e})"
+            "adding ψ to θ₀, θ₄, θ₈ leaves the curve unchanged (largest control-point difference ≤ {worst_curve:.1e}, relative) and \
+             turns the preimage to A_i Q(ψ) (≤ {worst_preimage:.1e}); proven bounds"
         ),
-        format!("mpfr:{BITS}"),
+        format!("ball:{BITS}"),
         Verdict::holds(ok),
-        "10 random C⁴ data sets with random φ, ψ ∈ [−3, 3], Algorithm 1 at 256 bits: every A_i ↦ A_i Q(ψ) leaves A i A* unchanged \
-         (Q(ψ) commutes with i), so the family has a one-dimensional fibre and each interpolant is reached with θ₄ = 0 (θ₀, θ₈ \
-         shifted by −θ₄, the τ unchanged). Criterion 1e-70",
+        "10 random C⁴ data sets with random φ, ψ ∈ [−3, 3], Algorithm 1 in ball arithmetic at 256 bits (the figures are upper \
+         bounds of the enclosures): every A_i ↦ A_i Q(ψ) leaves A i A* unchanged (Q(ψ) commutes with i), so the family has a \
+         one-dimensional fibre and each interpolant is reached with θ₄ = 0 (θ₀, θ₈ shifted by −θ₄, the τ unchanged). Criterion \
+         1e-60 on the proven bounds",
     )
 }
 

@@ -170,7 +170,8 @@ fn continuity(r: &Results) -> String {
             ("R", &j.corrected[1], &j.uncorrected[1]),
             ("ω", &j.corrected[2], &j.uncorrected[2]),
         ] {
-            let cells = |v: &Vec<f64>| v.iter().map(|x| fmt(*x, 2)).collect::<Vec<_>>().join(", ");
+            let cells =
+                |v: &Vec<(f64, f64)>| v.iter().map(|x| fmt(x.1, 2)).collect::<Vec<_>>().join(", ");
             rows.push(vec![
                 j.segments.to_string(),
                 name.into(),
@@ -186,7 +187,7 @@ fn continuity(r: &Results) -> String {
         "without correction",
     ];
     format!(
-        "## Sec. 5E, Fig. 2B: continuity at the joints\n\nLargest jump of the one-sided derivatives (global parameter) over all joints, 256 bits.\n\n{}\n![Fig. 2A]({})\n\n![Fig. 2B]({})\n\n",
+        "## Sec. 5E, Fig. 2B: continuity at the joints\n\nLargest jump of the one-sided derivatives (global parameter) over all joints: proven upper bounds from ball arithmetic at 256 bits.\n\n{}\n![Fig. 2A]({})\n\n![Fig. 2B]({})\n\n",
         table(&headers, &rows),
         figure_name("fig2a"),
         figure_name("fig2b")
@@ -195,19 +196,29 @@ fn continuity(r: &Results) -> String {
 
 fn geometry(r: &Results) -> String {
     let (geo, length) = &r.geometry;
-    let measured: Vec<Vec<f64>> = geo.iter().map(|g| vec![g.4, g.1, g.2, g.3]).collect();
+    let measured: Vec<Vec<f64>> = geo
+        .iter()
+        .map(|g| {
+            vec![
+                g.error.unwrap_or(f64::INFINITY),
+                g.length.1,
+                g.curvature.1,
+                g.torsion.1,
+            ]
+        })
+        .collect();
     let rows: Vec<Vec<String>> = geo
         .iter()
         .zip(number::columns(&measured, 3))
-        .map(|(g, cells)| [vec![g.0.to_string()], cells].concat())
+        .map(|(g, cells)| [vec![g.segments.to_string()], cells].concat())
         .collect();
     format!(
-        "## Eq. (13): arc length, curvature, torsion\n\nLength of Eq. (23) on [0, 1]: {}.\n\n{}\n",
+        "## Eq. (13): arc length, curvature, torsion\n\nLength of Eq. (23) on [0, 1]: {}. Every cell is a proven upper bound (ball arithmetic; E from Table 1's enclosure, ∞ where there is none); κ and τ at t = i/400.\n\n{}\n",
         length.map_or_else(
             || "not computed (see `phodcos.eq13.geometry`)".to_string(),
             |l| fmt(l, number::PROSE_DIGITS)
         ),
-        table(&["segments", "E", "|ΔL|", "max |Δκ|", "max |Δτ|"], &rows)
+        table(&["segments", "E ≤", "|ΔL| ≤", "max |Δκ| ≤", "max |Δτ| ≤"], &rows)
     )
 }
 
