@@ -27,7 +27,7 @@ use crate::curve::approx::SegmentDistance;
 use crate::curve::enclosure::{ErrorModels, Region};
 use crate::curve::Curve;
 use crate::numeric::quat::vec3;
-use crate::scalar::ball::carried;
+use crate::scalar::ball::{carried, Ball};
 use crate::scalar::{BigRational, Field, Float, Real};
 use rayon::prelude::*;
 use rug::float::Round;
@@ -99,6 +99,61 @@ pub fn grid_error<T: Real, C: Curve<T> + ?Sized>(curve: &C, pw: &PiecewisePh<T>,
     grid_distances(curve, pw, ts)
         .into_iter()
         .fold(zero, |m, d| if d > m { d } else { m })
+}
+
+/// The largest distance ‖γ(t) − p(t)‖ over the grid `ts`, proven: an enclosure (a ball) of
+/// the maximum, for a conversion `pw` computed in balls on the interval [a, b] given exactly
+/// as `interval`. Each t is located on its segment exactly, in rationals (s = (t − a)N/(b − a),
+/// segment k = ⌊s⌋, so a t on a joint belongs to the segment it starts, and t = b to the
+/// last one; a t outside [a, b] is clamped to the nearer end, as [`PiecewisePh::locate`]
+/// does), ξ = s − k is made a ball only then, and the distance is formed in ball arithmetic.
+/// The maximum is an enclosure of the largest distance ([`Field::max_with`]), so no
+/// comparison of balls is decided.
+///
+/// # Example
+/// ```
+/// use trajverify::algo::ph::grid::proven_grid_error;
+/// use trajverify::algo::ph::hermite::FreeParameters;
+/// use trajverify::algo::ph::piecewise::convert;
+/// use trajverify::curve::ExprCurve;
+/// use trajverify::scalar::ball::Ball;
+/// use trajverify::scalar::{BigRational, Field};
+///
+/// let curve = ExprCurve::parse("[t, t^2, sin(t)]").unwrap().compile::<Ball>(&128);
+/// let (a, b) = (Ball::zero_in(&128), Ball::one_in(&128));
+/// let pw = convert(&curve, &a, &b, 2, 4, &FreeParameters::zero(4, &128), false).unwrap();
+/// let ts: Vec<BigRational> = (0..=10).map(|i| BigRational::new(i.into(), 10.into())).collect();
+/// let zero = BigRational::from_integer(0.into());
+/// let one = BigRational::from_integer(1.into());
+/// let max = proven_grid_error(&curve, &pw, (&zero, &one), &ts);
+/// // A proven enclosure of the grid maximum: positive, and small for this smooth curve.
+/// assert!(max.lower() > 0 && max.upper() < 1e-2);
+/// ```
+pub fn proven_grid_error<C: Curve<Ball> + ?Sized>(
+    curve: &C,
+    pw: &PiecewisePh<Ball>,
+    (a, b): (&BigRational, &BigRational),
+    ts: &[BigRational],
+) -> Ball {
+    let bits = pw.step().ctx();
+    let count = pw.segments().len();
+    let n = BigRational::from_integer(count.into());
+    let last = BigRational::from_integer((count - 1).into());
+    let points: Vec<Located<Ball>> = ts
+        .iter()
+        .enumerate()
+        .map(|(i, t)| {
+            let s = ((t.clone() - a) * &n / (b.clone() - a))
+                .clamp(BigRational::from_integer(0.into()), n.clone());
+            let k = s.floor().min(last.clone());
+            let xi = Ball::from_rational(&(s - &k), &bits);
+            let k = usize::try_from(k.to_integer()).unwrap_or(count - 1);
+            (i, k, xi)
+        })
+        .collect();
+    distances_at(curve, pw, &points)
+        .into_iter()
+        .fold(Ball::zero_in(&bits), |m, (_, _, d)| m.max_with(&d))
 }
 
 /// What lets [`certified_grid_error`] and [`super::piecewise::certified_error`] skip grid

@@ -89,7 +89,7 @@ pub fn interval_text(e: &ErrorEnclosure) -> String {
 }
 
 /// log₂ of the ratio of two rows' errors, as a proven interval from their bounds.
-fn order_interval(coarse: &ErrorEnclosure, fine: &ErrorEnclosure) -> (f64, f64) {
+pub(super) fn order_interval(coarse: &ErrorEnclosure, fine: &ErrorEnclosure) -> (f64, f64) {
     let low = Float::with_val_round(64, &coarse.lower / &fine.upper, Round::Down).0;
     let high = Float::with_val_round(64, &coarse.upper / &fine.lower, Round::Up).0;
     // log₂ in MPFR rounded outward.
