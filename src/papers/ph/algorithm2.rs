@@ -6,11 +6,10 @@
 
 use super::super::{Outcome, Verdict};
 use super::proven::{interval_text, proven_at};
-use super::table1::{curve, paper_grid, BITS, HI_BITS, PAPER_GRID_PER_SEGMENT};
-use crate::algo::ph::hermite::FreeParameters;
-use crate::algo::ph::piecewise::certified_grid_error;
+use super::table1::{paper_grid, BallConversion, BITS, PAPER_GRID_PER_SEGMENT};
 use crate::curve::enclosure::ErrorEnclosure;
-use crate::scalar::{BigRational, Float};
+use crate::scalar::ball::Ball;
+use crate::scalar::Field;
 use rayon::prelude::*;
 
 /// The tolerances tried, declared before computing: three decades of Table 1's range.
@@ -34,59 +33,69 @@ pub struct LoopRun {
     pub returned: Option<ErrorEnclosure>,
 }
 
-/// The authors' grid error for `segments`, certified (its value at 2·bits).
-fn grid_error(segments: usize) -> Option<f64> {
-    let c = curve();
-    let (a, b) = (
-        BigRational::from_integer(0.into()),
-        BigRational::from_integer(1.into()),
-    );
-    certified_grid_error(
-        |bits| c.compile::<Float>(&bits),
-        (&a, &b),
-        segments,
-        4,
-        &FreeParameters::zero(4, &()),
-        &paper_grid(segments),
-        (BITS, HI_BITS),
-        None,
-    )
-    .ok()
-    .map(|(_, hi)| hi.to_f64())
+/// The authors' grid error for `segments`, proven: an enclosure of the largest distance over
+/// the grid, each point located exactly and evaluated in balls.
+fn grid_error(segments: usize) -> Result<Ball, String> {
+    BallConversion::new(segments).map(|c| c.grid_maximum(&paper_grid(segments)))
 }
 
-/// The grid errors from 2 segments up, in batches, until one is below every tolerance.
-fn grid_errors() -> Vec<(usize, f64)> {
+/// The proven grid errors from 2 segments up, in batches, until one is certainly below every
+/// tolerance.
+fn grid_errors() -> Result<Vec<(usize, Ball)>, String> {
     let smallest = TOLERANCES.iter().cloned().fold(f64::INFINITY, f64::min);
-    let mut found: Vec<(usize, f64)> = Vec::new();
+    let below = |e: &Ball| e.upper() < smallest;
+    let mut found: Vec<(usize, Ball)> = Vec::new();
     let mut next = 2;
-    while next <= MAX_SEGMENTS && found.last().is_none_or(|&(_, e)| e >= smallest) {
-        let batch: Vec<(usize, f64)> = (next..next + BATCH)
+    while next <= MAX_SEGMENTS && !found.last().is_some_and(|(_, e)| below(e)) {
+        let batch: Result<Vec<(usize, Ball)>, String> = (next..next + BATCH)
             .into_par_iter()
-            .filter_map(|n| grid_error(n).map(|e| (n, e)))
+            .map(|n| grid_error(n).map(|e| (n, e)))
             .collect();
         next += BATCH;
-        for (n, e) in batch {
-            if found.last().is_none_or(|&(_, last)| last >= smallest) {
+        for (n, e) in batch? {
+            if !found.last().is_some_and(|(_, last)| below(last)) {
                 found.push((n, e));
             }
         }
     }
-    found
+    Ok(found)
+}
+
+/// Steps 2–13 for one ε: the first n_s (from 2, by one) whose grid error e is below ε, every
+/// test e ≥ ε decided on the enclosure (an error when a ball contains ε).
+fn first_below(errors: &[(usize, Ball)], tolerance: f64) -> Result<(usize, &Ball), String> {
+    let eps = Ball::from_f64(tolerance, &BITS);
+    for (n, e) in errors {
+        match e.decide_lt(&eps) {
+            Some(true) => return Ok((*n, e)),
+            Some(false) => {}
+            None => {
+                return Err(format!(
+                "the grid error with {n} segments, {}, cannot be compared with ε = {tolerance:e}",
+                e.proven_digits().1
+            ))
+            }
+        }
+    }
+    Err(format!(
+        "no count up to {MAX_SEGMENTS} segments has a grid error below ε = {tolerance:e}"
+    ))
 }
 
 /// The printed loop for each tolerance, and the proven errors of what it returns.
-pub fn runs() -> Vec<LoopRun> {
-    let errors = grid_errors();
+///
+/// # Errors
+/// A grid error that cannot be computed, or a loop test that cannot be decided.
+pub fn runs() -> Result<Vec<LoopRun>, String> {
+    let errors = grid_errors()?;
     TOLERANCES
         .par_iter()
-        .filter_map(|&tolerance| {
-            // Steps 2–13: the first n_s (from 2, by one) whose e is below ε.
-            let &(segments, grid_error) = errors.iter().find(|&&(_, e)| e < tolerance)?;
-            Some(LoopRun {
+        .map(|&tolerance| {
+            let (segments, grid_error) = first_below(&errors, tolerance)?;
+            Ok(LoopRun {
                 tolerance,
                 segments,
-                grid_error,
+                grid_error: grid_error.mid().to_f64(),
                 returned: proven_at(segments, TARGET),
             })
         })
@@ -121,7 +130,7 @@ pub fn outcome(runs: &[LoopRun]) -> Outcome {
     let ok = all_ran && runs.iter().all(meets);
     Outcome::new(
         computed,
-        format!("mpfr:{BITS}, ball:256"),
+        format!("ball:{BITS} (grid), ball:{} (enclosures)", super::proven::BITS),
         if ok {
             Verdict::Reproduced
         } else if all_ran {
@@ -133,7 +142,7 @@ pub fn outcome(runs: &[LoopRun]) -> Outcome {
             "the test curve (23) on [0, 1]; Algorithm 2 as printed: e = ∞, n_s = 2; while e ≥ ε convert with n_s uniform segments \
              (Algorithm 1 with φ* = 0 on each), e ← the conversion error, n_s ← n_s + 1. The conversion error is measured as the \
              authors' code measures it, the largest distance over {PAPER_GRID_PER_SEGMENT}·n_s equally spaced ξ from 10⁻⁶ to 1 \
-             (certified at {BITS} and {HI_BITS} bits). Tolerances declared before computing: {TOLERANCES:?}. Criterion: the path \
+             (each point located exactly in rationals and evaluated in balls at {BITS} bits, and every loop test e ≥ ε decided on the enclosure). Tolerances declared before computing: {TOLERANCES:?}. Criterion: the path \
              returned meets Eq. (2), E < ε, with E the true maximum enclosed by branch and bound in balls (256-bit midpoints). \
              That n_s is the smallest count meeting ε, as the text says, holds by construction (every smaller count had a grid \
              error ≥ ε, and a grid maximum is at most the true one), so it is not a test. The loop never tries \

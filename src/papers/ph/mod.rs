@@ -454,8 +454,17 @@ fn checks(ledger: &mut Ledger) -> Results {
         ),
     );
     ledger.record("phodcos.thm1.all_tau", theorem1::all_tau());
-    let loop_runs = algorithm2::runs();
-    ledger.record("phodcos.alg2.loop", algorithm2::outcome(&loop_runs));
+    let loop_runs = match algorithm2::runs() {
+        Ok(runs) => {
+            ledger.record("phodcos.alg2.loop", algorithm2::outcome(&runs));
+            runs
+        }
+        Err(e) => {
+            let scalar = format!("ball:{}", table1::BITS);
+            ledger.record("phodcos.alg2.loop", Outcome::failed(scalar, e));
+            Vec::new()
+        }
+    };
 
     let (jumps, geo, length) = theorem_checks(ledger, &table1.proven);
     let (nrho, nrho_findings) = nrho_checks(ledger);

@@ -8,7 +8,7 @@ use crate::algo::ph::hermite::FreeParameters;
 use crate::algo::ph::piecewise::convert;
 use crate::curve::enclosure::{ErrorEnclosure, ErrorModels};
 use crate::scalar::ball::Ball;
-use crate::scalar::{Field, Float};
+use crate::scalar::{BigRational, Field, Float};
 use rug::float::Round;
 
 /// Midpoint precision of the balls.
@@ -58,6 +58,39 @@ pub fn proven_rows_with<R>(
 /// searched to relative width `target` (`None` if the conversion in balls failed).
 pub fn proven_at(segments: usize, target: f64) -> Option<ErrorEnclosure> {
     proven_with(segments, target, |_, _| ()).map(|(e, ())| e)
+}
+
+/// The proven enclosure of the test curve's conversion error with `segments` C⁴ segments and
+/// the free parameters `free` (given exactly), searched to relative width `target`.
+///
+/// # Errors
+/// The conversion's error when it fails in balls.
+pub fn proven_error_with(
+    segments: usize,
+    target: f64,
+    free: &FreeParameters<BigRational>,
+) -> Result<ErrorEnclosure, String> {
+    let c = curve().compile::<Ball>(&BITS);
+    let (a, b) = (Ball::from_i64(0, &BITS), Ball::from_i64(1, &BITS));
+    let free = free.map(|x| Ball::from_rational(x, &BITS));
+    let pw = convert(&c, &a, &b, segments, 4, &free, false).map_err(|e| {
+        format!("the test curve's conversion into {segments} segments in balls: {e}")
+    })?;
+    let models = ErrorModels::build(&c, &pw, target, None);
+    Ok(models.enclose(target, MAX_BOXES, None))
+}
+
+/// The observed order log₂(E_coarse/E_fine)/levels between two rows `levels` halvings
+/// apart, as a proven interval.
+pub fn mean_order(coarse: &ErrorEnclosure, fine: &ErrorEnclosure, levels: u32) -> (f64, f64) {
+    let (lo, hi) = order_interval(coarse, fine);
+    // The division rounded outward.
+    let divide = |x: f64, round: Round| {
+        Float::with_val_round(64, Float::with_val(64, x) / levels, round)
+            .0
+            .to_f64_round(round)
+    };
+    (divide(lo, Round::Down), divide(hi, Round::Up))
 }
 
 /// [`proven_at`], and what `then` computes from the Taylor models of the error and the
