@@ -99,6 +99,19 @@ impl<T: Field> PhCurve<T> {
         }
         Ok(PhCurve { preimage, start })
     }
+    /// The same curve with every coefficient mapped by `f`: e.g. a curve computed in f64 as
+    /// exact balls (`|x| Ball::from_f64(*x, &bits)`), to bound its own error in ball
+    /// arithmetic.
+    pub fn map<U: Field>(&self, f: impl Fn(&T) -> U) -> PhCurve<U> {
+        PhCurve {
+            preimage: self
+                .preimage
+                .iter()
+                .map(|q| Quat::from_components(q.components().each_ref().map(&f)))
+                .collect(),
+            start: self.start.each_ref().map(&f),
+        }
+    }
     /// n, the degree of the preimage.
     pub fn preimage_degree(&self) -> usize {
         self.preimage.len() - 1

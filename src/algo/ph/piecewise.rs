@@ -56,6 +56,14 @@ impl<T: Real> PiecewisePh<T> {
     pub fn segments(&self) -> &[PhCurve<T>] {
         &self.segments
     }
+    /// The same conversion with every number mapped by `f` ([`PhCurve::map`]).
+    pub fn map<U: Real>(&self, f: impl Fn(&T) -> U) -> PiecewisePh<U> {
+        PiecewisePh {
+            a: f(&self.a),
+            b: f(&self.b),
+            segments: self.segments.iter().map(|s| s.map(&f)).collect(),
+        }
+    }
     /// Apply the roll correction of Eq. (22) ([`align_roll`]) to every joint.
     pub fn align_roll(&mut self) {
         align_roll(&mut self.segments);

@@ -5,7 +5,7 @@
 use super::super::{Outcome, Verdict};
 use super::table1::{curve, Row};
 use crate::algo::ph::hermite::FreeParameters;
-use crate::algo::ph::piecewise::convert;
+use crate::algo::ph::piecewise::{convert, PiecewisePh};
 use crate::curve::enclosure::{ErrorEnclosure, ErrorModels};
 use crate::scalar::ball::Ball;
 use crate::scalar::{BigRational, Field, Float};
@@ -78,6 +78,13 @@ pub fn proven_error_with(
     })?;
     let models = ErrorModels::build(&c, &pw, target, None);
     Ok(models.enclose(target, MAX_BOXES, None))
+}
+
+/// The proven enclosure of the test curve's error against a conversion `pw` given in balls
+/// (e.g. one computed in f64, taken exactly), searched to relative width `target`.
+pub fn proven_error_of(pw: &PiecewisePh<Ball>, target: f64) -> ErrorEnclosure {
+    let c = curve().compile::<Ball>(&BITS);
+    ErrorModels::build(&c, pw, target, None).enclose(target, MAX_BOXES, None)
 }
 
 /// The observed order log₂(E_coarse/E_fine)/levels between two rows `levels` halvings

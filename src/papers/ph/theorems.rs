@@ -113,15 +113,7 @@ fn residuals<T: Real>(data: &HermiteData<T>, curve: &PhCurve<T>) -> (f64, f64) {
 /// A curve computed in f64 as balls: every double is an exact ball, so residuals formed from
 /// it in balls are proven bounds on the f64 result's own residuals.
 fn f64_curve_in_balls(c: &PhCurve<f64>) -> PhCurve<Ball> {
-    let ball = |x: &f64| Ball::from_f64(*x, &BITS);
-    PhCurve {
-        preimage: c
-            .preimage
-            .iter()
-            .map(|q| Quat::from_components(q.components().each_ref().map(ball)))
-            .collect(),
-        start: c.start.each_ref().map(ball),
-    }
+    c.map(|x| Ball::from_f64(*x, &BITS))
 }
 
 /// Algorithm 1 on 40 random data sets with random φ, in f64 and in balls at 256 bits; the
