@@ -800,8 +800,15 @@ fn fmt_list(v: &[f64]) -> String {
 
 /// Where the f64 pipeline stops converging: the first level from 32 segments on whose f64
 /// error exceeds twice the certified one, and the smallest f64 error reached.
-pub fn f64_floor(rows: &[Row], column: &[(usize, f64)], proven: &[super::proven::ProvenRow]) -> Outcome {
-    let scalar = format!("ball:{} (the f64 pipeline's own measure shown)", super::proven::BITS);
+pub fn f64_floor(
+    rows: &[Row],
+    column: &[(usize, f64)],
+    proven: &[super::proven::ProvenRow],
+) -> Outcome {
+    let scalar = format!(
+        "ball:{} (the f64 pipeline's own measure shown)",
+        super::proven::BITS
+    );
     // The screen: the first level from 32 segments where the f64 pipeline's own measure is
     // more than twice the certified error. The proof is then at that level.
     let stop = rows
@@ -819,12 +826,31 @@ pub fn f64_floor(rows: &[Row], column: &[(usize, f64)], proven: &[super::proven:
         );
     };
     let Some(exact) = exact.enclosure.as_ref() else {
-        return Outcome::failed(scalar, format!("no proven enclosure of the exact error with {} segments", row.segments));
+        return Outcome::failed(
+            scalar,
+            format!(
+                "no proven enclosure of the exact error with {} segments",
+                row.segments
+            ),
+        );
     };
     let c = curve().compile::<f64>(&());
-    let pw = match convert(&c, &0.0, &1.0, row.segments, 4, &FreeParameters::zero(4, &()), false) {
+    let pw = match convert(
+        &c,
+        &0.0,
+        &1.0,
+        row.segments,
+        4,
+        &FreeParameters::zero(4, &()),
+        false,
+    ) {
         Ok(pw) => pw,
-        Err(e) => return Outcome::failed(scalar, format!("the f64 conversion into {} segments: {e}", row.segments)),
+        Err(e) => {
+            return Outcome::failed(
+                scalar,
+                format!("the f64 conversion into {} segments: {e}", row.segments),
+            )
+        }
     };
     let bits = super::proven::BITS;
     let in_balls = pw.map(|x| Ball::from_f64(*x, &bits));
