@@ -3,12 +3,14 @@
 use super::super::{Ledger, Outcome, Verdict};
 use super::data::{TABLE2, TABLE3};
 use super::num;
-use super::one_d::{compare_with_printed, ColumnComparison};
+use super::one_d::compare_balls_with_printed;
 use crate::algo::param::descent::{descend, polish};
 use crate::algo::param::natural::NaturalCubicSpline;
 use crate::algo::param::objective::{
     chord_length_spacing, knots_from_spacing, objective, Objective,
 };
+use crate::algo::param::proven::{prove_minimum, ProvenMinimum};
+use crate::scalar::ball::Ball;
 use crate::scalar::certify::{certify, Certified};
 use crate::scalar::{BigRational, Field, Float};
 
@@ -40,6 +42,9 @@ pub struct Column {
     pub converged: bool,
     /// The iterate closest to the printed column: (number, largest difference).
     pub closest: Option<(usize, f64)>,
+    /// The minimizer proven by Krawczyk's test near the 256-bit one (knots and G enclosed),
+    /// or why it was not proven.
+    pub proven: Result<ProvenMinimum, String>,
 }
 
 fn printed(col: usize) -> Vec<&'static str> {
@@ -70,17 +75,29 @@ fn minimize(form: Objective, col: usize, name: &'static str) -> Option<Column> {
     let rough = descend(h0, &z64, &alpha, form, &mut observe).ok()?;
     let polish = |bits: u32| -> Option<Vec<Float>> {
         let z = components::<Float>(&bits);
-        let h = polish(
+        polish(
             &rough,
             &z,
             &[Float::with_val(bits, 1), Float::with_val(bits, 1)],
             form,
         )
-        .ok()?;
-        Some(knots_from_spacing(&h, &bits))
+        .ok()
     };
-    let (lo, hi) = (polish(128)?, polish(256)?);
+    let (h_lo, h_hi) = (polish(128)?, polish(256)?);
+    let ball_one = Ball::one_in(&256);
+    let proven = prove_minimum(
+        &h_hi,
+        &components::<Ball>(&256),
+        &[ball_one.clone(), ball_one],
+        form,
+    )
+    .map_err(|e| format!("{name}: {e}"));
+    let (lo, hi) = (
+        knots_from_spacing(&h_lo, &128),
+        knots_from_spacing(&h_hi, &256),
+    );
     Some(Column {
+        proven,
         name,
         knots: lo.iter().zip(&hi).map(|(a, b)| certify(a, b)).collect(),
         exact: hi,
@@ -88,10 +105,6 @@ fn minimize(form: Objective, col: usize, name: &'static str) -> Option<Column> {
         converged: rough.converged,
         closest,
     })
-}
-
-fn compare(column: &[Float], col: usize) -> ColumnComparison {
-    compare_with_printed(column, &printed(col))
 }
 
 use crate::report::number::sig as fmt;
@@ -156,30 +169,24 @@ pub fn section(ledger: &mut Ledger) -> PlaneSection {
     }
 }
 
-/// Table III, t^C1: chord length certified at 128 and 256 bits; returns the 256-bit knots.
+/// Table III, t^C1: chord length in balls at 256 bits, compared entry by entry with every
+/// point of each enclosure; returns the enclosures' midpoints.
 fn chord_claim(ledger: &mut Ledger) -> Vec<Float> {
-    let cl =
-        |bits: u32| knots_from_spacing(&chord_length_spacing(&components::<Float>(&bits)), &bits);
-    let (cl_lo, cl_hi) = (cl(128), cl(256));
-    let chord_digits = cl_lo
-        .iter()
-        .zip(&cl_hi)
-        .map(|(a, b)| certify(a, b).digits)
-        .min()
-        .unwrap_or(0);
-    let cmp_agree = compare(&cl_hi, 0);
-    let (agree, dev) = (cmp_agree.agree, cmp_agree.largest);
-    ledger.record(
-        "marin.table3.chord",
-        Outcome::new(
-            format!("{agree} of 20 entries agree to the 4 printed decimals, the others within {:.2} units of the last decimal (largest difference {}; ≥ {chord_digits} certified digits)", cmp_agree.largest_units, fmt(dev, 2)),
-            "mpfr:128/256",
-            cmp_agree.verdict(),
-            "Eq. 5 with Euclidean distances between consecutive Table II points, at 128 and 256 bits; each printed value compared within half a \
-             unit of its last decimal",
+    let bits = 256;
+    let knots = knots_from_spacing(&chord_length_spacing(&components::<Ball>(&bits)), &bits);
+    let widest = knots.iter().map(Ball::rad).fold(0.0, f64::max);
+    let outcome = match compare_balls_with_printed(&knots, &printed(0)) {
+        Ok(c) => Outcome::new(
+            format!("{} of 20 entries agree to the 4 printed decimals, the others within {:.2} units of the last decimal (largest difference {}; enclosures at most {widest:.0e} wide)", c.agree, c.largest_units, fmt(c.largest, 2)),
+            format!("ball:{bits}"),
+            c.verdict(),
+            "Eq. 5 with Euclidean distances between consecutive Table II points, in ball arithmetic at 256 bits; each printed value \
+             compared within half a unit of its last decimal with every point of its knot's enclosure",
         ),
-    );
-    cl_hi
+        Err(e) => Outcome::failed(format!("ball:{bits}"), e),
+    };
+    ledger.record("marin.table3.chord", outcome);
+    knots.iter().map(|k| k.mid().clone()).collect()
 }
 
 /// How much larger the objective is on the printed knots than at the certified minimizer: G
@@ -194,28 +201,16 @@ fn objective_excess(k: &Column, col: usize, form: Objective) -> String {
         &[one.clone(), one],
         form,
     );
-    let min_spacing: Vec<Float> = k
-        .exact
-        .windows(2)
-        .map(|w| Float::with_val(256, &w[1] - &w[0]))
-        .collect();
-    let unit = Float::with_val(256, 1);
-    let min_g = objective(
-        &min_spacing,
-        &components::<Float>(&256),
-        &[unit.clone(), unit],
-        form,
-    );
-    match (printed_g, min_g) {
+    match (printed_g, &k.proven) {
         (Ok(p), Ok(m)) => {
-            let p = Float::with_val(256, crate::scalar::mpfr_rational(&p));
-            let excess = Float::with_val(256, &p - &m) / &m;
+            let p = Ball::from_rational(&p, &256);
+            let excess = (p.clone() - &m.objective) / &m.objective;
             format!(
-                " The objective on the printed knots (exact) exceeds its minimum by {} relative (G = {} against {}): the printed \
-                 column is a near-minimizer, as from a loose stopping tolerance.",
-                fmt(excess.to_f64(), 2),
-                fmt(p.to_f64(), 8),
-                fmt(m.to_f64(), 8)
+                " The objective on the printed knots (exact) exceeds its proven minimum by {} relative (G = {} against {}): the \
+                 printed column is a near-minimizer, as from a loose stopping tolerance.",
+                fmt(excess.mid().to_f64(), 2),
+                fmt(p.mid().to_f64(), 8),
+                fmt(m.objective.mid().to_f64(), 8)
             )
         }
         _ => String::new(),
@@ -224,12 +219,21 @@ fn objective_excess(k: &Column, col: usize, form: Objective) -> String {
 
 /// Table III, t^EX or t^AP (printed column `col`) against the certified minimizer.
 fn minimizer_outcome(column: Option<&Column>, col: usize) -> Outcome {
+    let scalar = "ball:256 (Newton at 128/256 bits shown)";
     let Some(k) = column else {
-        return Outcome::new("", "mpfr", Verdict::Failed, "the minimization failed");
+        return Outcome::failed(scalar, "the minimization failed");
     };
-    let cmp_agree = compare(&k.exact, col);
+    let proven = match &k.proven {
+        Ok(p) => p,
+        Err(e) => return Outcome::failed(scalar, e),
+    };
+    let cmp_agree = match compare_balls_with_printed(&proven.knots, &printed(col)) {
+        Ok(c) => c,
+        Err(e) => return Outcome::failed(scalar, e),
+    };
     let (agree, dev) = (cmp_agree.agree, cmp_agree.largest);
     let min_digits = k.knots.iter().map(|c| c.digits).min().unwrap_or(0);
+    let widest = proven.knots.iter().map(Ball::rad).fold(0.0, f64::max);
     let closest = match k.closest {
         None => "no iterate was recorded".to_string(),
         Some((i, d)) if i == k.iterations => format!(
@@ -243,14 +247,17 @@ fn minimizer_outcome(column: Option<&Column>, col: usize) -> Outcome {
         ),
     };
     Outcome::new(
-        format!("{agree} of 20 entries agree to the 4 printed decimals, the others within {:.2} units of the last decimal; largest difference {} from the certified minimizer", cmp_agree.largest_units, fmt(dev, 2)),
-        "mpfr:128/256",
+        format!("{agree} of 20 entries agree to the 4 printed decimals, the others within {:.2} units of the last decimal; largest difference {} from the proven minimizer", cmp_agree.largest_units, fmt(dev, 2)),
+        scalar,
         cmp_agree.verdict(),
         format!(
             "{}: gradient projection from chord length ({} iterations, relative tolerance 1e-6 {}), then Newton's method at 128 and 256 \
-             bits: a stationary point with ≥ {min_digits} certified digits per knot. Each printed value compared with it within half a \
-             unit of its last decimal: the printed values are not the converged minimizer of the stated objective, by more than \
-             rounding. Following the gradient-projection iterates from chord length (exact line search): {closest}.",
+             bits (≥ {min_digits} digits agree per knot); Krawczyk's test in balls at 256 bits then proves exactly one stationary point of \
+             G on the simplex in a box around it, with the reduced Hessian proven positive definite over the box (a strict local \
+             minimum; `algo::param::proven`), every knot enclosed to {widest:.0e}. Each printed value compared with every point of its \
+             knot's enclosure within half a unit of its last decimal: the printed values are not the minimizer of the stated \
+             objective, by more than rounding. Following the gradient-projection iterates from chord length (exact line search): \
+             {closest}.",
             k.name,
             k.iterations,
             if k.converged { "met" } else { "not met" }
