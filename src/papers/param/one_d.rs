@@ -51,30 +51,6 @@ impl ColumnComparison {
     }
 }
 
-/// `column` against the printed `printed`, entry by entry.
-pub(crate) fn compare_with_printed(column: &[Float], printed: &[&str]) -> ColumnComparison {
-    let agree = column
-        .iter()
-        .zip(printed)
-        .filter(|(x, s)| rounds_to(x, s))
-        .count();
-    let largest = column
-        .iter()
-        .zip(printed)
-        .map(|(x, s)| (x.to_f64() - num(s).to_f64()).abs())
-        .fold(0.0, f64::max);
-    let largest_units = column
-        .iter()
-        .zip(printed)
-        .map(|(x, s)| printed_units(x, s))
-        .fold(0.0, f64::max);
-    ColumnComparison {
-        agree,
-        largest,
-        largest_units,
-    }
-}
-
 /// `column`, proven enclosures, against the printed `printed`: an entry agrees when both ends
 /// of its ball round to the print (the set of such x is an interval, so then every point
 /// does); its difference is the farther end's. An error names the first entry whose ball

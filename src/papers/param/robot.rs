@@ -3,10 +3,12 @@
 use super::super::{Ledger, Outcome, Verdict};
 use super::data::{ROBOT_ALPHA, TABLE4, TABLE5, TABLE6, TABLE7};
 use super::num;
-use super::one_d::{compare_with_printed, ColumnComparison};
+use super::one_d::compare_balls_with_printed;
 use crate::algo::param::descent::{descend, polish};
 use crate::algo::param::natural::NaturalCubicSpline;
 use crate::algo::param::objective::{chord_length_spacing, knots_from_spacing, Objective};
+use crate::algo::param::proven::prove_minimum;
+use crate::scalar::ball::Ball;
 use crate::scalar::{Field, Float, Real};
 
 /// Rows of a transcribed table as points in `T`.
@@ -30,9 +32,32 @@ fn printed(col: usize) -> Vec<&'static str> {
 
 use crate::report::number::sig as fmt;
 
-/// Compare a certified column with a printed one: (agreeing entries, largest difference).
-fn compare(column: &[Float], col: usize) -> ColumnComparison {
-    compare_with_printed(column, &printed(col))
+/// A column of proven knots against printed column `col`, as the claim's reproduced text and
+/// verdict (an entry whose enclosure straddles half a unit is an error).
+fn compare(column: &[Ball], col: usize) -> Result<(String, Verdict), String> {
+    let c = compare_balls_with_printed(column, &printed(col))?;
+    Ok((
+        format!(
+            "{} of 21 entries agree to the 4 printed decimals, the others within {:.2} units of the last decimal (largest difference {})",
+            c.agree,
+            c.largest_units,
+            fmt(c.largest, 2)
+        ),
+        c.verdict(),
+    ))
+}
+
+/// The outcome of a proven column compared with the print, or the failure.
+fn compared(column: &[Ball], col: usize, evidence: String) -> Outcome {
+    match compare(column, col) {
+        Ok((text, verdict)) => Outcome::new(text, "ball:256", verdict, evidence),
+        Err(e) => Outcome::failed("ball:256", e),
+    }
+}
+
+/// The midpoints of proven knots (for the figures and Table VII, which use the knots in f64).
+fn mids(knots: &[Ball]) -> Vec<Float> {
+    knots.iter().map(|k| k.mid().clone()).collect()
 }
 
 /// max |θ_j''| on [0, 1] for each axis (θ'' is piecewise linear: the maximum is at a knot).
@@ -89,19 +114,18 @@ pub const NAMES: [&str; 3] = ["t^CL", "t^WC", "t^AP"];
 /// Tables VI and VII into the ledger.
 pub fn section(ledger: &mut Ledger) -> RobotSection {
     let th256 = points::<Float, 6>(&TABLE4, &256);
-    let chord = chord(&th256);
-    let cmp_agree = compare(&chord, 0);
-    let (agree, dev) = (cmp_agree.agree, cmp_agree.largest);
+    let chord_balls = chord(&points::<Ball, 6>(&TABLE4, &256));
     ledger.record(
         "marin.table6.chord_6d",
-        Outcome::new(
-            format!("{agree} of 21 entries agree to the 4 printed decimals, the others within {:.2} units of the last decimal (largest difference {})", cmp_agree.largest_units, fmt(dev, 2)),
-            "mpfr:256",
-            cmp_agree.verdict(),
-            "Eq. 5 with Euclidean distances between consecutive 6-D joint vectors of Table IV; each printed value compared within half a \
-             unit of its last decimal",
+        compared(
+            &chord_balls,
+            0,
+            "Eq. 5 with Euclidean distances between consecutive 6-D joint vectors of Table IV, in ball arithmetic at 256 bits; each \
+             printed value compared with every point of its knot's enclosure within half a unit of its last decimal"
+                .into(),
         ),
     );
+    let chord = mids(&chord_balls);
     let work_centre = work_centre_claim(ledger);
     let approx = approx_claim(ledger, &chord, &th256);
     let printed_t = |c: usize| -> Vec<f64> { printed(c).iter().map(|s| num(s).to_f64()).collect() };
@@ -148,9 +172,7 @@ pub fn section(ledger: &mut Ledger) -> RobotSection {
 
 /// Table VI, t^WC, and what the printed column is consistent with.
 fn work_centre_claim(ledger: &mut Ledger) -> Vec<Float> {
-    let wc = chord(&points::<Float, 3>(&TABLE5, &256));
-    let cmp_agree_wc = compare(&wc, 1);
-    let (agree_wc, dev_wc) = (cmp_agree_wc.agree, cmp_agree_wc.largest);
+    let wc = chord(&points::<Ball, 3>(&TABLE5, &256));
     let p_wc: Vec<f64> = printed(1).iter().map(|s| num(s).to_f64()).collect();
     let pts: Vec<Vec<f64>> = points::<f64, 3>(&TABLE5, &());
     let seg: Vec<f64> = (1..21)
@@ -181,12 +203,13 @@ fn work_centre_claim(ledger: &mut Ledger) -> Vec<Float> {
     let (rmin, rmax) = others.fold((f64::INFINITY, 0.0f64), |(a, b), r| (a.min(r), b.max(r)));
     ledger.record(
         "marin.table6.chord_wc",
-        Outcome::new(
-            format!("{agree_wc} of 21 entries agree to the 4 printed decimals, the others within {:.2} units of the last decimal (largest difference {})", cmp_agree_wc.largest_units, fmt(dev_wc, 2)),
-            "mpfr:256",
-            cmp_agree_wc.verdict(),
+        compared(
+            &wc,
+            1,
             format!(
-                "Eq. 5 with Euclidean distances between consecutive Table V work-centre positions. What the printed column is consistent with: \
+                "Eq. 5 with Euclidean distances between consecutive Table V work-centre positions, in ball arithmetic at 256 bits; each \
+                 printed value compared with every point of its knot's enclosure within half a unit of its last decimal. What the printed \
+                 column is consistent with (an explanation in f64, not the verdict's basis): \
                  for every segment not touching point 3 the ratio of its Table V length to the printed Δt is the same ({}…{}, the spread of \
                  4-decimal rounding), but the segments 2→3 and 3→4 imply lengths {} and {} where Table V gives {} and {}: the printed t^WC was \
                  computed with a different position of point 3 than Table V prints (no change of a single coordinate of point 3 reconciles \
@@ -200,7 +223,7 @@ fn work_centre_claim(ledger: &mut Ledger) -> Vec<Float> {
             ),
         ),
     );
-    wc
+    mids(&wc)
 }
 
 /// Table VI, t^AP: Eq. 34 with α = (1, 1, 2, 6, 6, 6), gradient projection from t^CL then
@@ -232,29 +255,51 @@ fn approx_claim(ledger: &mut Ledger, cl: &[Float], th256: &[Vec<Float>]) -> Vec<
                 .collect();
             polish(&rough, &z, &a, Objective::Approximate)
                 .ok()
-                .map(|h| (knots_from_spacing(&h, &bits), rough.iterations))
+                .map(|h| (h, rough.iterations))
         });
-    let Some((t, iterations)) = ap else {
+    let Some((h, iterations)) = ap else {
         ledger.record(
             "marin.table6.approx",
-            Outcome::new("", "mpfr", Verdict::Failed, "the minimization failed"),
+            Outcome::failed("ball:256", "the minimization failed"),
         );
         return Vec::new();
     };
-    let cmp_agree = compare(&t, 2);
-    let (agree, dev) = (cmp_agree.agree, cmp_agree.largest);
+    let bits = 256;
+    let zb: Vec<Vec<Ball>> = (0..6)
+        .map(|j| {
+            points::<Ball, 6>(&TABLE4, &bits)
+                .iter()
+                .map(|r| r[j].clone())
+                .collect()
+        })
+        .collect();
+    let ab: Vec<Ball> = ROBOT_ALPHA
+        .iter()
+        .map(|&v| Ball::from_i64(v as i64, &bits))
+        .collect();
+    let proven = match prove_minimum(&h, &zb, &ab, Objective::Approximate) {
+        Ok(p) => p,
+        Err(e) => {
+            ledger.record("marin.table6.approx", Outcome::failed("ball:256", e));
+            return Vec::new();
+        }
+    };
+    let widest = proven.knots.iter().map(Ball::rad).fold(0.0, f64::max);
     ledger.record(
         "marin.table6.approx",
-        Outcome::new(
-            format!("{agree} of 21 entries agree to the 4 printed decimals, the others within {:.2} units of the last decimal (largest difference {})", cmp_agree.largest_units, fmt(dev, 2)),
-            "mpfr:256",
-            cmp_agree.verdict(),
+        compared(
+            &proven.knots,
+            2,
             format!(
                 "minimizer of Eq. 34 with α = (1, 1, 2, 6, 6, 6): gradient projection from the 6-D chord length ({iterations} iterations), \
-                 then Newton's method at 256 bits on the optimality system; compared within half a unit of the last printed decimal"
+                 then Newton's method at 256 bits on the optimality system, then Krawczyk's test in balls proving exactly one stationary \
+                 point in a box around it with the reduced Hessian positive definite over the box (a strict local minimum; every knot \
+                 enclosed to {widest:.0e}); each printed value compared with every point of its knot's enclosure within half a unit of \
+                 its last decimal"
             ),
         ),
     );
+    let t = mids(&proven.knots);
     t.iter().map(Field::to_f64).collect()
 }
 
