@@ -275,7 +275,7 @@ fn approx_claim(ledger: &mut Ledger, cl: &[Float], th256: &[Vec<Float>]) -> Vec<
         .collect();
     let ab: Vec<Ball> = ROBOT_ALPHA
         .iter()
-        .map(|&v| Ball::from_i64(v as i64, &bits))
+        .map(|&v| Ball::from_i64(v, &bits))
         .collect();
     let proven = match prove_minimum(&h, &zb, &ab, Objective::Approximate) {
         Ok(p) => p,
