@@ -357,6 +357,31 @@ mod tests {
         assert!((x - 1u32).abs() < 1e-59);
     }
 
+    /// Rationals round once to the nearest double, subnormals too (rounding to 53 bits first
+    /// and then to a subnormal's fewer bits rounded twice), down to the tie at 2⁻¹⁰⁷⁵.
+    #[test]
+    fn subnormal_rationals_round_once() {
+        for text in [
+            "1.6725613558992932035e-308",
+            "4.9406564584124654e-324",
+            "2.5e-324",
+            "2.4703282292062328e-324",
+            "1e-330",
+        ] {
+            let q = parse::parse_rational(text).unwrap();
+            assert_eq!(
+                BigRational::to_f64(&q),
+                text.parse::<f64>().unwrap(),
+                "{text}"
+            );
+        }
+        let tie = BigRational::new(1.into(), BigInt::from(1) << 1075usize);
+        assert_eq!(BigRational::to_f64(&tie), 0.0);
+        assert_eq!(BigRational::to_f64(&-tie.clone()), 0.0);
+        let above = tie * BigRational::new(1_000_001.into(), 1_000_000.into());
+        assert_eq!(BigRational::to_f64(&above), f64::from_bits(1));
+    }
+
     #[test]
     fn powi_matches_repeated_multiplication() {
         let b = BigRational::new(3.into(), 2.into());

@@ -45,7 +45,42 @@ pub fn from_gmp_rational(q: &Rational) -> BigRational {
 /// A rational rounded once to the nearest double (through a 53-bit MPFR value, whose
 /// exponent range is wider, so only results in the subnormal range can round twice).
 pub fn rational_to_f64(q: &BigRational) -> f64 {
-    Float::with_val(53, &to_gmp_rational(q)).to_f64()
+    gmp_rational_to_f64(&to_gmp_rational(q))
+}
+
+/// A GMP rational rounded once to the nearest double (ties to even), subnormals included:
+/// rounding to 53 bits and then to a subnormal's fewer bits would round twice (e.g.
+/// 1.6725613558992932035e-308 became …293e-308 instead of …2935e-308), so below 2⁻¹⁰²² the
+/// value is rounded directly to the bits the double has there.
+pub fn gmp_rational_to_f64(r: &rug::Rational) -> f64 {
+    use rug::float::Round;
+    // Truncation gives the exponent without a carry into the next binade: |r| = m·2^e,
+    // m ∈ [1/2, 1).
+    let truncated = Float::with_val_round(53, r, Round::Zero).0;
+    let Some(exp) = truncated.get_exp().filter(|_| truncated.is_normal()) else {
+        return Float::with_val(53, r).to_f64();
+    };
+    // A double below 2⁻¹⁰²² carries e + 1074 significant bits (its last is 2⁻¹⁰⁷⁴).
+    let bits = exp + 1074;
+    if bits >= 53 {
+        Float::with_val(53, r).to_f64()
+    } else if bits >= 1 {
+        Float::with_val(bits as u32, r).to_f64()
+    } else {
+        // |r| < 2⁻¹⁰⁷⁴: 0 up to half of it (the tie goes to the even 0), the smallest
+        // subnormal above.
+        let half_smallest = rug::Rational::from((1, 1)) >> 1075u32;
+        let magnitude = if rug::Rational::from(r.abs_ref()) > half_smallest {
+            f64::from_bits(1)
+        } else {
+            0.0
+        };
+        if *r < 0 {
+            -magnitude
+        } else {
+            magnitude
+        }
+    }
 }
 
 /// A precision MPFR accepts: `bits` clamped to [`rug::float::prec_min`],

@@ -77,7 +77,7 @@ impl Field for rug::Rational {
         true
     }
     fn to_f64(&self) -> f64 {
-        rug::Float::with_val(53, self).to_f64()
+        super::mpfr::gmp_rational_to_f64(self)
     }
     fn to_rational(&self) -> Option<BigRational> {
         Some(super::mpfr::from_gmp_rational(self))
