@@ -49,6 +49,18 @@
 //!    findings first.
 //! 8. **True evidence.** Evidence quotes the paper completely, and a criterion is the
 //!    paper's, fixed before the computation, never tuned toward a printed number.
+//!
+//! # Assurance
+//!
+//! A claim's [`Assurance`] is the **weakest** of the number types its `scalar` names
+//! ([`Assurance::of_scalar`]): `exact` (rationals, Q(√2)), `proven` (balls: a decision taken
+//! on an enclosure — an upper bound below a criterion, a lower bound above it, a whole
+//! enclosure within half a unit of a print), `certified` (two MPFR precisions that both ran
+//! and agree), `floating` (f64, or one MPFR precision). Values shown beside the basis of the
+//! verdict and not used by it are named in parentheses, which do not count
+//! (`ball:256 (mpfr:128/256 shown)`: Table 1 of paper 001 is decided on enclosures and shows
+//! the certified maxima). A check that cannot compute a number fails its claim with the error
+//! ([`Outcome::failed`]), never a default.
 
 use serde::Serialize;
 

@@ -220,11 +220,8 @@ pub fn smoothing_limit() -> (Outcome, Vec<LimitRow>) {
     let slope = |a: &LimitRow, b: &LimitRow| {
         (b.distance.clone() / &a.distance).log10().to_f64() / (b.exponent - a.exponent) as f64
     };
-    let final_slope = if complete {
-        slope(&rows[rows.len() - 7], &rows[rows.len() - 1])
-    } else {
-        f64::NAN
-    };
+    // The slope over the last six decades, when every decade was computed.
+    let final_slope = complete.then(|| slope(&rows[rows.len() - 7], &rows[rows.len() - 1]));
     (
         Outcome::new(
             format!(
@@ -232,7 +229,7 @@ pub fn smoothing_limit() -> (Outcome, Vec<LimitRow>) {
                 rows.first().map_or("—".into(), |r| format_float_digits(&r.distance, 4)),
                 rows.last().map_or("—".into(), |r| format_float_digits(&r.distance, 4)),
                 regime_start.map_or("—".into(), |e| e.to_string()),
-                format_float_digits(&Float::with_val(53, final_slope), 4)
+                final_slope.map_or("—".into(), |s| format_float_digits(&Float::with_val(53, s), 4))
             ),
             "rational",
             if converges { Verdict::Reproduced } else { Verdict::Discrepancy },

@@ -49,9 +49,11 @@ pub fn numeric() -> Option<Numeric> {
 /// Does the certified value agree with the exact one to all its certified digits?
 fn agrees(c: &Certified, exact: &QSqrt2) -> bool {
     let reference = exact.to_float(512);
-    let value = Float::parse(&c.text)
-        .map(|p| Float::with_val(512, p))
-        .unwrap_or_else(|_| Float::with_val(512, f64::NAN));
+    // A certified text that does not parse as a number agrees with nothing.
+    let Ok(parsed) = Float::parse(&c.text) else {
+        return false;
+    };
+    let value = Float::with_val(512, parsed);
     let rel = if reference.is_zero() {
         value.abs()
     } else {

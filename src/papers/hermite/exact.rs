@@ -151,7 +151,7 @@ pub fn eq16_17_index_ranges() -> (Outcome, String) {
          each of p_(m+1)…p_(2m+1) on the end data only, for every m = 1…20 ({}); {fig2}. Eq. 18 read as one \
          vector is right (claim hermite.eq18.vector), though its partition bar sits at the same offset as the ranges of \
          Eqs. 16–17.",
-        first_bad.unwrap_or_default()
+        first_bad.unwrap_or_else(|| "no m where p_(m+1) depends on the end data only".into())
     );
     (
         Outcome::new(reproduced, "rational", verdict, evidence),
@@ -241,7 +241,7 @@ pub fn eq8() -> (Outcome, Outcome) {
              below the left side's Δ^(−j) (a minus sign lost in the superscripts), which makes the recursion exactly \
              (A2) for every n = 0…30 ({restored_bad} failures; hermite.eq8.minus_restored). The literal superscript j+1 \
              would make an anti-difference of order −j out of differences of order j+1, so the garbling is evident.",
-            example.unwrap_or_default()
+            example.unwrap_or_else(|| "no entry differs".into())
         ),
     );
     let restored = Outcome::new(
