@@ -412,6 +412,8 @@ pub struct Ledger {
     paper: &'static str,
     specs: &'static [ClaimSpec],
     claims: Vec<Claim>,
+    /// Why a claim is not yet exact or proven, by claim id ([`Ledger::explain_unproven`]).
+    unproven: &'static [(&'static str, &'static str)],
 }
 
 impl Ledger {
@@ -421,7 +423,15 @@ impl Ledger {
             paper,
             specs,
             claims: Vec::new(),
+            unproven: &[],
         }
+    }
+
+    /// Why each claim that is only certified or floating is not proven (id, reason): at
+    /// [`Ledger::finish`] each such claim's evidence ends with "Not proven: …", and one with no
+    /// reason listed says so (a test keeps that from happening).
+    pub fn explain_unproven(&mut self, reasons: &'static [(&'static str, &'static str)]) {
+        self.unproven = reasons;
     }
 
     /// Record the outcome of the claim `id`. An id missing from the spec table, or recorded
@@ -544,9 +554,22 @@ impl Ledger {
                 .unwrap_or(usize::MAX)
         };
         self.claims.sort_by_key(|c| order(&c.id));
+        for claim in &mut self.claims {
+            if claim.assurance >= Assurance::Certified && claim.verdict != Verdict::Failed {
+                let reason = self
+                    .unproven
+                    .iter()
+                    .find(|(id, _)| *id == claim.id)
+                    .map_or(NO_REASON, |(_, why)| why);
+                claim.evidence.push_str(&format!(" Not proven: {reason}."));
+            }
+        }
         self.claims
     }
 }
+
+/// What the evidence of a certified or floating claim says when its paper lists no reason.
+pub const NO_REASON: &str = "no reason recorded";
 
 /// Everything one paper's verification produces.
 pub struct PaperOutput {

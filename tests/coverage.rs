@@ -154,3 +154,27 @@ fn the_readme_states_the_current_coverage_and_verdict_counts() {
         "README.md lacks the ledger's assurance counts: {sentence}"
     );
 }
+
+/// Issue 36: every claim that is only certified or floating says in its evidence why it is
+/// not proven, with a reason its paper records (not the ledger's fallback).
+#[test]
+fn every_unproven_claim_says_why() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let ledger: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(root.join("reports/claims.json")).expect("claims.json"),
+    )
+    .expect("claims.json parses");
+    for c in ledger["claims"].as_array().expect("a claims array") {
+        let unproven = matches!(c["assurance"].as_str(), Some("certified" | "floating"));
+        let evidence = c["evidence"].as_str().unwrap_or_default();
+        if unproven && c["verdict"] != "failed" {
+            assert!(
+                evidence.contains("Not proven: ")
+                    && !evidence.contains(trajverify::ledger::NO_REASON),
+                "{} is {} without a recorded reason",
+                c["id"],
+                c["assurance"]
+            );
+        }
+    }
+}

@@ -90,9 +90,30 @@ struct Results {
     legs: Vec<DubinsPath<f64>>,
 }
 
+/// Why each of this paper's claims that is only certified or floating is not proven (issue
+/// 36); the ledger appends the reason to the claim's evidence.
+const UNPROVEN: &[(&str, &str)] = &[
+    ("gerbs.partition_of_unity", ERBS),
+    ("gerbs.erbs.smoothness", ERBS),
+    ("gerbs.alg1.returns_s", ERBS),
+    ("gerbs.alg2.end_curves", ERBS),
+    ("gerbs.fig2.parameters", ERBS),
+    ("gerbs.alg2.interpolates", ERBS),
+    ("gerbs.alg2.tangent", ERBS),
+    ("gerbs.alg2.curvature_continuous", ERBS),
+    ("gerbs.fig3.curvature_reduced", SAMPLED),
+    ("gerbs.eq4.centre", SAMPLED),
+    ("gerbs.fig6.bfbs_vs_erbs", SAMPLED),
+    ("gerbs.fig7.dubins", SAMPLED),
+    ("gerbs.locality", SAMPLED),
+];
+const ERBS: &str = "the ERBS kernel's integrals run as MPFR quadratures here; the proven ERBS sweep of `run gerbs-path --scalar ball:…` (issue 39) encloses them, but these checks do not use it yet";
+const SAMPLED: &str = "a maximum or comparison over f64 samples of the path; a proven one needs the path in balls and a branch-and-bound search (not yet done)";
+
 /// Run every check of paper 003 and build its report.
 pub fn verify() -> PaperOutput {
     let mut ledger = Ledger::new(ID, SPECS);
+    ledger.explain_unproven(UNPROVEN);
     let (smoothness, centre) = basis_checks(&mut ledger);
     let (interp, tangent, curvature, algorithm2) = paths::algorithm2();
     ledger.record("gerbs.alg2.interpolates", interp);
