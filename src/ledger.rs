@@ -561,7 +561,14 @@ impl Ledger {
                     .iter()
                     .find(|(id, _)| *id == claim.id)
                     .map_or(NO_REASON, |(_, why)| why);
-                claim.evidence.push_str(&format!(" Not proven: {reason}."));
+                // A sentence of its own, after the evidence's last one.
+                let stop = if claim.evidence.trim_end().ends_with('.') {
+                    ""
+                } else {
+                    "."
+                };
+                claim.evidence =
+                    format!("{}{stop} Not proven: {reason}.", claim.evidence.trim_end());
             }
         }
         self.claims
