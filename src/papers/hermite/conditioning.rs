@@ -412,7 +412,7 @@ fn interval_outcome(rows: &[KappaRow], max_bits: u32) -> Outcome {
         parts.join(", ")
     });
     Outcome::new(
-        format!("κ2 changes with the interval for every m ≥ 1; at m = 10: {}", at10.clone().unwrap_or_default()),
+        format!("κ2 changes with the interval for every m ≥ 1; at m = 10: {}", at10.clone().unwrap_or_else(|| "— (no row for m = 10)".into())),
         format!("mpfr:{max_bits}/{}", 2 * max_bits),
         if same.is_empty() { Verdict::Reproduced } else { Verdict::Discrepancy },
         format!(
