@@ -201,7 +201,7 @@ pub fn proven(
     relative: f64,
 ) -> Option<(Float, Float)> {
     let b = start_block::<BigRational>(m, t0, t1, kind);
-    let gram = IntegerSymmetric::new(&b.transpose().mul(&b))?;
+    let gram = IntegerSymmetric::gram(&b)?;
     let sigma = singular_values(&b.map(|q| Float::from_rational(q, &bits))).ok()?;
     let square = |s: &Float| Float::with_val(bits, s * s);
     let (largest, smallest) = (square(sigma.first()?), square(sigma.last()?));

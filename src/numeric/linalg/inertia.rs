@@ -42,13 +42,48 @@ impl IntegerSymmetric {
             return None;
         }
         let n = a.rows();
-        let gmp: Vec<Vec<rug::Rational>> = (0..n)
+        Self::from_gmp(
+            (0..n)
+                .map(|i| {
+                    (0..n)
+                        .map(|j| crate::scalar::mpfr_rational(&a[(i, j)]))
+                        .collect()
+                })
+                .collect(),
+        )
+    }
+
+    /// The Gram matrix BᵀB of the exact rational `b`, formed in GMP (much faster than
+    /// `num-rational` for the wide entries of graded matrices); `None` never for a matrix
+    /// with at least one row.
+    pub fn gram(b: &Matrix<crate::scalar::BigRational>) -> Option<Self> {
+        let (rows, cols) = (b.rows(), b.cols());
+        let gmp: Vec<Vec<rug::Rational>> = (0..rows)
             .map(|i| {
-                (0..n)
-                    .map(|j| crate::scalar::mpfr_rational(&a[(i, j)]))
+                (0..cols)
+                    .map(|j| crate::scalar::mpfr_rational(&b[(i, j)]))
                     .collect()
             })
             .collect();
+        let gram = (0..cols)
+            .map(|i| {
+                (0..cols)
+                    .map(|j| {
+                        gmp.iter().fold(rug::Rational::new(), |sum, row| {
+                            sum + rug::Rational::from(&row[i] * &row[j])
+                        })
+                    })
+                    .collect()
+            })
+            .collect();
+        Self::from_gmp(gram)
+    }
+
+    /// Square GMP rationals as integers over their common denominator.
+    fn from_gmp(gmp: Vec<Vec<rug::Rational>>) -> Option<Self> {
+        if gmp.iter().any(|row| row.len() != gmp.len()) {
+            return None;
+        }
         let scale = gmp
             .iter()
             .flatten()
@@ -190,6 +225,20 @@ mod tests {
                 fast.eigenvalues_below(&shift),
                 eigenvalues_below(&a, &q(n, d)),
                 "{n}/{d}"
+            );
+        }
+    }
+
+    #[test]
+    fn gram_in_gmp_counts_as_the_rational_gram() {
+        let b = Matrix::from_fn(3, 3, |i, j| q((i * 3 + j) as i64 % 5 - 2, 1 + j as i64));
+        let slow = IntegerSymmetric::new(&b.transpose().mul(&b)).unwrap();
+        let fast = IntegerSymmetric::gram(&b).unwrap();
+        for (n, d) in [(1, 3), (1, 2), (2, 1), (9, 2), (25, 1)] {
+            let shift = rug::Rational::from((n, d));
+            assert_eq!(
+                fast.eigenvalues_below(&shift),
+                slow.eigenvalues_below(&shift)
             );
         }
     }

@@ -20,12 +20,41 @@ pub const MAX_M: usize = 30;
 /// Interval lengths besides 1 (the text says the interval changes κ).
 pub const DURATIONS: [(i64, i64); 3] = [(1, 2), (2, 1), (10, 1)];
 
-/// A certified κ₂ with the precision it needed.
+/// Relative half-width of each exact inertia bracket of the extreme eigenvalues of BᵀB: narrow
+/// enough that the enclosure of κ₂ proves about as many digits as the certified value shows.
+pub const PROVEN_RELATIVE: f64 = 1.0 / (1u128 << 100) as f64;
+
+/// A certified κ₂ with the precision it needed, and its proven enclosure.
 #[derive(Clone, Debug)]
 pub struct Kappa {
     pub value: Certified,
     pub exact: Float,
     pub bits: u32,
+    /// lo ≤ κ₂ ≤ hi by exact inertia ([`condition::proven`] with MPFR at 2·`bits` locating the
+    /// eigenvalues); `None` when a bracket could not be decided.
+    pub proven: Option<(Float, Float)>,
+}
+
+impl Kappa {
+    /// The decimal digits every point of the proven enclosure shares (0 without one).
+    pub fn proven_digits(&self) -> (u32, String) {
+        self.proven.as_ref().map_or((0, String::new()), |(lo, hi)| {
+            crate::scalar::ball::interval_digits(lo, hi, 2 * self.bits)
+        })
+    }
+
+    /// At most `max` significant digits that every point of the proven enclosure rounds to
+    /// ("—" without an enclosure or when not even one digit is proven).
+    pub fn proven_text(&self, max: u32) -> String {
+        let Some((lo, hi)) = &self.proven else {
+            return "—".into();
+        };
+        (1..=max)
+            .rev()
+            .map(|d| (format_float_digits(lo, d), format_float_digits(hi, d)))
+            .find(|(a, b)| a == b)
+            .map_or("—".into(), |(a, _)| a)
+    }
 }
 
 /// One row of the Fig. 5 table.
@@ -56,7 +85,13 @@ pub fn certified_kappa(m: usize, t1: &BigRational, kind: TransformKind) -> Optio
     loop {
         let (value, exact) = condition::certified(m, &t0, t1, kind, bits).ok()?;
         if value.digits >= TARGET_DIGITS || bits >= 2048 {
-            return Some(Kappa { value, exact, bits });
+            let proven = condition::proven(m, &t0, t1, kind, bits, PROVEN_RELATIVE);
+            return Some(Kappa {
+                value,
+                exact,
+                bits,
+                proven,
+            });
         }
         bits = (bits * 3 / 2).next_multiple_of(32);
     }
@@ -71,16 +106,7 @@ pub fn table() -> Vec<KappaRow> {
             let f64_matrix = transform_matrix(m, &ratio(0, 1), &one, TransformKind::Transform)
                 .map(|q| q.to_f64());
             let unit = certified_kappa(m, &one, TransformKind::Transform);
-            let proven = unit.as_ref().and_then(|k| {
-                condition::proven(
-                    m,
-                    &ratio(0, 1),
-                    &one,
-                    TransformKind::Transform,
-                    2 * k.bits,
-                    2f64.powi(-40),
-                )
-            });
+            let proven = unit.as_ref().and_then(|k| k.proven.clone());
             KappaRow {
                 m,
                 proven,
@@ -115,10 +141,16 @@ pub fn table() -> Vec<KappaRow> {
         .collect()
 }
 
-/// Correct digits of an f64 value against a certified κ (0 when absent).
+/// Correct digits of an f64 value against κ, proven when κ has an enclosure: the relative
+/// error |a/κ − 1| is largest at an end of the enclosure (a/κ is monotone in κ), so the fewer
+/// digits of the two ends hold for every κ in it. Against the certified value otherwise;
+/// 0 when either is absent.
 pub fn f64_digits(approx: Option<f64>, k: &Option<Kappa>) -> u32 {
     match (approx, k) {
-        (Some(a), Some(k)) => correct_digits(a, &k.exact).min(k.value.digits),
+        (Some(a), Some(k)) => match &k.proven {
+            Some((lo, hi)) => correct_digits(a, lo).min(correct_digits(a, hi)),
+            None => correct_digits(a, &k.exact).min(k.value.digits),
+        },
         _ => 0,
     }
 }
@@ -312,22 +344,69 @@ fn proven_enclosures(rows: &[KappaRow]) -> Outcome {
     )
 }
 
-/// The Fig. 5 claims: the certified table, growth, interval dependence.
+/// The Fig. 5 claims: the proven table, growth, interval dependence.
 pub fn claims(rows: &[KappaRow]) -> [Outcome; 3] {
     let certified: Vec<&Kappa> = rows.iter().filter_map(|r| r.unit.as_ref()).collect();
     let max_bits = certified.iter().map(|k| k.bits).max().unwrap_or(0);
-    let increasing = certified.windows(2).all(|w| w[1].exact > w[0].exact);
+    // Proven growth: each enclosure lies wholly below the next one.
+    let enclosures: Vec<Option<&(Float, Float)>> = rows
+        .iter()
+        .map(|r| r.unit.as_ref().and_then(|k| k.proven.as_ref()))
+        .collect();
+    let increasing = enclosures.len() == MAX_M + 1
+        && enclosures.windows(2).all(|w| match (w[0], w[1]) {
+            (Some((_, hi)), Some((lo, _))) => hi < lo,
+            _ => false,
+        });
     let grows = Outcome::new(
-        if increasing { format!("strictly increasing for m = 0…{MAX_M}") } else { "not monotone".to_string() },
-        format!("mpfr:{max_bits}/{}", 2 * max_bits),
+        if increasing { format!("strictly increasing for m = 0…{MAX_M}") } else { "not proven monotone".to_string() },
+        basis(max_bits),
         if increasing { Verdict::Reproduced } else { Verdict::Discrepancy },
-        format!("certified κ2 compared consecutively (their certified digits separate them). Growth law: {}", growth_law(rows)),
+        format!(
+            "the proven enclosures of κ2 (exact inertia, see hermite.fig5.proven) compared consecutively: each lies wholly \
+             below the next. Growth law (of the certified values): {}",
+            growth_law(rows)
+        ),
     );
     let table = unprinted(
         table_outcome(rows),
         "the figure's trend is checked by its own claims; no value of it is printed",
     );
     [table, grows, interval_outcome(rows, max_bits)]
+}
+
+/// The basis of the Fig. 5 claims: exact inertia brackets, with the certified MPFR values
+/// shown beside them.
+fn basis(max_bits: u32) -> String {
+    format!("ball:inertia (mpfr:{max_bits}/{} shown)", 2 * max_bits)
+}
+
+/// Whether every κ₂ of the table (five matrices for each m) has a proven enclosure holding its
+/// certified value, and the fewest digits such an enclosure proves.
+fn proven_columns(rows: &[KappaRow]) -> (bool, u32) {
+    let kappas: Vec<Option<&Kappa>> = rows
+        .iter()
+        .flat_map(|r| {
+            [r.unit.as_ref(), r.binomial.as_ref()]
+                .into_iter()
+                .chain(r.durations.iter().map(Option::as_ref))
+        })
+        .collect();
+    let all = kappas.iter().all(|k| {
+        k.and_then(|k| {
+            k.proven
+                .as_ref()
+                .map(|(lo, hi)| *lo <= k.exact && k.exact <= *hi)
+        })
+        .unwrap_or(false)
+    });
+    let fewest = kappas
+        .iter()
+        .flatten()
+        .map(|k| k.proven_digits().0)
+        .min()
+        .unwrap_or(0);
+    (all, fewest)
 }
 
 /// The Fig. 5 table as a claim: every κ2 present and certified to the target digits.
@@ -341,28 +420,27 @@ fn table_outcome(rows: &[KappaRow]) -> Outcome {
         && rows
             .iter()
             .all(|r| r.binomial.is_some() && r.durations.iter().all(Option::is_some));
+    let (proven, fewest) = proven_columns(rows);
     let breakdown = f64_breakdown(rows);
     let jacobi_min = rows
         .iter()
         .map(|r| f64_digits(r.jacobi_f64, &r.unit))
         .min()
         .unwrap_or(0);
-    let last = rows
-        .last()
-        .and_then(|r| r.unit.as_ref())
-        .map_or(String::new(), |k| k.value.text.clone());
+    let last_kappa = rows.last().and_then(|r| r.unit.as_ref());
+    let last = last_kappa.map_or(String::new(), |k| k.proven_digits().1);
     Outcome::new(
         format!(
-            "κ2 for m = 0…{MAX_M} with ≥ {min_digits} certified digits (κ2(m={MAX_M}) = {}); nalgebra f64 SVD has no correct digit from m = {}",
-            format_float_digits(&Float::with_val(64, certified.last().map_or(0.0, |k| k.value.approx)), 6),
+            "κ2 for m = 0…{MAX_M} enclosed with ≥ {fewest} proven digits (κ2(m={MAX_M}) = {}); nalgebra f64 SVD has no correct digit from m = {}",
+            last_kappa.map_or(String::new(), |k| k.proven_text(6)),
             breakdown.map_or("— (never)".to_string(), |m| m.to_string())
         ),
-        format!("mpfr:{max_bits}/{}", 2 * max_bits),
+        basis(max_bits),
         // Fig. 5 prints no value to compare, and names its matrix only as "the matrix form of
         // the presented transform" (clause 5: too little printed to decide); the table is
         // computed for the report, and the claims on growth and the interval check what the
         // text says of it.
-        if all_present && min_digits >= TARGET_DIGITS {
+        if all_present && proven && min_digits >= TARGET_DIGITS {
             Verdict::Undetermined
         } else {
             Verdict::Failed
@@ -374,10 +452,13 @@ fn table_outcome(rows: &[KappaRow]) -> Outcome {
              hermite.fig5.kappa_grows and hermite.fig5.interval_changes_kappa. Computed: κ2 = σmax/σmin of the exact matrix A of Eqs. 14–15 on [0, 1]. A is a permutation of diag(B, D·B) with B its \
              (m+1)×(m+1) start block and D = diag((−1)^j) (checked exactly for every m and matrix: {}), so κ2(A) = κ2(B), \
              computed by one-sided Jacobi at p and 2p bits (p from 128, raised by half \
-             until ≥ {TARGET_DIGITS} digits agree; largest p used {max_bits}); κ2(m={MAX_M}) = {last}. f64: nalgebra's SVD of the \
+             until ≥ {TARGET_DIGITS} digits agree; largest p used {max_bits}), and every κ2 of the table (T = 1, 1/2, 2, 10 and \
+             the binomial matrix) enclosed by exact inertia brackets of BᵀB (as in hermite.fig5.proven; each certified value \
+             inside its enclosure: {}); κ2(m={MAX_M}) = {last} (every digit proven). f64, against the enclosures: nalgebra's SVD of the \
              correctly rounded matrix loses every digit from m = {}; the same one-sided Jacobi run in f64 keeps ≥ {jacobi_min} \
              correct digits for every m, so the loss is the SVD algorithm's (graded rows), not the format's",
             if blocks { "holds" } else { "FAILS" },
+            if proven { "holds" } else { "FAILS" },
             breakdown.map_or("— (never)".to_string(), |m| m.to_string())
         ),
     )
@@ -385,14 +466,18 @@ fn table_outcome(rows: &[KappaRow]) -> Outcome {
 
 /// κ2 depends on the interval [0, T] for every m ≥ 1.
 fn interval_outcome(rows: &[KappaRow], max_bits: u32) -> Outcome {
-    // The interval: κ differs from the unit-interval value for every m ≥ 1 and each duration.
+    // The interval: κ differs from the unit-interval value for every m ≥ 1 and each duration,
+    // proven by disjoint enclosures (a missing enclosure counts as not proven different).
+    let proven = |k: &Option<Kappa>| k.as_ref().and_then(|k| k.proven.clone());
     let mut same = Vec::new();
     for r in rows.iter().filter(|r| r.m >= 1) {
         for (k, &(n, d)) in r.durations.iter().zip(&DURATIONS) {
-            if let (Some(k), Some(u)) = (k, &r.unit) {
-                if k.value.text == u.value.text {
-                    same.push(format!("m={} T={n}/{d}", r.m));
-                }
+            let disjoint = match (proven(k), proven(&r.unit)) {
+                (Some((lo, hi)), Some((unit_lo, unit_hi))) => hi < unit_lo || unit_hi < lo,
+                _ => false,
+            };
+            if !disjoint {
+                same.push(format!("m={} T={n}/{d}", r.m));
             }
         }
     }
@@ -413,10 +498,11 @@ fn interval_outcome(rows: &[KappaRow], max_bits: u32) -> Outcome {
     });
     Outcome::new(
         format!("κ2 changes with the interval for every m ≥ 1; at m = 10: {}", at10.clone().unwrap_or_else(|| "— (no row for m = 10)".into())),
-        format!("mpfr:{max_bits}/{}", 2 * max_bits),
+        basis(max_bits),
         if same.is_empty() { Verdict::Reproduced } else { Verdict::Discrepancy },
         format!(
-            "certified κ2 for T = 1/2, 2, 10 compared with T = 1 for m = 1…{MAX_M}: equal in {} cases {same:?}; at m = 0 the \
+            "proven enclosures of κ2 for T = 1/2, 2, 10 compared with T = 1 for m = 1…{MAX_M} (exact inertia, as in \
+             hermite.fig5.proven): not proven different (overlapping or missing) in {} cases {same:?}; at m = 0 the \
              matrix is the identity for every T (κ2 = 1)",
             same.len()
         ),
@@ -424,6 +510,5 @@ fn interval_outcome(rows: &[KappaRow], max_bits: u32) -> Outcome {
 }
 
 fn fmt_k(k: &Option<Kappa>) -> String {
-    k.as_ref()
-        .map_or("—".into(), |k| format_float_digits(&k.exact, 6))
+    k.as_ref().map_or("—".into(), |k| k.proven_text(6))
 }

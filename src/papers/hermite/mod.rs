@@ -94,12 +94,8 @@ const UNPROVEN: &[(&str, &str)] = &[
     ("hermite.fig3.short_is_straight", FIG3),
     ("hermite.fig3.nominal_is_circular", FIG3),
     ("hermite.fig3.long_loops_away", FIG3),
-    ("hermite.fig5.kappa_table", FIG5),
-    ("hermite.fig5.kappa_grows", FIG5),
-    ("hermite.fig5.interval_changes_kappa", FIG5),
 ];
 const FIG3: &str = "the curves' distances and turning are sampled at one MPFR precision; the curves are polynomials with exact rational control points, so exact or ball evaluation with a branch-and-bound maximum would prove them (not yet done)";
-const FIG5: &str = "the table's κ₂ values are certified at 192 and 384 bits; the exact inertia brackets of hermite.fig5.proven prove them entry by entry, but this claim still reads the MPFR columns";
 
 /// Run every check of paper 000 and build its report.
 pub fn verify() -> PaperOutput {
