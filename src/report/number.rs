@@ -11,6 +11,7 @@
 //! [`audit`] lets a test check every number a report shows against the value it was rendered
 //! from (to the digits shown), and tell formatter output from text built elsewhere.
 
+use crate::scalar::ball::Ball;
 use crate::scalar::certify::{decimal_text, Certified};
 use crate::scalar::Float;
 use rug::float::Round;
@@ -72,6 +73,23 @@ pub fn float_in(x: &Float, digits: u32, notation: Notation) -> String {
         audit::formatted(&text, x);
     }
     text
+}
+
+/// A proven number (a ball) to at most `digits` significant digits: the digits every point of
+/// the enclosure rounds to (fewer when it is wider), so the text is true of the value it
+/// stands for; "value ± radius" as [`Ball::printed`] gives it when not even one digit is
+/// shared, "—" for a ball that is not finite.
+pub fn ball(x: &Ball, digits: u32) -> String {
+    let (lo, hi) = (x.lower(), x.upper());
+    for d in (1..=digits).rev() {
+        let text = style(&lo, d, Notation::Auto);
+        if text == style(&hi, d, Notation::Auto) {
+            audit::formatted(&text, x.mid());
+            return text;
+        }
+    }
+    x.printed()
+        .map_or("—".into(), |p| format!("{} ± {}", p.value, p.radius))
 }
 
 /// A table column: every value to `digits` significant digits in one notation, scientific

@@ -222,11 +222,13 @@ impl<T: Real> NaturalCubicSpline<T> {
                 // θ′(t_{i−1} + v) = A v² + B v + C on [0, h].
                 let a = (m[i].clone() - &m[i - 1]) / &(T::from_i64(2, &ctx) * &h);
                 let b = m[i - 1].clone();
-                let c = self.eval_all(&t[i - 1])[1].clone();
+                // On the piece itself, by the distances to its ends (no knot is located: a
+                // ball at a knot could not decide which piece holds it).
+                let c = self.eval_offsets(&h, &zero, i)[1].clone();
                 quadratic_roots(&a, &b, &c)
                     .into_iter()
                     .filter(|v| *v > zero && *v < h)
-                    .map(|v| self.eval_all(&(t[i - 1].clone() + &v))[0].clone())
+                    .map(|v| self.eval_offsets(&(h.clone() - &v), &v, i)[0].clone())
                     .collect()
             })
             .collect()
@@ -243,18 +245,16 @@ impl<T: Real> NaturalCubicSpline<T> {
             .into_iter()
             .enumerate()
             .map(|(k, extremes)| {
-                let (lo, hi) = if z[k] < z[k + 1] {
-                    (&z[k], &z[k + 1])
-                } else {
-                    (&z[k + 1], &z[k])
-                };
+                // The range of the end values without comparing them (for balls, two equal
+                // data that are not exact binary numbers cannot be ordered, and need not be).
+                let (lo, hi) = (z[k].min_with(&z[k + 1]), z[k].max_with(&z[k + 1]));
                 extremes
                     .into_iter()
                     .map(|value| {
-                        let beyond = max_of(value.clone() - hi, lo.clone() - &value);
+                        let beyond = max_of(value.clone() - &hi, lo.clone() - &value);
                         max_of(beyond, zero.clone())
                     })
-                    .fold(zero.clone(), max_of)
+                    .fold(zero.clone(), |a, b| a.max_with(&b))
             })
             .collect()
     }

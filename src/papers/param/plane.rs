@@ -4,8 +4,10 @@ use super::super::{Ledger, Outcome, Verdict};
 use super::data::{TABLE2, TABLE3};
 use super::num;
 use super::one_d::compare_balls_with_printed;
+use super::proven_splines::{
+    self, balls, decided, max_abs_second, third_derivatives, ProvenKnots, BITS,
+};
 use crate::algo::param::descent::{descend, polish};
-use crate::algo::param::natural::NaturalCubicSpline;
 use crate::algo::param::objective::{
     chord_length_spacing, knots_from_spacing, objective, Objective,
 };
@@ -117,15 +119,18 @@ pub struct PlaneSection {
     pub columns: [Option<Column>; 2],
     /// (name, knots in f64) of each parametrization: t^CL, then the minimizers found.
     pub parametrizations: Vec<(&'static str, Vec<f64>)>,
-    /// Per parametrization, for x and y: (max |θ''|, sum of |jumps| of θ''').
-    pub second_derivatives: Vec<Vec<(f64, f64)>>,
+    /// The same parametrizations proven (balls), or why one is not.
+    pub proven: Result<Vec<ProvenKnots>, String>,
+    /// Per parametrization, for x and y: (max |θ''|, sum of |jumps| of θ'''), enclosed.
+    pub second_derivatives: Vec<Vec<(Ball, Ball)>>,
     /// The Table II components in f64.
     pub data: Vec<Vec<f64>>,
 }
 
 /// Table III, Figs. 2–5.
 pub fn section(ledger: &mut Ledger) -> PlaneSection {
-    let chord = chord_claim(ledger);
+    let chord_knots = chord_claim(ledger);
+    let chord: Vec<Float> = chord_knots.knots.iter().map(|k| k.mid().clone()).collect();
     let columns = [
         minimize(Objective::Exact, 1, "t^EX (Eq. 31)"),
         minimize(Objective::Approximate, 2, "t^AP (Eq. 34)"),
@@ -155,27 +160,41 @@ pub fn section(ledger: &mut Ledger) -> PlaneSection {
             )
             .collect();
     let data = components::<f64>(&());
-    let second_derivatives = second_derivative_claim(ledger, &parametrizations, &data);
+    let proven = std::iter::once(Ok(chord_knots))
+        .chain(columns.iter().map(|c| {
+            match c {
+                Some(c) => c
+                    .proven
+                    .as_ref()
+                    .map(|m| ProvenKnots::minimizer(c.name, m))
+                    .map_err(Clone::clone),
+                None => Err("a minimization failed".to_string()),
+            }
+        }))
+        .collect::<Result<Vec<_>, String>>();
+    let second_derivatives = second_derivative_claim(ledger, &proven);
     ledger.record(
         "marin.sec2.third_derivative_jumps",
-        third_jump_claim(&parametrizations, &data),
+        third_jump_claim(&proven),
     );
     PlaneSection {
         chord,
         columns,
         parametrizations,
+        proven,
         second_derivatives,
         data,
     }
 }
 
 /// Table III, t^C1: chord length in balls at 256 bits, compared entry by entry with every
-/// point of each enclosure; returns the enclosures' midpoints.
-fn chord_claim(ledger: &mut Ledger) -> Vec<Float> {
-    let bits = 256;
-    let knots = knots_from_spacing(&chord_length_spacing(&components::<Ball>(&bits)), &bits);
+/// point of each enclosure; returns the proven knots.
+fn chord_claim(ledger: &mut Ledger) -> ProvenKnots {
+    let bits = proven_splines::BITS;
+    let chord = ProvenKnots::chord("t^CL", &components::<Ball>(&bits));
+    let knots = &chord.knots;
     let widest = knots.iter().map(Ball::rad).fold(0.0, f64::max);
-    let outcome = match compare_balls_with_printed(&knots, &printed(0)) {
+    let outcome = match compare_balls_with_printed(knots, &printed(0)) {
         Ok(c) => Outcome::new(
             format!("{} of 20 entries agree to the 4 printed decimals, the others within {:.2} units of the last decimal (largest difference {}; enclosures at most {widest:.0e} wide)", c.agree, c.largest_units, fmt(c.largest, 2)),
             format!("ball:{bits}"),
@@ -186,7 +205,7 @@ fn chord_claim(ledger: &mut Ledger) -> Vec<Float> {
         Err(e) => Outcome::failed(format!("ball:{bits}"), e),
     };
     ledger.record("marin.table3.chord", outcome);
-    knots.iter().map(|k| k.mid().clone()).collect()
+    chord
 }
 
 /// How much larger the objective is on the printed knots than at the certified minimizer: G
@@ -266,44 +285,45 @@ fn minimizer_outcome(column: Option<&Column>, col: usize) -> Outcome {
 }
 
 /// Figs. 3–5 as numbers: max |θ''| and the third-derivative jumps of each component, per
-/// parametrization; the claim that the minimizers reduce both maxima.
+/// parametrization, enclosed; the claim that the minimizers reduce both maxima.
 fn second_derivative_claim(
     ledger: &mut Ledger,
-    parametrizations: &[(&str, Vec<f64>)],
-    data: &[Vec<f64>],
-) -> Vec<Vec<(f64, f64)>> {
-    // A spline that cannot be built fails the claim with its error (it was dropped, and the
-    // comparison then judged the parametrizations on what remained).
-    let stats: Result<Vec<Vec<(f64, f64)>>, String> = parametrizations
-        .iter()
-        .map(|(name, t)| {
-            data.iter()
-                .enumerate()
-                .map(|(c, comp)| {
-                    let s = NaturalCubicSpline::new(t.clone(), comp.clone())
-                        .map_err(|e| format!("the spline of component {c} on {name}: {e}"))?;
-                    let m = s.second_derivatives_at_knots();
-                    let peak = m.iter().fold(0.0f64, |a, x| a.max(x.abs()));
-                    let third: Vec<f64> = (1..t.len())
-                        .map(|i| (m[i] - m[i - 1]) / (t[i] - t[i - 1]))
-                        .collect();
-                    let jumps: f64 = third.windows(2).map(|w| (w[1] - w[0]).abs()).sum();
-                    Ok((peak, jumps))
-                })
-                .collect()
-        })
-        .collect();
-    let scalar = "f64 (splines on certified knots)";
-    let stats = match stats {
-        Ok(stats) if stats.len() == 3 && stats.iter().all(|p| p.len() == 2) => stats,
-        Ok(_) => {
-            let why = "expected chord length and both minimizers, each with an x and a y spline";
-            ledger.record(
-                "marin.fig3_5.second_derivatives",
-                Outcome::failed(scalar, why),
+    proven: &Result<Vec<ProvenKnots>, String>,
+) -> Vec<Vec<(Ball, Ball)>> {
+    let scalar = "ball:256";
+    // Everything the claim reads, in balls, with every comparison decided.
+    let computed = decided(|| {
+        let proven = proven.as_ref().map_err(Clone::clone)?;
+        let data: Vec<Vec<Ball>> = exact_components().iter().map(|z| balls(z)).collect();
+        let stats = proven
+            .iter()
+            .map(|p| {
+                data.iter()
+                    .map(|z| {
+                        let s = p.spline(z)?;
+                        let peak = max_abs_second(&s).ok_or("a spline without knots")?;
+                        let third = third_derivatives(&s, &p.h);
+                        let jumps = third.windows(2).fold(Ball::zero_in(&BITS), |a, w| {
+                            a + &(w[1].clone() - &w[0]).abs()
+                        });
+                        Ok((peak, jumps))
+                    })
+                    .collect::<Result<Vec<_>, String>>()
+            })
+            .collect::<Result<Vec<_>, String>>()?;
+        if stats.len() != 3 || stats.iter().any(|p| p.len() != 2) {
+            return Err(
+                "expected chord length and both minimizers, each with an x and a y spline".into(),
             );
-            return Vec::new();
         }
+        let base = &stats[0];
+        let reduced = stats[1..]
+            .iter()
+            .all(|p| p[0].0 < base[0].0 && p[1].0 < base[1].0);
+        Ok((stats, reduced))
+    });
+    let (stats, reduced) = match computed {
+        Ok(c) => c,
         Err(e) => {
             ledger.record(
                 "marin.fig3_5.second_derivatives",
@@ -312,19 +332,16 @@ fn second_derivative_claim(
             return Vec::new();
         }
     };
-    let peak = |p: &[(f64, f64)], c: usize| p[c].0;
-    let base = &stats[0];
-    let reduced = stats[1..]
+    let describe: Vec<String> = proven
         .iter()
-        .all(|p| p[0].0 < base[0].0 && p[1].0 < base[1].0);
-    let describe: Vec<String> = parametrizations
-        .iter()
+        .flatten()
         .zip(&stats)
-        .map(|((n, _), p)| {
+        .map(|(k, p)| {
             format!(
-                "{n}: max |x''| = {}, max |y''| = {}",
-                fmt(peak(p, 0), 4),
-                fmt(peak(p, 1), 4)
+                "{}: max |x''| = {}, max |y''| = {}",
+                k.name,
+                crate::report::number::ball(&p[0].0, 4),
+                crate::report::number::ball(&p[1].0, 4)
             )
         })
         .collect();
@@ -334,74 +351,90 @@ fn second_derivative_claim(
             describe.join("; "),
             scalar,
             if reduced { Verdict::Reproduced } else { Verdict::Discrepancy },
-            "natural cubic splines x(t), y(t) through Table II for each parametrization; θ'' is piecewise linear, so its maximum modulus is at a \
-             knot and is exact up to f64 rounding. Criterion: both components' maxima smaller for t^EX and for t^AP than for chord length. The \
-             report also lists the total third-derivative jump over the interior knots",
+            "natural cubic splines x(t), y(t) through Table II for each parametrization, solved in ball arithmetic at 256 bits on the \
+             proven knots (chord length in balls; t^EX and t^AP the minimizers proven by Krawczyk's test, marin.table3.*); θ'' is \
+             piecewise linear, so its maximum modulus is at a knot, enclosed as the hull of the knots' |θ''|, and each comparison is \
+             decided on disjoint enclosures. Criterion: both components' maxima smaller for t^EX and for t^AP than for chord length. \
+             The report also lists the total third-derivative jump over the interior knots",
         ),
     );
     stats
 }
 
+/// The Table II components as exact rationals.
+fn exact_components() -> Vec<Vec<BigRational>> {
+    components::<BigRational>(&())
+}
+
 /// Sec. 2, after Corollary 3, bullet (ii) for higher-dimensional data: the minimizing
 /// parametrizations reduce the third-derivative jumps at breakpoints that are not relative
 /// extremes of the component, compared with chord length.
-fn third_jump_claim(parametrizations: &[(&str, Vec<f64>)], data: &[Vec<f64>]) -> Outcome {
+fn third_jump_claim(proven: &Result<Vec<ProvenKnots>, String>) -> Outcome {
+    let scalar = "ball:256";
     // Per parametrization and component: Σ |θ‴(t_j+) − θ‴(t_j−)| over the non-extreme knots.
-    let sums: Result<Vec<Vec<f64>>, String> = parametrizations
-        .iter()
-        .map(|(name, t)| {
-            data.iter()
-                .map(|z| {
-                    let extremes = weak_extremes(z);
-                    let s = NaturalCubicSpline::new(t.clone(), z.clone())
-                        .map_err(|e| format!("the spline on {name}'s knots: {e}"))?;
-                    let m = s.second_derivatives_at_knots();
-                    let third = |i: usize| (m[i] - m[i - 1]) / (t[i] - t[i - 1]);
-                    Ok((1..t.len() - 1)
-                        .filter(|j| !extremes.contains(j))
-                        .map(|j| (third(j + 1) - third(j)).abs())
-                        .sum())
-                })
-                .collect()
-        })
-        .collect();
-    let sums = match sums {
-        Ok(s) => s,
-        Err(e) => {
-            return Outcome::new(
-                "not computed",
-                "f64 (splines on certified knots)",
-                Verdict::Failed,
-                format!("a spline the claim needs could not be built: {e}"),
-            )
-        }
-    };
-    let reduced = sums.len() == 3
-        && sums[1..]
+    let computed = decided(|| {
+        let proven = proven.as_ref().map_err(Clone::clone)?;
+        let exact = exact_components();
+        let sums = proven
             .iter()
-            .all(|s| s.iter().zip(&sums[0]).all(|(a, b)| a < b));
-    let describe: Vec<String> = parametrizations
+            .map(|p| {
+                exact
+                    .iter()
+                    .map(|z| {
+                        let extremes = weak_extremes(z);
+                        let s = p.spline(&balls(z))?;
+                        let third = third_derivatives(&s, &p.h);
+                        Ok((1..p.knots.len() - 1)
+                            .filter(|j| !extremes.contains(j))
+                            .fold(Ball::zero_in(&BITS), |a, j| {
+                                a + &(third[j].clone() - &third[j - 1]).abs()
+                            }))
+                    })
+                    .collect::<Result<Vec<Ball>, String>>()
+            })
+            .collect::<Result<Vec<_>, String>>()?;
+        let reduced = sums.len() == 3
+            && sums[1..]
+                .iter()
+                .all(|s| s.iter().zip(&sums[0]).all(|(a, b)| a < b));
+        Ok((sums, reduced))
+    });
+    let (sums, reduced) = match computed {
+        Ok(c) => c,
+        Err(e) => return Outcome::failed(scalar, e),
+    };
+    let describe: Vec<String> = proven
         .iter()
+        .flatten()
         .zip(&sums)
-        .map(|((n, _), s)| format!("{n}: x {}, y {}", fmt(s[0], 4), fmt(s[1], 4)))
+        .map(|(k, s)| {
+            format!(
+                "{}: x {}, y {}",
+                k.name,
+                crate::report::number::ball(&s[0], 4),
+                crate::report::number::ball(&s[1], 4)
+            )
+        })
         .collect();
     Outcome::new(
         describe.join("; "),
-        "f64 (splines on certified knots)",
+        scalar,
         if reduced { Verdict::Reproduced } else { Verdict::Discrepancy },
-        "natural cubic splines of the Table II components; at each interior knot that is not a relative extreme of that component's \
-         data, the jump of the (piecewise constant) third derivative, summed per component. A relative extreme is an interior knot \
-         whose two data differences do not share a sign (so both ends of a repeated value, as y has, count as extremes). Criterion: both sums smaller for t^EX and \
-         for t^AP than for chord length",
+        "natural cubic splines of the Table II components, in ball arithmetic at 256 bits on the proven knots (as \
+         marin.fig3_5.second_derivatives); at each interior knot that is not a relative extreme of that component's data, the jump \
+         of the (piecewise constant) third derivative, summed per component. A relative extreme is an interior knot whose two data \
+         differences do not share a sign (so both ends of a repeated value, as y has, count as extremes), decided on the exact data. \
+         Criterion: both sums smaller for t^EX and for t^AP than for chord length, decided on disjoint enclosures",
     )
 }
 
 /// The interior indices j whose data differences z_j − z_{j−1} and z_{j+1} − z_j do not share
 /// a sign: the relative extremes, with both ends of a plateau (a repeated value) among them.
-/// Decided on the data as given (Table II's decimals, exact in f64's comparisons).
-fn weak_extremes(z: &[f64]) -> Vec<usize> {
+/// Decided on the exact data.
+fn weak_extremes(z: &[BigRational]) -> Vec<usize> {
+    let zero = BigRational::default();
     (1..z.len().saturating_sub(1))
-        .filter(|&j| (z[j] - z[j - 1]) * (z[j + 1] - z[j]) <= 0.0)
+        .filter(|&j| (z[j].clone() - &z[j - 1]) * (z[j + 1].clone() - &z[j]) <= zero)
         .collect()
 }
 

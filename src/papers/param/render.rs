@@ -164,11 +164,12 @@ fn second_derivatives(p: &PlaneSection) -> String {
         .zip(&p.second_derivatives)
         .map(|((name, _), comps)| {
             std::iter::once(name.to_string())
-                .chain(
-                    comps
-                        .iter()
-                        .flat_map(|(peak, jumps)| [fmt(*peak, 4), fmt(*jumps, 4)]),
-                )
+                .chain(comps.iter().flat_map(|(peak, jumps)| {
+                    [
+                        crate::report::number::ball(peak, 4),
+                        crate::report::number::ball(jumps, 4),
+                    ]
+                }))
                 .collect()
         })
         .collect();
@@ -238,17 +239,23 @@ fn robot(r: &RobotSection) -> String {
             TABLE7[c]
                 .iter()
                 .zip(&r.from_printed[c])
-                .map(|(s, x)| marked(s, Some(two_digit_units(*x, s))))
+                .map(|(s, x)| marked(s, Some(two_digit_units(x, s).to_f64())))
                 .collect(),
         ));
         body.push(row(
             format!("{} computed (printed t)", NAMES[c]),
-            r.from_printed[c].iter().map(|x| fmt(*x, 3)).collect(),
+            r.from_printed[c]
+                .iter()
+                .map(|x| fmt(x.to_f64(), 3))
+                .collect(),
         ));
         body.push(row(
             format!("{} computed (our t)", NAMES[c]),
             match &r.from_ours[c] {
-                Some(ours) => ours.iter().map(|x| fmt(*x, 3)).collect(),
+                Some(ours) => ours
+                    .iter()
+                    .map(|x| crate::report::number::ball(x, 3))
+                    .collect(),
                 None => vec!["—".into(); 6],
             },
         ));
@@ -282,8 +289,8 @@ fn fig9(
                 r.parametrization.clone(),
                 r.overshooting.to_string(),
                 format!("{} (data: {})", r.extrema_between_data, r.data_extrema),
-                fmt(r.largest.approx, 4),
-                r.largest.digits.to_string(),
+                crate::report::number::ball(&r.largest, 4),
+                r.largest.proven_digits().0.to_string(),
             ]
         })
         .collect();
@@ -292,7 +299,7 @@ fn fig9(
         "overshooting intervals",
         "extrema between data points",
         "largest excursion (rad)",
-        "certified digits",
+        "proven digits",
     ];
     let axis: Vec<f64> = TABLE4.iter().map(|r| num(r[FIG9_AXIS]).to_f64()).collect();
     let mut drawn: Vec<(String, Vec<f64>)> = (0..3)
@@ -313,7 +320,7 @@ fn fig9(
     let range = axis_range(&TABLE4.iter().map(|r| num(r[FIG9_AXIS])).collect::<Vec<_>>());
     format!(
         "## Fig. 9: axis #3 on each parametrization\n\nAn interval overshoots when the spline leaves the range of its two end values \
-         (Corollary 3 (i)); the excursion is exact from the roots of θ′, certified by 128/256 bits. Extrema between data points are the spline's \
+         (Corollary 3 (i)); the excursion is enclosed from the roots of θ′ in balls at 256 bits, every decision proven. Extrema between data points are the spline's \
          local extrema strictly between knots, beside the data's interior extrema: more of them than of the data's are unwanted \
          oscillations. The axis #3 data span {} rad.\n\n{}\n\
          ![Fig. 9: axis #3 natural cubic spline on each parametrization](./{})\n\n",

@@ -4,12 +4,13 @@ use super::super::{Ledger, Outcome, Verdict};
 use super::data::{ROBOT_ALPHA, TABLE4, TABLE5, TABLE6, TABLE7};
 use super::num;
 use super::one_d::compare_balls_with_printed;
+use super::proven_splines::{balls, decided, max_abs_second, ProvenKnots};
 use crate::algo::param::descent::{descend, polish};
 use crate::algo::param::natural::NaturalCubicSpline;
-use crate::algo::param::objective::{chord_length_spacing, knots_from_spacing, Objective};
-use crate::algo::param::proven::prove_minimum;
+use crate::algo::param::objective::Objective;
+use crate::algo::param::proven::{prove_minimum, ProvenMinimum};
 use crate::scalar::ball::Ball;
-use crate::scalar::{Field, Float, Real};
+use crate::scalar::{BigRational, Field, Float};
 
 /// Rows of a transcribed table as points in `T`.
 fn points<T: Field, const K: usize>(rows: &[[&str; K]], ctx: &T::Ctx) -> Vec<Vec<T>> {
@@ -18,12 +19,12 @@ fn points<T: Field, const K: usize>(rows: &[[&str; K]], ctx: &T::Ctx) -> Vec<Vec
         .collect()
 }
 
-/// Normalized accumulated chord length knots (Eq. 5) of points given row by row.
-fn chord<T: Real>(p: &[Vec<T>]) -> Vec<T> {
-    let components: Vec<Vec<T>> = (0..p[0].len())
+/// Normalized accumulated chord length (Eq. 5) of points given row by row, proven.
+fn chord(name: &'static str, p: &[Vec<Ball>]) -> ProvenKnots {
+    let components: Vec<Vec<Ball>> = (0..p.first().map_or(0, Vec::len))
         .map(|c| p.iter().map(|row| row[c].clone()).collect())
         .collect();
-    knots_from_spacing(&chord_length_spacing(&components), &p[0][0].ctx())
+    ProvenKnots::chord(name, &components)
 }
 
 fn printed(col: usize) -> Vec<&'static str> {
@@ -60,34 +61,68 @@ fn mids(knots: &[Ball]) -> Vec<Float> {
     knots.iter().map(|k| k.mid().clone()).collect()
 }
 
-/// max |θ_j''| on [0, 1] for each axis (θ'' is piecewise linear: the maximum is at a knot).
+/// The Table IV axes as exact rationals.
+fn axes() -> Vec<Vec<BigRational>> {
+    let th = points::<BigRational, 6>(&TABLE4, &());
+    (0..6)
+        .map(|j| th.iter().map(|r| r[j].clone()).collect())
+        .collect()
+}
+
+/// max |θ_j''| on [0, 1] for each axis, exactly, on exact knots (the printed Table VI columns):
+/// θ'' is piecewise linear, so the maximum is at a knot.
 ///
 /// # Errors
 /// The spline's error, naming the axis.
-fn max_accelerations(t: &[f64]) -> Result<Vec<f64>, String> {
-    let th = points::<f64, 6>(&TABLE4, &());
-    (0..6)
-        .map(|j| {
-            let z: Vec<f64> = th.iter().map(|r| r[j]).collect();
+fn max_accelerations(t: &[BigRational]) -> Result<Vec<BigRational>, String> {
+    axes()
+        .into_iter()
+        .enumerate()
+        .map(|(j, z)| {
             let s = NaturalCubicSpline::new(t.to_vec(), z)
                 .map_err(|e| format!("the spline of axis {}: {e}", j + 1))?;
-            Ok(s.second_derivatives_at_knots()
-                .iter()
-                .fold(0.0f64, |a, x| a.max(x.abs())))
+            max_abs_second(&s).ok_or_else(|| format!("axis {}: no knots", j + 1))
         })
         .collect()
 }
 
-/// The unit of the second significant digit of a printed Table VII value (e.g. 10 for "310").
-fn two_digit_unit(printed: &str) -> f64 {
-    let p = num(printed).to_f64();
-    10f64.powi(p.abs().log10().floor() as i32 - 1)
+/// The same on proven knots (our columns), enclosed.
+///
+/// # Errors
+/// The spline's error, naming the axis.
+fn proven_max_accelerations(knots: &ProvenKnots) -> Result<Vec<Ball>, String> {
+    axes()
+        .iter()
+        .enumerate()
+        .map(|(j, z)| {
+            let s = knots
+                .spline(&balls(z))
+                .map_err(|e| format!("axis {}: {e}", j + 1))?;
+            max_abs_second(&s).ok_or_else(|| format!("axis {}: no knots", j + 1))
+        })
+        .collect()
+}
+
+/// The unit of the second significant digit of a printed Table VII value (e.g. 10 for "310"),
+/// exactly.
+fn two_digit_unit(printed: &str) -> BigRational {
+    let p = num(printed).abs();
+    let ten = BigRational::from_integer(10.into());
+    // The power of ten of the leading digit, 10^e ≤ p < 10^(e+1), found exactly.
+    let mut power = BigRational::from_integer(1.into());
+    while power > p {
+        power /= &ten;
+    }
+    while power.clone() * &ten <= p {
+        power *= &ten;
+    }
+    power / ten
 }
 
 /// The difference of `x` from the printed value in units of its second significant digit
-/// (within ½: `x` rounds to it, e.g. 314 → "310").
-pub fn two_digit_units(x: f64, printed: &str) -> f64 {
-    (x - num(printed).to_f64()).abs() / two_digit_unit(printed)
+/// (within ½: `x` rounds to it, e.g. 314 → "310"), exact.
+pub fn two_digit_units(x: &BigRational, printed: &str) -> BigRational {
+    (x.clone() - num(printed)).abs() / two_digit_unit(printed)
 }
 
 /// Tables VI and VII computed.
@@ -98,50 +133,55 @@ pub struct RobotSection {
     pub work_centre: Vec<Float>,
     /// t^AP: the Eq. 34 minimizer (empty if the minimization failed).
     pub approx: Vec<f64>,
-    /// Table VII: max |θ_j''| for t^CL, t^WC, t^AP on the printed knots (empty when a spline
-    /// could not be built: the Table VII claims then fail with the error).
-    pub from_printed: Vec<Vec<f64>>,
+    /// The same, proven (`None` if it was not).
+    pub approx_knots: Option<ProvenKnots>,
+    /// Table VII: max |θ_j''| for t^CL, t^WC, t^AP on the printed knots, exact (empty when a
+    /// spline could not be built: the Table VII claims then fail with the error).
+    pub from_printed: Vec<Vec<BigRational>>,
     /// The same on our knots (`None` where our column is missing: t^AP's minimization failed).
     pub from_ours: OurAccelerations,
 }
 
-/// Table VII's values on our knots, per parametrization (`None` where our column is missing).
-pub type OurAccelerations = Vec<Option<Vec<f64>>>;
+/// Table VII's values on our proven knots, per parametrization (`None` where our column is
+/// missing).
+pub type OurAccelerations = Vec<Option<Vec<Ball>>>;
 
 /// The parametrizations of Tables VI–VII, in column order.
 pub const NAMES: [&str; 3] = ["t^CL", "t^WC", "t^AP"];
 
 /// Tables VI and VII into the ledger.
 pub fn section(ledger: &mut Ledger) -> RobotSection {
-    let th256 = points::<Float, 6>(&TABLE4, &256);
-    let chord_balls = chord(&points::<Ball, 6>(&TABLE4, &256));
+    let chord_knots = chord("t^CL", &points::<Ball, 6>(&TABLE4, &256));
+    let chord_balls = &chord_knots.knots;
     ledger.record(
         "marin.table6.chord_6d",
         compared(
-            &chord_balls,
+            chord_balls,
             0,
             "Eq. 5 with Euclidean distances between consecutive 6-D joint vectors of Table IV, in ball arithmetic at 256 bits; each \
              printed value compared with every point of its knot's enclosure within half a unit of its last decimal"
                 .into(),
         ),
     );
-    let chord = mids(&chord_balls);
-    let work_centre = work_centre_claim(ledger);
-    let approx = approx_claim(ledger, &chord, &th256);
-    let printed_t = |c: usize| -> Vec<f64> { printed(c).iter().map(|s| num(s).to_f64()).collect() };
+    let chord = mids(chord_balls);
+    let work_centre_knots = work_centre_claim(ledger);
+    let work_centre = mids(&work_centre_knots.knots);
+    let (approx, approx_knots) = approx_claim(ledger, &chord);
+    let printed_t = |c: usize| -> Vec<BigRational> { printed(c).iter().map(|s| num(s)).collect() };
     let ours = [
-        chord.iter().map(Field::to_f64).collect::<Vec<_>>(),
-        work_centre.iter().map(Field::to_f64).collect(),
-        approx.clone(),
+        Some(chord_knots.clone()),
+        Some(work_centre_knots),
+        approx_knots.clone(),
     ];
-    let accelerations = || -> Result<(Vec<Vec<f64>>, OurAccelerations), String> {
+    let accelerations = || -> Result<(Vec<Vec<BigRational>>, OurAccelerations), String> {
         let from_printed = (0..3)
             .map(|c| max_accelerations(&printed_t(c)))
             .collect::<Result<_, _>>()?;
-        let from_ours = ours
-            .iter()
-            .map(|t| (t.len() == 21).then(|| max_accelerations(t)).transpose())
-            .collect::<Result<_, _>>()?;
+        let from_ours = decided(|| {
+            ours.iter()
+                .map(|k| k.as_ref().map(proven_max_accelerations).transpose())
+                .collect::<Result<_, _>>()
+        })?;
         Ok((from_printed, from_ours))
     };
     let (from_printed, from_ours) = match accelerations() {
@@ -156,7 +196,7 @@ pub fn section(ledger: &mut Ledger) -> RobotSection {
         Err(e) => {
             for id in ["marin.table7.max_acceleration", "marin.table7.reduction"] {
                 let why = format!("Table VII could not be computed: {e}");
-                ledger.record(id, Outcome::new("", "f64", Verdict::Failed, why));
+                ledger.record(id, Outcome::failed("rational", why));
             }
             (Vec::new(), Vec::new())
         }
@@ -165,14 +205,16 @@ pub fn section(ledger: &mut Ledger) -> RobotSection {
         chord,
         work_centre,
         approx,
+        approx_knots,
         from_printed,
         from_ours,
     }
 }
 
-/// Table VI, t^WC, and what the printed column is consistent with.
-fn work_centre_claim(ledger: &mut Ledger) -> Vec<Float> {
-    let wc = chord(&points::<Ball, 3>(&TABLE5, &256));
+/// Table VI, t^WC, and what the printed column is consistent with; returns the proven knots.
+fn work_centre_claim(ledger: &mut Ledger) -> ProvenKnots {
+    let wc_knots = chord("t^WC", &points::<Ball, 3>(&TABLE5, &256));
+    let wc = &wc_knots.knots;
     let p_wc: Vec<f64> = printed(1).iter().map(|s| num(s).to_f64()).collect();
     let pts: Vec<Vec<f64>> = points::<f64, 3>(&TABLE5, &());
     let seg: Vec<f64> = (1..21)
@@ -204,7 +246,7 @@ fn work_centre_claim(ledger: &mut Ledger) -> Vec<Float> {
     ledger.record(
         "marin.table6.chord_wc",
         compared(
-            &wc,
+            wc,
             1,
             format!(
                 "Eq. 5 with Euclidean distances between consecutive Table V work-centre positions, in ball arithmetic at 256 bits; each \
@@ -223,48 +265,37 @@ fn work_centre_claim(ledger: &mut Ledger) -> Vec<Float> {
             ),
         ),
     );
-    mids(&wc)
+    wc_knots
 }
 
-/// Table VI, t^AP: Eq. 34 with α = (1, 1, 2, 6, 6, 6), gradient projection from t^CL then
-/// Newton at 256 bits. Returns the knots in f64 (empty if the minimization failed).
-fn approx_claim(ledger: &mut Ledger, cl: &[Float], th256: &[Vec<Float>]) -> Vec<f64> {
-    let z64: Vec<Vec<f64>> = (0..6)
-        .map(|j| {
-            points::<f64, 6>(&TABLE4, &())
-                .iter()
-                .map(|r| r[j])
-                .collect()
-        })
-        .collect();
-    let a64: Vec<f64> = ROBOT_ALPHA.iter().map(|&a| a as f64).collect();
-    let h0: Vec<f64> = cl
-        .windows(2)
-        .map(|w| (w[1].clone() - &w[0]).to_f64())
-        .collect();
-    let ap = descend(h0, &z64, &a64, Objective::Approximate, &mut |_, _| {})
-        .ok()
-        .and_then(|rough| {
-            let bits = 256;
-            let z: Vec<Vec<Float>> = (0..6)
-                .map(|j| th256.iter().map(|r| r[j].clone()).collect())
-                .collect();
-            let a: Vec<Float> = ROBOT_ALPHA
-                .iter()
-                .map(|&v| Float::with_val(bits, v))
-                .collect();
-            polish(&rough, &z, &a, Objective::Approximate)
-                .ok()
-                .map(|h| (h, rough.iterations))
-        });
-    let Some((h, iterations)) = ap else {
-        ledger.record(
-            "marin.table6.approx",
-            Outcome::failed("ball:256", "the minimization failed"),
-        );
-        return Vec::new();
-    };
+/// The minimizer of Eq. 34 on the Table IV axes with weights `alpha`: gradient projection in
+/// f64 from the spacings `h0`, Newton's method at 256 bits, then Krawczyk's test in balls
+/// ([`prove_minimum`]); with the number of gradient-projection iterations.
+///
+/// # Errors
+/// Which stage failed, with its error.
+pub fn robot_minimizer(alpha: &[i64], h0: Vec<f64>) -> Result<(ProvenMinimum, usize), String> {
     let bits = 256;
+    let axes = |rows: Vec<Vec<Float>>| -> Vec<Vec<Float>> {
+        (0..6)
+            .map(|j| rows.iter().map(|r| r[j].clone()).collect())
+            .collect()
+    };
+    let z64: Vec<Vec<f64>> = axes(points::<Float, 6>(&TABLE4, &53))
+        .iter()
+        .map(|c| c.iter().map(Float::to_f64).collect())
+        .collect();
+    let a64: Vec<f64> = alpha.iter().map(|&a| a as f64).collect();
+    let rough = descend(h0, &z64, &a64, Objective::Approximate, &mut |_, _| {})
+        .map_err(|e| format!("gradient projection: {e}"))?;
+    let a: Vec<Float> = alpha.iter().map(|&v| Float::with_val(bits, v)).collect();
+    let h = polish(
+        &rough,
+        &axes(points::<Float, 6>(&TABLE4, &bits)),
+        &a,
+        Objective::Approximate,
+    )
+    .map_err(|e| format!("Newton's method: {e}"))?;
     let zb: Vec<Vec<Ball>> = (0..6)
         .map(|j| {
             points::<Ball, 6>(&TABLE4, &bits)
@@ -273,15 +304,23 @@ fn approx_claim(ledger: &mut Ledger, cl: &[Float], th256: &[Vec<Float>]) -> Vec<
                 .collect()
         })
         .collect();
-    let ab: Vec<Ball> = ROBOT_ALPHA
-        .iter()
-        .map(|&v| Ball::from_i64(v, &bits))
+    let ab: Vec<Ball> = alpha.iter().map(|&v| Ball::from_i64(v, &bits)).collect();
+    let proven = prove_minimum(&h, &zb, &ab, Objective::Approximate).map_err(|e| e.to_string())?;
+    Ok((proven, rough.iterations))
+}
+
+/// Table VI, t^AP: Eq. 34 with α = (1, 1, 2, 6, 6, 6), gradient projection from t^CL then
+/// Newton at 256 bits. Returns the knots in f64 (empty if the minimization failed).
+fn approx_claim(ledger: &mut Ledger, cl: &[Float]) -> (Vec<f64>, Option<ProvenKnots>) {
+    let h0: Vec<f64> = cl
+        .windows(2)
+        .map(|w| (w[1].clone() - &w[0]).to_f64())
         .collect();
-    let proven = match prove_minimum(&h, &zb, &ab, Objective::Approximate) {
-        Ok(p) => p,
+    let (proven, iterations) = match robot_minimizer(&ROBOT_ALPHA, h0) {
+        Ok(m) => m,
         Err(e) => {
             ledger.record("marin.table6.approx", Outcome::failed("ball:256", e));
-            return Vec::new();
+            return (Vec::new(), None);
         }
     };
     let widest = proven.knots.iter().map(Ball::rad).fold(0.0, f64::max);
@@ -300,38 +339,53 @@ fn approx_claim(ledger: &mut Ledger, cl: &[Float], th256: &[Vec<Float>]) -> Vec<
         ),
     );
     let t = mids(&proven.knots);
-    t.iter().map(Field::to_f64).collect()
+    (
+        t.iter().map(Field::to_f64).collect(),
+        Some(ProvenKnots::minimizer("t^AP", &proven)),
+    )
 }
 
 /// Table VII: each printed value against the one computed on the printed knots.
-fn table7_outcome(from_printed: &[Vec<f64>], from_ours: &OurAccelerations) -> Outcome {
+fn table7_outcome(from_printed: &[Vec<BigRational>], from_ours: &OurAccelerations) -> Outcome {
     let mut mismatches = Vec::new();
     let mut short = Vec::new();
-    let mut largest_units = 0.0f64;
+    let half = BigRational::new(1.into(), 2.into());
+    let mut largest_units = BigRational::default();
     for c in 0..3 {
         for j in 0..6 {
-            let units = two_digit_units(from_printed[c][j], TABLE7[c][j]);
-            largest_units = largest_units.max(units);
-            if units > 0.5 {
+            let units = two_digit_units(&from_printed[c][j], TABLE7[c][j]);
+            if units > largest_units {
+                largest_units = units.clone();
+            }
+            if units > half {
+                let value = fmt(from_printed[c][j].to_f64(), 3);
                 short.push(format!(
-                    "{} axis {}: computed {} where the paper prints {}",
+                    "{} axis {}: computed {value} where the paper prints {}",
                     NAMES[c],
                     j + 1,
-                    fmt(from_printed[c][j], 3),
                     TABLE7[c][j]
                 ));
                 mismatches.push(format!(
-                    "{} axis {}: printed {}, computed {} ({units:.2} units of the second digit; from our {} : {})",
+                    "{} axis {}: printed {}, computed {value} ({:.2} units of the second digit; from our {} : {})",
                     NAMES[c],
                     j + 1,
                     TABLE7[c][j],
-                    fmt(from_printed[c][j], 3),
+                    units.to_f64(),
                     NAMES[c],
-                    from_ours[c].as_ref().map_or("—".into(), |o| fmt(o[j], 3))
+                    from_ours[c].as_ref().map_or("—".into(), |o| crate::report::number::ball(&o[j], 3))
                 ));
             }
         }
     }
+    // The verdict's thresholds (½ and 1 unit) are decided on the exact largest difference.
+    let one = BigRational::from_integer(1.into());
+    let verdict = if largest_units <= half {
+        Verdict::Reproduced
+    } else if largest_units <= one {
+        Verdict::ReproducedRounding
+    } else {
+        Verdict::Discrepancy
+    };
     Outcome::new(
         format!(
             "{} of 18 printed values agree to their two significant digits{}",
@@ -342,12 +396,14 @@ fn table7_outcome(from_printed: &[Vec<f64>], from_ours: &OurAccelerations) -> Ou
                 format!("; {}", short.join("; "))
             }
         ),
-        "f64 (natural splines on the printed knots)",
-        Verdict::by_printed_units(largest_units),
+        "rational (our knots' values shown from ball:256)",
+        verdict,
         format!(
-            "natural cubic spline of each Table IV axis on the printed Table VI parametrization; θ'' is piecewise linear, so its maximum modulus \
-             is at a knot; a printed value agrees when the computed one rounds to it at two significant digits (the verdict follows the \
-             largest difference in units of the second digit: {largest_units:.2}). Disagreements: {mismatches:?}"
+            "natural cubic spline of each Table IV axis on the printed Table VI parametrization, exactly in rationals; θ'' is piecewise \
+             linear, so its maximum modulus is at a knot; a printed value agrees when the computed one rounds to it at two significant \
+             digits (the verdict follows the largest difference in units of the second digit, exact: {:.2}). Disagreements: \
+             {mismatches:?}",
+            largest_units.to_f64()
         ),
     )
 }
@@ -358,30 +414,35 @@ fn table7_outcome(from_printed: &[Vec<f64>], from_ours: &OurAccelerations) -> Ou
 /// decided only up to that rounding: each printed value stands for an interval of half a unit
 /// of its second digit, and an axis counts surely when the smallest ratio those intervals
 /// allow is ≥ 2, possibly when the largest is. The count computed on the printed knots is
-/// given beside it.
-fn reduction_outcome(from_printed: &[Vec<f64>]) -> Outcome {
+/// given beside it. Every number is exact.
+fn reduction_outcome(from_printed: &[Vec<BigRational>]) -> Outcome {
     let (cl_acc, wc_acc, ap_acc) = (&from_printed[0], &from_printed[1], &from_printed[2]);
+    let two = BigRational::from_integer(2.into());
+    let smaller = |a: &BigRational, b: &BigRational| if a < b { a.clone() } else { b.clone() };
     let vs_both = (0..6)
-        .filter(|&j| cl_acc[j].min(wc_acc[j]) >= 2.0 * ap_acc[j])
+        .filter(|&j| smaller(&cl_acc[j], &wc_acc[j]) >= two.clone() * &ap_acc[j])
         .count();
     // The printed Table VII, each value as the interval its rounding allows.
     let interval = |c: usize, j: usize| {
-        let (p, u) = (num(TABLE7[c][j]).to_f64(), two_digit_unit(TABLE7[c][j]));
-        (p - u / 2.0, p + u / 2.0)
+        let (p, half_unit) = (num(TABLE7[c][j]), two_digit_unit(TABLE7[c][j]) / &two);
+        (p.clone() - &half_unit, p + half_unit)
     };
-    let ratio_bounds: Vec<(f64, f64)> = (0..6)
+    let ratio_bounds: Vec<(BigRational, BigRational)> = (0..6)
         .map(|j| {
             let ((cl_lo, cl_hi), (wc_lo, wc_hi), (ap_lo, ap_hi)) =
                 (interval(0, j), interval(1, j), interval(2, j));
-            (cl_lo.min(wc_lo) / ap_hi, cl_hi.min(wc_hi) / ap_lo)
+            (
+                smaller(&cl_lo, &wc_lo) / ap_hi,
+                smaller(&cl_hi, &wc_hi) / ap_lo,
+            )
         })
         .collect();
-    let surely = ratio_bounds.iter().filter(|b| b.0 >= 2.0).count();
-    let possibly = ratio_bounds.iter().filter(|b| b.1 >= 2.0).count();
+    let surely = ratio_bounds.iter().filter(|b| b.0 >= two).count();
+    let possibly = ratio_bounds.iter().filter(|b| b.1 >= two).count();
     let printed_count = (0..6)
         .filter(|&j| {
-            let p = |c: usize| num(TABLE7[c][j]).to_f64();
-            p(0).min(p(1)) >= 2.0 * p(2)
+            let p = |c: usize| num(TABLE7[c][j]);
+            smaller(&p(0), &p(1)) >= two.clone() * &p(2)
         })
         .count();
     // Clause 4: a count has no last digit. It is taken on computed values (our maxima on the
@@ -392,27 +453,28 @@ fn reduction_outcome(from_printed: &[Vec<f64>]) -> Outcome {
     } else {
         Verdict::Discrepancy
     };
+    let ratio = |a: &BigRational, b: &BigRational| fmt((a.clone() / b).to_f64(), 3);
     let ratios: Vec<String> = (0..6)
         .map(|j| {
             format!(
                 "axis {}: {}× / {}× (printed values allow {}…{})",
                 j + 1,
-                fmt(cl_acc[j] / ap_acc[j], 3),
-                fmt(wc_acc[j] / ap_acc[j], 3),
-                fmt(ratio_bounds[j].0, 3),
-                fmt(ratio_bounds[j].1, 3)
+                ratio(&cl_acc[j], &ap_acc[j]),
+                ratio(&wc_acc[j], &ap_acc[j]),
+                fmt(ratio_bounds[j].0.to_f64(), 3),
+                fmt(ratio_bounds[j].1.to_f64(), 3)
             )
         })
         .collect();
     Outcome::new(
         format!("factor ≥ 2 against both other parametrizations on {vs_both} of 6 axes on the printed knots; the printed Table VII values give {printed_count}, and their rounding allows {surely} to {possibly}"),
-        "f64",
+        "rational",
         verdict,
         format!(
-            "ratios of max |θ''| of t^CL and of t^WC to that of t^AP on the printed parametrizations, with the range of the smaller ratio that \
-             the two-digit printed Table VII values allow: {}. The statement counts five axes; a count has no last digit (clause 4), \
-             so it is reproduced when both counts, on our maxima and on the printed values, are five, and a discrepancy otherwise \
-             (the ranges of the printed rounding are information, not a criterion: {surely} to {possibly} axes)",
+            "ratios of max |θ''| of t^CL and of t^WC to that of t^AP on the printed parametrizations (exact), with the range of the \
+             smaller ratio that the two-digit printed Table VII values allow: {}. The statement counts five axes; a count has no last \
+             digit (clause 4), so it is reproduced when both counts, on our maxima and on the printed values, are five, and a \
+             discrepancy otherwise (the ranges of the printed rounding are information, not a criterion: {surely} to {possibly} axes)",
             ratios.join("; ")
         ),
     )
