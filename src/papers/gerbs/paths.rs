@@ -1,8 +1,7 @@
 //! Path checks: Algorithm 2 (interpolation, tangent direction, curvature continuity), the
 //! BFBS/ERBS and Dubins comparisons of Figs. 6–7, and locality.
 
-use super::basis::fmt_e;
-use super::setup::{bfbs_path, erbs_path, spec, ErbsSet, HI, LO, RADIUS};
+use super::setup::{bfbs_path, erbs_path, proven_erbs, spec, ErbsSet, HI, LO, RADIUS};
 use crate::algo::gerbs::bfbs::Bfbs;
 use crate::algo::gerbs::dubins::{through_poses, DubinsPath};
 use crate::algo::gerbs::path::{
@@ -10,72 +9,85 @@ use crate::algo::gerbs::path::{
 };
 use crate::algo::gerbs::{Blend, Side};
 use crate::papers::{Outcome, Verdict};
+use crate::scalar::ball::Ball;
 use crate::scalar::certify::certify;
-use crate::scalar::Float;
+use crate::scalar::{Field, Float, Real};
 
-/// Per-waypoint quantities at the knots of one path, at one precision.
+/// Per-waypoint quantities at the knots of one path, enclosed (ball arithmetic).
 pub(super) struct KnotData {
-    interp: Float,
-    along: Vec<Float>,
-    kappa_jump: Float,
-    rate_jump: Float,
+    /// The largest squared distance |p(t_k) − W|² over the waypoints.
+    interp_squared: Ball,
+    /// cos of the angle between p′(t_k) and m_i, per waypoint.
+    along: Vec<Ball>,
+    /// The largest |κ(t_k⁺) − κ(t_k⁻)| over the interior knots.
+    kappa_jump: Ball,
+    /// The largest |κ′(t_k⁺) − κ′(t_k⁻)| over the interior knots.
+    rate_jump: Ball,
 }
 
+impl KnotData {
+    /// A proven upper bound of the largest interpolation error |p(t_k) − W|.
+    fn interp_bound(&self) -> f64 {
+        self.interp_squared.abs_upper().sqrt() * (1.0 + f64::EPSILON)
+    }
+}
+
+/// [`KnotData`] of a path in balls: each waypoint's knot evaluated from the side that holds
+/// it (the knots are exact, so no side is guessed).
 #[allow(clippy::needless_range_loop)] // i indexes waypoints, tangents and knots together
-pub(super) fn knot_data<B: Blend<Float>>(path: &GerbsPath<Float, B>, bits: u32) -> KnotData {
-    let w = super::setup::waypoints::<Float>(&bits);
+pub(super) fn knot_data<B: Blend<Ball>>(path: &GerbsPath<Ball, B>, bits: u32) -> KnotData {
+    let w = super::setup::waypoints::<Ball>(&bits);
     let n = w.len();
-    let mut interp = Float::with_val(bits, 0);
+    let zero = Ball::zero_in(&bits);
+    let (mut interp_squared, mut kappa_jump, mut rate_jump) =
+        (zero.clone(), zero.clone(), zero.clone());
     let mut along = Vec::new();
-    let mut kappa_jump = Float::with_val(bits, 0);
-    let mut rate_jump = Float::with_val(bits, 0);
     for i in 0..n {
-        let t = path.knots().at(i + 2).clone();
-        let right = path
-            .at(&t, if i == n - 1 { Side::Left } else { Side::Right })
-            .expect("t within the knots");
-        let left = path
-            .at(&t, if i == 0 { Side::Right } else { Side::Left })
-            .expect("t within the knots");
-        let d = ((right.point[0].clone() - &w[i][0]).square()
-            + (right.point[1].clone() - &w[i][1]).square())
-        .sqrt();
-        if d > interp {
-            interp = d;
-        }
+        let right = path.at_knot(i + 2, if i == n - 1 { Side::Left } else { Side::Right });
+        let left = path.at_knot(i + 2, if i == 0 { Side::Right } else { Side::Left });
+        let sq = |x: Ball| x.clone() * &x;
+        let d = sq(right.point[0].clone() - &w[i][0]) + &sq(right.point[1].clone() - &w[i][1]);
+        interp_squared = interp_squared.max_with(&d);
         let m = &path.tangents().m[i];
-        let speed = (right.d1[0].clone().square() + right.d1[1].clone().square()).sqrt();
-        along.push((right.d1[0].clone() * &m[0] + right.d1[1].clone() * &m[1]) / speed);
+        let speed = (sq(right.d1[0].clone()) + &sq(right.d1[1].clone())).sqrt();
+        along.push((right.d1[0].clone() * &m[0] + &(right.d1[1].clone() * &m[1])) / &speed);
         if i > 0 && i < n - 1 {
             let kj = (right.curvature.clone() - &left.curvature).abs();
             let rj = (right.curvature_rate.clone() - &left.curvature_rate).abs();
-            if kj > kappa_jump {
-                kappa_jump = kj;
-            }
-            if rj > rate_jump {
-                rate_jump = rj;
-            }
+            kappa_jump = kappa_jump.max_with(&kj);
+            rate_jump = rate_jump.max_with(&rj);
         }
     }
     KnotData {
-        interp,
+        interp_squared,
         along,
         kappa_jump,
         rate_jump,
     }
 }
 
-/// Algorithm 2 interpolates the waypoints: the largest error at 128 and 256 bits.
-fn interpolation_outcome(worst: &(Float, Float)) -> Outcome {
+/// An upper bound in the report's scientific style.
+fn upper(x: f64) -> String {
+    // Scientific at every size: a column holds bounds of 1e-76 and of 82.
+    let x = Float::with_val(53, x);
+    format!(
+        "≤ {}",
+        crate::report::number::bound_text(&x, 2, rug::float::Round::Up)
+    )
+}
+
+/// Algorithm 2 interpolates the waypoints: a proven bound of the largest error.
+fn interpolation_outcome(worst: f64) -> Outcome {
     Outcome::new(
         format!(
-            "max |p(t_k) − W_(k−1)| over the 5 waypoints, both bases and arc conventions: {} (256 bits), {} (128 bits)",
-            fmt_e(&worst.1),
-            fmt_e(&worst.0)
+            "max |p(t_k) − W_(k−1)| over the 5 waypoints, both bases and arc conventions: {}",
+            upper(worst)
         ),
-        "mpfr:128, mpfr:256",
-        Verdict::holds(worst.1 < Float::with_val(HI, 1e-70)),
-        "at t_k, B_k = 1 and the local curve passes through its waypoint at u = 1/2 (arcs) or the line's end",
+        "ball:256",
+        Verdict::holds(worst < 1e-70),
+        "at t_k, B_k = 1 and the local curve passes through its waypoint at u = 1/2 (arcs) or the line's end; the paths in ball \
+         arithmetic at 256 bits (the ERBS basis with its integrals proven by Taylor models, `ProvenErbs`), every knot evaluated \
+         exactly on its side; the bound is the largest upper end over the waypoints",
     )
 }
 
@@ -87,9 +99,11 @@ fn tangent_outcome(printed_backwards: &[String], fixed_backwards: usize) -> Outc
             if printed_backwards.is_empty() { "no waypoint".into() } else { printed_backwards.join(", ") },
             fixed_backwards
         ),
-        "mpfr:256",
+        "ball:256",
         if printed_backwards.is_empty() && fixed_backwards == 0 { Verdict::Reproduced } else { Verdict::Discrepancy },
-        "p′(t_k) = c′(t_k) since B_k′(t_k) = 0; the printed angles decrease from θ₁ to θ₂ (clockwise), right for a right turn (s = −1), backwards for a left turn (s = +1): the cosine of the angle between p′ and m_i is −1 there",
+        "p′(t_k) = c′(t_k) since B_k′(t_k) = 0; the printed angles decrease from θ₁ to θ₂ (clockwise), right for a right turn (s = −1), \
+         backwards for a left turn (s = +1): the cosine of the angle between p′ and m_i is −1 there; each sign decided on its \
+         enclosure (ball arithmetic at 256 bits)",
     )
 }
 
@@ -100,79 +114,114 @@ fn curvature_outcome(kappa: &[String], kappa_ok: bool) -> Outcome {
             "largest one-sided curvature jump at the interior knots: {}",
             kappa.join("; ")
         ),
-        "mpfr:128, mpfr:256",
+        "ball:256",
         Verdict::holds(kappa_ok),
-        "κ from Taylor series of the path to order 3 at each knot from both sides; the jump of dκ/dt is in the table (BFBS i = 2 is C² only, so κ′ may jump)",
+        "κ from Taylor series of the path to order 3 at each knot from both sides, in ball arithmetic at 256 bits (criterion: every \
+         jump's upper bound below 1e-60); the jump of dκ/dt is in the table (BFBS i = 2 is C² only, so κ′ may jump)",
     )
+}
+
+/// The sign of a ball: `Some(true)` when positive, `Some(false)` when negative, `None` when
+/// the enclosure holds 0.
+fn sign(x: &Ball) -> Option<bool> {
+    if x.lower() > 0 {
+        Some(true)
+    } else if x.upper() < 0 {
+        Some(false)
+    } else {
+        None
+    }
 }
 
 /// Interpolation, tangent direction (both arc conventions) and curvature continuity.
 pub fn algorithm2() -> (Outcome, Outcome, Outcome, Vec<Vec<String>>) {
     let mut table = Vec::new();
-    let mut worst_interp = (Float::with_val(LO, 0), Float::with_val(HI, 0));
+    let mut worst_interp = 0.0f64;
     let mut printed_backwards = Vec::new();
     let mut fixed_backwards = 0;
     let mut kappa = Vec::new();
     let mut kappa_ok = true;
+    let mut undecided = Vec::new();
     // Turn signs of Algorithm 1 (the same for every basis and arc convention).
     let turns = tangents(&super::setup::waypoints::<f64>(&()))
         .expect("documented waypoints are valid")
         .s;
+    // The basis does not depend on the arcs: its proven integrals are computed once.
+    let basis = proven_erbs(HI, ErbsSet::Smooth);
     for (name, conv) in [
         ("printed", ArcConvention::AsPrinted),
         ("turn direction", ArcConvention::TurnDirection),
     ] {
         for kind in ["BFBS", "ERBS"] {
-            let data = |bits: u32| match kind {
-                "BFBS" => knot_data(&bfbs_path::<Float>(&bits, conv), bits),
-                _ => knot_data(&erbs_path::<Float>(&bits, ErbsSet::Smooth, conv), bits),
+            let data = match kind {
+                "BFBS" => Ok(knot_data(&bfbs_path::<Ball>(&HI, conv), HI)),
+                _ => basis.clone().and_then(|b| {
+                    let path = GerbsPath::new(&spec::<Ball>(&HI, conv), b);
+                    path.map(|p| knot_data(&p, HI)).map_err(|e| e.to_string())
+                }),
             };
-            let (lo, hi) = (data(LO), data(HI));
-            if hi.interp > worst_interp.1 {
-                worst_interp = (lo.interp.clone(), hi.interp.clone());
-            }
-            let signs: Vec<String> = hi
-                .along
-                .iter()
-                .map(|a| {
-                    let v = a.to_f64();
-                    let plus = if v >= 0.0 { "+" } else { "" };
-                    format!("{plus}{}", crate::report::number::sig(v, 4))
-                })
-                .collect();
-            for (i, a) in hi.along.iter().enumerate() {
-                if a.is_sign_negative() {
-                    match conv {
-                        ArcConvention::AsPrinted => printed_backwards.push(format!(
-                            "{kind} W{} (s = {:+})",
-                            i + 1,
-                            turns[i]
-                        )),
-                        ArcConvention::TurnDirection => fixed_backwards += 1,
+            let data = match data {
+                Ok(d) => d,
+                Err(e) => {
+                    let failed = || Outcome::failed("ball:256", format!("the {kind} path: {e}"));
+                    return (failed(), failed(), failed(), table);
+                }
+            };
+            worst_interp = worst_interp.max(data.interp_bound());
+            for (i, a) in data.along.iter().enumerate() {
+                match (sign(a), conv) {
+                    (None, _) => undecided.push(format!("{kind}/{name} W{}", i + 1)),
+                    (Some(true), _) => {}
+                    (Some(false), ArcConvention::AsPrinted) => {
+                        printed_backwards.push(format!("{kind} W{} (s = {:+})", i + 1, turns[i]))
                     }
+                    (Some(false), ArcConvention::TurnDirection) => fixed_backwards += 1,
                 }
             }
-            let kc = certify(&lo.kappa_jump, &hi.kappa_jump);
-            if hi.kappa_jump > Float::with_val(HI, 1e-60) {
-                kappa_ok = false;
-            }
-            kappa.push(format!("{kind}/{name}: {}", fmt_e(&hi.kappa_jump)));
-            table.push(vec![
-                kind.to_string(),
-                name.to_string(),
-                fmt_e(&hi.interp),
-                signs.join(", "),
-                format!("{} ({} digits agree)", fmt_e(&hi.kappa_jump), kc.digits),
-                fmt_e(&hi.rate_jump),
-            ]);
+            let jump = data.kappa_jump.abs_upper();
+            kappa_ok &= jump < 1e-60;
+            kappa.push(format!("{kind}/{name}: {}", upper(jump)));
+            table.push(algorithm2_row(kind, name, &data));
         }
     }
+    let tangent = if undecided.is_empty() {
+        tangent_outcome(&printed_backwards, fixed_backwards)
+    } else {
+        Outcome::failed(
+            "ball:256",
+            format!("tangent direction not decided at {undecided:?}"),
+        )
+    };
     (
-        interpolation_outcome(&worst_interp),
-        tangent_outcome(&printed_backwards, fixed_backwards),
+        interpolation_outcome(worst_interp),
+        tangent,
         curvature_outcome(&kappa, kappa_ok),
         table,
     )
+}
+
+/// One row of the report's Algorithm 2 table: bounds and the cosines' shared digits.
+fn algorithm2_row(kind: &str, name: &str, data: &KnotData) -> Vec<String> {
+    let signs: Vec<String> = data
+        .along
+        .iter()
+        .map(|a| {
+            let text = crate::report::number::ball(a, 4);
+            if a.lower() >= 0 {
+                format!("+{text}")
+            } else {
+                text
+            }
+        })
+        .collect();
+    vec![
+        kind.to_string(),
+        name.to_string(),
+        upper(data.interp_bound()),
+        signs.join(", "),
+        upper(data.kappa_jump.abs_upper()),
+        upper(data.rate_jump.abs_upper()),
+    ]
 }
 
 /// The largest distance between the BFBS and ERBS paths (turn-direction arcs) and where it
@@ -406,13 +455,13 @@ pub fn locality() -> Outcome {
 }
 
 /// The documented BFBS path (arcs in the turn direction) and a variant of it whose spec
-/// `edit` changes, both at 256 bits (`None` for the variant if it cannot be built).
+/// `edit` changes, both in balls at 256 bits (`None` for the variant if it cannot be built).
 fn bfbs_and_variant(
-    edit: impl FnOnce(&mut PathSpec<Float>),
-) -> (GerbsPath<Float, Bfbs>, Option<GerbsPath<Float, Bfbs>>) {
+    edit: impl FnOnce(&mut PathSpec<Ball>),
+) -> (GerbsPath<Ball, Bfbs>, Option<GerbsPath<Ball, Bfbs>>) {
     let conv = ArcConvention::TurnDirection;
-    let base = bfbs_path::<Float>(&HI, conv);
-    let mut variant = spec::<Float>(&HI, conv);
+    let base = bfbs_path::<Ball>(&HI, conv);
+    let mut variant = spec::<Ball>(&HI, conv);
     edit(&mut variant);
     let built = GerbsPath::new(&variant, base.blend().clone()).ok();
     (base, built)
@@ -422,30 +471,32 @@ fn bfbs_and_variant(
 /// (steps 9–13) and then lost. That Algorithm 2 needs it: the BFBS path with the arcs swept in
 /// the turn direction, once with Algorithm 1's s and once with every s = +1 (what a reader
 /// without s might pass); the sign of the path's curvature at each interior waypoint against
-/// the turn, at 256 bits.
+/// the turn, in balls at 256 bits.
 pub fn algorithm1_returns_s() -> Outcome {
+    let scalar = "ball:256";
     let (with_s, without) =
         bfbs_and_variant(|spec| spec.turns = Some(vec![1; spec.waypoints.len()]));
     let s = with_s.tangents().s.clone();
     let Some(without) = without else {
-        return Outcome::new(
-            "",
-            "mpfr:256",
-            Verdict::Failed,
-            "the path without s could not be built",
-        );
+        return Outcome::failed(scalar, "the path without s could not be built");
     };
-    // Interior waypoint i is knot t_{i+2}; the turn there is s_i (+1 left, −1 right).
-    let wrong_way = |path: &GerbsPath<Float, _>| -> Vec<String> {
-        (1..s.len() - 1)
-            .filter(|&i| {
-                let kappa = path.at_knot(i + 2, Side::Right).curvature;
-                (s[i] > 0 && !kappa.is_sign_positive()) || (s[i] < 0 && !kappa.is_sign_negative())
-            })
-            .map(|i| format!("W{} (s = {:+})", i + 1, s[i]))
-            .collect()
+    // Interior waypoint i is knot t_{i+2}; the turn there is s_i (+1 left, −1 right). A
+    // curvature whose enclosure holds 0 is not decided.
+    let wrong_way = |path: &GerbsPath<Ball, _>| -> Result<Vec<String>, String> {
+        let mut wrong = Vec::new();
+        for (i, turn) in s.iter().enumerate().take(s.len() - 1).skip(1) {
+            let kappa = path.at_knot(i + 2, Side::Right).curvature;
+            let left = sign(&kappa).ok_or_else(|| format!("the curvature's sign at W{}", i + 1))?;
+            if left != (*turn > 0) {
+                wrong.push(format!("W{} (s = {turn:+})", i + 1));
+            }
+        }
+        Ok(wrong)
     };
-    let (with, without) = (wrong_way(&with_s), wrong_way(&without));
+    let (with, without) = match (wrong_way(&with_s), wrong_way(&without)) {
+        (Ok(a), Ok(b)) => (a, b),
+        (Err(e), _) | (_, Err(e)) => return Outcome::failed(scalar, format!("{e} is not decided")),
+    };
     let right_turns = s[1..s.len() - 1].iter().filter(|&&v| v < 0).count();
     Outcome::new(
         format!(
@@ -453,13 +504,14 @@ pub fn algorithm1_returns_s() -> Outcome {
             with.len(),
             if without.is_empty() { "no waypoint".to_string() } else { without.join(", ") }
         ),
-        "mpfr:256",
+        scalar,
         if with.is_empty() && right_turns > 0 && without.len() == right_turns { Verdict::Typo } else { Verdict::Failed },
         "Algorithm 2 builds each arc from s_i (generate_local_arc(R, θ_o, W_i, m_i, s_i)); Algorithm 1 computes s (steps 9–13) but \
          returns only m (step 14), while GENERATE_GERBS_PATH takes (W, m, s). The documented waypoints (setup::WAYPOINTS), BFBS \
-         i = 2, arcs swept in the turn direction; the signed curvature at each interior knot from exact Taylor series at 256 bits. \
-         Without its s every right turn (s = −1) bends left, away from the path to the next waypoint: the return statement lost \
-         s — one symbol, one consistent reading (return (m, s)), no number depends on it: clause 3",
+         i = 2, arcs swept in the turn direction; the signed curvature at each interior knot from Taylor series in ball arithmetic \
+         at 256 bits, each sign decided on its enclosure. Without its s every right turn (s = −1) bends left, away from the path to \
+         the next waypoint: the return statement lost s — one symbol, one consistent reading (return (m, s)), no number depends on \
+         it: clause 3",
     )
 }
 
@@ -469,38 +521,35 @@ pub fn algorithm1_returns_s() -> Outcome {
 /// i = 2, arcs in the turn direction, each local curve on its support's parameter
 /// u = (t − t_{k−1})/(t_{k+1} − t_{k−1}): at the end knots (t_1 = t_2, t_{n+1} = t_{n+2}) the
 /// path is the end curve at u = 0 and u = 1, where a line of Eqs. (23)–(24) is at its
-/// waypoint and an arc is θ_o away from it. At 256 bits.
+/// waypoint and an arc is θ_o away from it. In balls at 256 bits.
 pub fn end_curves() -> Outcome {
     use crate::algo::gerbs::path::EndCurves;
+    let scalar = "ball:256";
     let (lines, arcs) = bfbs_and_variant(|spec| spec.end_curves = EndCurves::Arcs);
     let Some(arcs) = arcs else {
-        return Outcome::new(
-            "",
-            "mpfr:256",
-            Verdict::Failed,
-            "the path with end arcs could not be built",
-        );
+        return Outcome::failed(scalar, "the path with end arcs could not be built");
     };
-    let (il, ia) = (knot_data(&lines, HI).interp, knot_data(&arcs, HI).interp);
+    let (il, ia) = (
+        knot_data(&lines, HI).interp_bound(),
+        knot_data(&arcs, HI).interp_squared.sqrt(),
+    );
     // The chord from an arc's end to its middle: 2R sin(θ_o/2), θ_o = π/8.
-    let chord = Float::with_val(HI, 2 * RADIUS)
-        * (Float::with_val(HI, rug::float::Constant::Pi) / Float::with_val(HI, 16)).sin();
-    let tiny = Float::with_val(HI, 1e-60);
-    let misses_by_chord = (ia.clone() - &chord).abs() < tiny;
+    let chord = Ball::from_i64(2 * RADIUS, &HI) * &(Ball::pi(&HI) / &Ball::from_i64(16, &HI)).sin();
+    let misses_by_chord = (ia.clone() - &chord).abs_upper() < 1e-60;
     Outcome::new(
         format!(
             "with lines at the ends (the text) the path interpolates every waypoint (largest distance {}); with arcs there (Algorithm 2 as printed) it misses the first and last waypoints by {} = 2R sin(θ_o/2)",
-            fmt_e(&il),
-            crate::scalar::certify::format_float_digits(&ia, 6)
+            upper(il),
+            crate::report::number::ball(&ia, 6)
         ),
-        "mpfr:256",
-        if il < tiny && misses_by_chord { Verdict::Discrepancy } else { Verdict::Failed },
+        scalar,
+        if il < 1e-60 && misses_by_chord { Verdict::Discrepancy } else { Verdict::Failed },
         "the documented waypoints (setup::WAYPOINTS), R = 80, θ_o = π/8, BFBS i = 2, arcs swept in the turn direction; once with \
          lines of length l = 2Rθ_o at the ends (l is not given in the paper), once with arcs there as Algorithm 2's loop over \
          i ∈ [1, n] builds them; each local curve on its support's parameter (Algorithm 2 step 12 does not print the map; this \
          is the one with which the text's lines interpolate). At the end knots only the end curve is active, at u = 0 or 1: the \
          line's waypoint, but an arc's end, θ_o of arc (a chord of 2R sin(θ_o/2)) from the waypoint at its middle. Interpolation \
-         from exact Taylor series at the knots at 256 bits",
+         from Taylor series at the knots in ball arithmetic at 256 bits (bounds on every point of the enclosures)",
     )
 }
 

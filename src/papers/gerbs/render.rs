@@ -122,7 +122,7 @@ fn tables(r: &Results) -> String {
         ],
         &r.centre,
     ));
-    md.push_str("\n## Algorithm 2 at the waypoints\n\ncos(p′, m_i) at W1…W5 (turns: W2 right, W3 left, W4 right), the largest |p(t_k) − W|, and the largest one-sided jumps of κ and dκ/dt at the interior knots (256 bits; digits agreeing with 128 bits).\n\n");
+    md.push_str("\n## Algorithm 2 at the waypoints\n\ncos(p′, m_i) at W1…W5 (turns: W2 right, W3 left, W4 right), the largest |p(t_k) − W|, and the largest one-sided jumps of κ and dκ/dt at the interior knots, in ball arithmetic at 256 bits (upper bounds, and the digits each cosine's enclosure proves).\n\n");
     md.push_str(&table(
         &[
             "basis",

@@ -7,7 +7,10 @@
 use crate::algo::gerbs::bfbs::Bfbs;
 use crate::algo::gerbs::erbs::{CentreReading, Erbs, ErbsParams};
 use crate::algo::gerbs::path::{ArcConvention, GerbsPath, PathSpec};
+use crate::algo::gerbs::proven_erbs::ProvenErbs;
 use crate::algo::gerbs::Knots;
+use crate::curve::integral::IntegralOptions;
+use crate::scalar::ball::Ball;
 use crate::scalar::{Field, Real};
 
 /// Five waypoints (turns at W2: right, W3: left, W4: right).
@@ -91,4 +94,23 @@ pub fn erbs_path<T: Real>(
 ) -> GerbsPath<T, Erbs<T>> {
     GerbsPath::new(&spec(ctx, convention), erbs(ctx, set, CentreReading::Cited))
         .expect("documented waypoints are valid")
+}
+
+/// The ERBS basis in balls at `bits` with its integrals proven ([`ProvenErbs`]): Taylor models
+/// of order bits/6 (clamped to 12…40), as `run gerbs-path --scalar ball:…` builds it.
+///
+/// # Errors
+/// The basis error, as text.
+pub fn proven_erbs(bits: u32, set: ErbsSet) -> Result<ProvenErbs, String> {
+    let options = IntegralOptions {
+        order: (bits as usize / 6).clamp(12, 40),
+        ..IntegralOptions::default()
+    };
+    ProvenErbs::new(
+        &fig1_knots::<Ball>(&bits),
+        vec![set.params::<Ball>(&bits)],
+        CentreReading::Cited,
+        options,
+    )
+    .map_err(|e| e.to_string())
 }
