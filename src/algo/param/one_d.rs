@@ -316,8 +316,8 @@ pub fn parametrization_exact<T: Real>(
 /// The t in ψ's piece [a, b] = [t̂_{piece−1}, t̂_piece] with ψ(t) = target, ψ strictly
 /// monotone on [a, b] (rising when
 /// `increasing`) and the target strictly between ψ(a) and ψ(b); bisection until the bracket
-/// is as small as the precision allows. In ball arithmetic the bisection stops where ψ(mid)
-/// and the target can no longer be told apart, and the last bracket — proven to hold the
+/// is as small as the precision allows. In ball arithmetic the bisection stops where ψ at
+/// none of the middle, 3/8 and 5/8 of the bracket can be told from the target, and the last bracket — proven to hold the
 /// root — is returned as one ball ([`Field::hull`]).
 fn solve_monotone<T: Real>(
     psi: &NaturalCubicSpline<T>,
@@ -327,16 +327,23 @@ fn solve_monotone<T: Real>(
 ) -> T {
     let (a, b) = (&psi.knots()[piece - 1], &psi.knots()[piece]);
     let ctx = a.ctx();
-    let two = T::from_i64(2, &ctx);
     let (mut lo, mut hi) = (a.clone(), b.clone());
     let limit = T::epsilon(&ctx) * &(b.clone() - a);
     for _ in 0..(4 * T::precision_bits(&ctx) + 64) {
         if (hi.clone() - &lo).decide_lt(&limit) != Some(false) {
             break;
         }
-        let mid = (lo.clone() + &hi) / &two;
-        // ψ on its piece [a, b], named, not located by comparing a rounded mid.
-        let Some(below) = psi.eval_on(&mid, piece)[0].decide_lt(target) else {
+        // Split at the middle, or — when ψ there cannot be told from the target (the root may
+        // sit exactly at the middle: symmetric data put it there) — at 3/8 or 5/8 of the
+        // bracket, so that it keeps narrowing around such a root.
+        let width = hi.clone() - &lo;
+        let decided = [(1, 2), (3, 8), (5, 8)].iter().find_map(|&(n, d)| {
+            let split = lo.clone() + &(width.clone() * &T::from_ratio(n, d, &ctx));
+            // ψ on its piece [a, b], named, not located by comparing a rounded split.
+            let below = psi.eval_on(&split, piece)[0].decide_lt(target)?;
+            Some((split, below))
+        });
+        let Some((mid, below)) = decided else {
             break;
         };
         if below == increasing {

@@ -94,12 +94,7 @@ struct Results {
 
 /// Why each of this paper's claims that is only certified or floating is not proven (issue
 /// 36); the ledger appends the reason to the claim's evidence.
-const UNPROVEN: &[(&str, &str)] = &[
-    ("bspline.sec41.switching_times", SW),
-    ("bspline.sec41.amplitude", SW),
-    ("bspline.sec6.reconstruction", REC),
-];
-const SW: &str = "the numeric optimum is certified at 128 and 256 bits against the exact Q(√2) solution; a proof that the numeric optimizer's switching times are the exact ones needs interval Newton on the optimality system (the exact values themselves are exact)";
+const UNPROVEN: &[(&str, &str)] = &[("bspline.sec6.reconstruction", REC)];
 const REC: &str = "the fits are exact; the distances to the strokes are sampled in f64 (a proven maximum needs the rational splines evaluated in balls by branch and bound)";
 
 /// Run every check of paper 002 and build its report.

@@ -2,7 +2,9 @@
 //! digits in MPFR and checked exactly in Q(√2).
 
 use super::super::{Outcome, Verdict};
-use crate::algo::bspline::bang_bang::{amplitude, response, switching_times, terminal_residuals};
+use crate::algo::bspline::bang_bang::{
+    amplitude, exact_switching_times, response, switching_times, terminal_residuals,
+};
 use crate::algo::bspline::dual::certificate;
 use crate::algo::bspline::CardinalBSpline;
 use crate::scalar::certify::{certify, Certified};
@@ -71,27 +73,35 @@ pub fn section41(n: &Option<Numeric>) -> [Outcome; 4] {
     let system_holds = (1..=3u32)
         .all(|k| pow(&r[0], k) - &pow(&r[1], k) + &pow(&r[2], k) == e([2, 8, 32][k as usize - 1]));
     let terminal_zero = terminal_residuals(&printed).iter().all(Field::is_zero);
+    // The verdict rests on the exact checks in Q(√2) (and the uniqueness argument,
+    // bspline.sec41.unique); Newton's certified digits are a cross-check shown beside them.
+    let exact = exact_switching_times();
+    let exact_is_printed = exact.as_ref().is_some_and(|t| *t == printed);
+    let holds = system_holds && terminal_zero && exact_is_printed;
     let times = match n {
         Some(n) => {
             let ok = n.switches.iter().zip(&printed).all(|(c, x)| agrees(c, x));
             let digits = n.switches.iter().map(|c| c.digits).min().unwrap_or(0);
             Outcome::new(
-                format!("t = ({}, {}, {}) (≥ {digits} certified digits)", n.switches[0].text, n.switches[1].text, n.switches[2].text),
-                "mpfr:128/256",
-                if ok && system_holds && terminal_zero { Verdict::Reproduced } else { Verdict::Discrepancy },
                 format!(
-                    "Newton's method on ẍ(4) = ẋ(4) = x(4) = 0 for the unit bang-bang response (Eq. 8), started at the B-spline knots \
-                     (1, 2, 3), at 128 and 256 bits; agrees with 2 − √2, 2, 2 + √2 to every certified digit: {ok}. Exactly in Q(√2): \
-                     r = 4 − t satisfies r1 − r2 + r3 = 2, r1² − r2² + r3² = 8, r1³ − r2³ + r3³ = 32: {system_holds}; the terminal \
-                     state of the bang-bang response is exactly zero: {terminal_zero}"
+                    "t = (2 − √2, 2, 2 + √2) exactly; Newton at 128/256 bits: ({}, {}, {}) (≥ {digits} certified digits)",
+                    n.switches[0].text, n.switches[1].text, n.switches[2].text
+                ),
+                "Q(sqrt2) (mpfr:128/256 shown)",
+                if holds && ok { Verdict::Reproduced } else { Verdict::Discrepancy },
+                format!(
+                    "exactly in Q(√2): the elimination of Sec. 4.1 (p = r1 + r3 = 4, r1·r3 = 2, r2 = 2; \
+                     bang_bang::exact_switching_times) gives t = 2 − √2, 2, 2 + √2, the printed values: {exact_is_printed}; r = 4 − t \
+                     satisfies r1 − r2 + r3 = 2, r1² − r2² + r3² = 8, r1³ − r2³ + r3³ = 32: {system_holds}; the terminal state of the \
+                     bang-bang response is exactly zero: {terminal_zero}. Cross-check (not the basis): Newton's method on \
+                     ẍ(4) = ẋ(4) = x(4) = 0 for the unit bang-bang response (Eq. 8), started at the B-spline knots (1, 2, 3), at 128 \
+                     and 256 bits, agrees with them to every certified digit: {ok}"
                 ),
             )
         }
-        None => Outcome::new(
-            "Newton did not converge",
+        None => Outcome::failed(
             "mpfr:128/256",
-            Verdict::Failed,
-            "switching_times returned no solution",
+            "Newton's method for the switching times did not converge",
         ),
     };
     let unique = uniqueness();
@@ -99,11 +109,11 @@ pub fn section41(n: &Option<Numeric>) -> [Outcome; 4] {
     let printed_u = (e(2) + &QSqrt2::sqrt2()) / &e(2);
     let amp = match n {
         Some(n) => Outcome::new(
-            format!("U = {} = {} exactly", n.amplitude.text, exact_u.to_math_string()),
-            "mpfr:128/256 and Q(sqrt2)",
+            format!("U = {} exactly (Newton at 128/256 bits: {})", exact_u.to_math_string(), n.amplitude.text),
+            "Q(sqrt2) (mpfr:128/256 shown)",
             if exact_u == printed_u && agrees(&n.amplitude, &printed_u) { Verdict::Reproduced } else { Verdict::Discrepancy },
-            "U = ξ/x₁(2) with x₁ the unit-amplitude response and ξ = 2/3: exactly (2 + √2)/2 in Q(√2) (x₁(2) = (8 − 4√2)/6), and \
-             the certified MPFR value agrees with it",
+            "U = ξ/x₁(2) with x₁ the unit-amplitude response and ξ = 2/3, on the exact switching times: exactly (2 + √2)/2 in \
+             Q(√2) (x₁(2) = (8 − 4√2)/6), the basis of the verdict; the certified MPFR value, a cross-check, agrees with it",
         ),
         None => Outcome::new("", "mpfr", Verdict::Failed, "no numeric solution"),
     };

@@ -99,16 +99,12 @@ struct Results {
 /// Why each of this paper's claims that is only certified or floating is not proven (issue
 /// 36); the ledger appends the reason to the claim's evidence.
 const UNPROVEN: &[(&str, &str)] = &[
-    ("marin.cor3.properties", ONE),
-    ("marin.remark.existence", ONE),
     ("marin.eq30.nonincreasing", ITER),
     ("marin.eq30.always_improves", ITER),
     ("marin.fig2.plane_curves", SPLINE),
     ("marin.fig45.validity_of_34", SPLINE),
     ("marin.fig6.corner", SPLINE),
-    ("marin.case3.observations", ONE),
 ];
-const ONE: &str = "checked at one MPFR precision; the same checks in balls (the parametrizations are closed forms and the minimizers provable by Krawczyk) are not yet done";
 const ITER: &str = "the gradient-projection iterates are f64 numbers and G is evaluated exactly at each, so every number is exact once the iterates are taken as data; the label stays floating until the ledger can name that";
 const SPLINE: &str = "the splines on the knots are built and sampled in f64; they are piecewise cubics with exact data, so exact or ball evaluation would prove their maxima, jumps and distances (not yet done)";
 

@@ -9,7 +9,8 @@ use super::plane::components;
 use crate::algo::param::descent::descend;
 use crate::algo::param::natural::NaturalCubicSpline;
 use crate::algo::param::objective::{chord_length_spacing, objective, Objective};
-use crate::scalar::{BigRational, Field, Float};
+use crate::scalar::ball::Ball;
+use crate::scalar::{BigRational, Field, Real};
 
 type Q = BigRational;
 
@@ -96,21 +97,24 @@ pub fn nonincreasing_objective() -> Outcome {
 }
 
 /// G(h) as h_i = ε → 0 with the other spacings those of chord length rescaled to sum 1 − ε,
-/// at 256 bits, for ε = 10⁻², 10⁻⁴, …, 10⁻¹⁰.
-fn scaled_objective(z: &[Vec<Float>], i: usize) -> Option<Vec<Float>> {
+/// in balls at 256 bits, for ε = 10⁻², 10⁻⁴, …, 10⁻¹⁰ (each ε an exact rational, enclosed).
+fn scaled_objective(z: &[Vec<Ball>], i: usize) -> Result<Vec<Ball>, String> {
     let bits = 256;
     let chord = chord_length_spacing(z);
-    let others: Float = chord
+    let others = chord
         .iter()
         .enumerate()
         .filter(|(k, _)| *k != i)
-        .fold(Float::with_val(bits, 0), |acc, (_, x)| acc + x);
-    let ones = vec![Float::with_val(bits, 1); z.len()];
-    (1..=5)
+        .fold(Ball::zero_in(&bits), |acc, (_, x)| acc + x);
+    let ones = vec![Ball::one_in(&bits); z.len()];
+    (1..=5u32)
         .map(|e| {
-            let eps = Float::with_val(bits, rug::ops::Pow::pow(Float::with_val(bits, 10), -2 * e));
-            let rest = (Float::with_val(bits, 1) - &eps) / &others;
-            let h: Vec<Float> = chord
+            let eps = Ball::from_rational(
+                &Q::new(1.into(), num_bigint::BigInt::from(10).pow(2 * e)),
+                &bits,
+            );
+            let rest = (Ball::one_in(&bits) - &eps) / &others;
+            let h: Vec<Ball> = chord
                 .iter()
                 .enumerate()
                 .map(|(k, x)| {
@@ -121,56 +125,68 @@ fn scaled_objective(z: &[Vec<Float>], i: usize) -> Option<Vec<Float>> {
                     }
                 })
                 .collect();
-            objective(&h, z, &ones, Objective::Exact).ok()
+            objective(&h, z, &ones, Objective::Exact).map_err(|e| e.to_string())
         })
         .collect()
 }
 
+/// The observed power p of G ~ ε^(−p) over the last decade pair (ε from 1e-8 to 1e-10),
+/// enclosed: log₁₀(G_last/G_before)/2.
+fn observed_power(g: &[Ball], bits: u32) -> Ball {
+    let n = g.len();
+    (g[n - 1].clone() / &g[n - 2]).ln()
+        / &Ball::from_i64(10, &bits).ln()
+        / &Ball::from_i64(2, &bits)
+}
+
 /// Sec. 2, Remark (existence): z_i ≠ z_(i+1) makes G infinite as any h_i → 0.
 pub fn existence() -> Outcome {
-    let z = components::<Float>(&256);
+    let scalar = "ball:256";
+    let bits = 256;
+    let z = components::<Ball>(&bits);
     let mut repeated = z.clone();
     for c in repeated.iter_mut() {
         c[10] = c[9].clone(); // points 9 and 10 made equal
     }
-    // The observed power p of G ~ ε^(−p) over the last decade pair (ε from 1e-8 to 1e-10).
-    let power = |g: &[Float]| {
-        let n = g.len();
-        (g[n - 1].clone() / &g[n - 2]).log10().to_f64() / 2.0
+    let computed = super::proven_splines::decided(|| {
+        let mut rows = Vec::new();
+        let mut grows = true;
+        for i in [0usize, 9, 18] {
+            let g = scaled_objective(&z, i)?;
+            let power = observed_power(&g, bits);
+            // Unbounded: G increases at every step and like a positive power of 1/ε at the end.
+            let increasing = g.windows(2).all(|w| w[1] > w[0]);
+            grows &= increasing && power > Ball::from_ratio(1, 2, &bits);
+            rows.push(format!(
+                "h_{} → 0: G = {} at ε = 1e-10, G ~ ε^(−{})",
+                i + 1,
+                crate::report::number::ball(&g[g.len() - 1], 4),
+                crate::report::number::ball(&power, 4)
+            ));
+        }
+        let gq = scaled_objective(&repeated, 9)?;
+        let power = observed_power(&gq, bits);
+        let bounded = power.abs() < Ball::from_ratio(1, 100, &bits);
+        Ok((rows, grows, bounded, gq[gq.len() - 1].clone(), power))
+    });
+    let (rows, grows, bounded, last, last_power) = match computed {
+        Ok(c) => c,
+        Err(e) => return Outcome::failed(scalar, e),
     };
-    let mut rows = Vec::new();
-    let mut grows = true;
-    for i in [0usize, 9, 18] {
-        let Some(g) = scaled_objective(&z, i) else {
-            return Outcome::new("", "mpfr:256", Verdict::Failed, "a spline did not solve");
-        };
-        // Unbounded: G increases at every step and like a positive power of 1/ε at the end.
-        let increasing = g.windows(2).all(|w| w[1] > w[0]);
-        grows &= increasing && power(&g) > 0.5;
-        rows.push(format!(
-            "h_{} → 0: G = {:.3e} at ε = 1e-10, G ~ ε^(−{:.3})",
-            i + 1,
-            g[g.len() - 1].to_f64(),
-            power(&g)
-        ));
-    }
-    let Some(gq) = scaled_objective(&repeated, 9) else {
-        return Outcome::new("", "mpfr:256", Verdict::Failed, "a spline did not solve");
-    };
-    let bounded = power(&gq).abs() < 0.01;
     Outcome::new(
         format!(
-            "{}; with z_9 = z_10 and h_10 → 0, G → {:.4} (bounded, power {:.1e})",
+            "{}; with z_9 = z_10 and h_10 → 0, G → {} (bounded, power {})",
             rows.join("; "),
-            gq[gq.len() - 1].to_f64(),
-            power(&gq)
+            crate::report::number::ball(&last, 5),
+            crate::report::number::ball(&last_power, 2)
         ),
-        "mpfr:256",
+        scalar,
         Verdict::holds(grows && bounded),
-        "Table II data, exact objective (31) at 256 bits, h_i = ε = 1e-2, 1e-4, …, 1e-10 with the other spacings those of chord length \
-         rescaled to sum 1 − ε, for the first, a middle and the last interval. Criterion: G increases at every step and grows like a \
-         positive power of 1/ε over the last two decades (the observed power is in the result). The converse shows the assumption matters: with two equal consecutive points the same limit leaves G bounded (its power over \
-         the last decades below 0.01 in modulus)",
+        "Table II data, exact objective (31) in ball arithmetic at 256 bits, h_i = ε = 1e-2, 1e-4, …, 1e-10 with the other spacings \
+         those of chord length rescaled to sum 1 − ε, for the first, a middle and the last interval. Criterion: G increases at every \
+         step and grows like a positive power of 1/ε over the last two decades (the observed power, enclosed, is in the result), \
+         each comparison decided on disjoint enclosures. The converse shows the assumption matters: with two equal consecutive \
+         points the same limit leaves G bounded (its power over the last decades below 0.01 in modulus)",
     )
 }
 

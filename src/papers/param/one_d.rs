@@ -8,13 +8,12 @@ use crate::algo::param::descent::{descend, polish};
 use crate::algo::param::natural::NaturalCubicSpline;
 use crate::algo::param::objective::{objective, Objective};
 use crate::algo::param::one_d::{
-    chord_length_1d, classify, extreme_indices, minimizing_parametrization,
-    parametrization_with_shape, Case, Shape,
+    chord_length_1d, classify, minimizing_parametrization, parametrization_with_shape, Case, Shape,
 };
 use crate::algo::param::proven::prove_minimum;
 use crate::scalar::ball::Ball;
-use crate::scalar::certify::{certify, format_float_digits};
-use crate::scalar::{BigRational, Field, Float};
+use crate::scalar::certify::certify;
+use crate::scalar::{BigRational, Field, Float, Real};
 
 type Q = BigRational;
 
@@ -446,6 +445,7 @@ fn corollary_one() -> Outcome {
 
 /// Corollary 3 on Table I and random data.
 fn corollary_three() -> Outcome {
+    let scalar = "ball:256";
     let mut rng = SplitMix64::new(3);
     let mut sets: Vec<Vec<Q>> = vec![TABLE1.iter().map(|(z, _)| num(z)).collect()];
     for i in 0..4 {
@@ -453,87 +453,81 @@ fn corollary_three() -> Outcome {
     }
     let mut problems = Vec::new();
     for (s, z) in sets.iter().enumerate() {
-        if let Err(e) = corollary_three_on(s, &to_float(z, COROLLARY_BITS), &mut problems) {
-            return Outcome::new(
-                "not computed",
-                "mpfr:192",
-                Verdict::Failed,
-                format!("data set {s}: {e}"),
-            );
+        if let Err(e) = corollary_three_on(s, z, &mut problems) {
+            return Outcome::failed(scalar, format!("data set {s}: {e}"));
         }
     }
     Outcome::new(
         format!("(i)–(iii) hold on Table I and 4 random data sets ({} violations)", problems.len()),
-        "mpfr:192",
+        scalar,
         Verdict::holds(problems.is_empty()),
         format!(
-            "at the exact minimizing parametrization (192 bits): (i) on every interval θ stays between the interval's end values \
-             (its interior extrema, exact from the roots of the quadratic θ′, go beyond them by at most 1e-40); (ii) θ''' (constant per interval) is continuous at every knot that is not an endpoint or extreme; (iii) \
-             θ'' at each interior extreme equals −3 sgn(D)(Σ ε_j √|D_j|)² to 40 digits. Data: Table I (case II), two random case II and two \
-             random case III sets. Violations: {problems:?}"
+            "at the exact minimizing parametrization, in ball arithmetic at 256 bits (the case and the extremes decided on the exact \
+             ordinates, t* by Eqs. 9–10 in balls): (i) on every interval θ stays between the interval's end values (each root of \
+             the quadratic θ′ enclosed and θ enclosed over it: a proven bound of the excursion, at most 1e-40); (ii) θ''' (constant \
+             per interval) is continuous at every knot that is not an endpoint or extreme (each jump's proven bound at most 1e-30); \
+             (iii) θ'' at each interior extreme equals −3 sgn(D)(Σ ε_j √|D_j|)² (relative difference proven below 1e-40). Data: \
+             Table I (case II), two random case II and two random case III sets. Violations: {problems:?}"
         ),
     )
 }
 
-/// The precision of the Corollary 3 checks.
-const COROLLARY_BITS: u32 = 192;
-
-/// Corollary 3 (i)–(iii) on data set `s` with ordinates `zf`; each violation is pushed to
-/// `problems`.
+/// Corollary 3 (i)–(iii) on data set `s` with exact ordinates `z`, in balls at 256 bits; each
+/// violation (a proven bound above its tolerance) is pushed to `problems`.
 ///
 /// # Errors
-/// A computation the check needs that fails (the parametrization, the spline, the data's
-/// extremes), with its error: the claim then fails, it is not a violation.
-fn corollary_three_on(s: usize, zf: &[Float], problems: &mut Vec<String>) -> Result<(), String> {
-    let bits = COROLLARY_BITS;
-    let (t, _) = minimizing_parametrization(zf).map_err(|e| format!("the parametrization: {e}"))?;
-    let spline =
-        NaturalCubicSpline::new(t.clone(), zf.to_vec()).map_err(|e| format!("the spline: {e}"))?;
-    let tol = Float::with_val(bits, 1e-40);
-    // (i) no overshoot: on every interval θ stays between its end values (the excursion is
-    // exact from the roots of θ′; 1e-40 absorbs the rounding of the 192-bit spline).
-    for (i, excursion) in spline.overshoots().iter().enumerate() {
-        if *excursion > tol {
-            problems.push(format!("set {s}: overshoot on interval {}", i + 1));
+/// A computation the check needs that fails (the parametrization, the spline, a root that
+/// cannot be enclosed), with its error: the claim then fails, it is not a violation.
+fn corollary_three_on(s: usize, z: &[Q], problems: &mut Vec<String>) -> Result<(), String> {
+    let bits = 256;
+    let shape = Shape::of_exact(z).map_err(|e| format!("the data: {e}"))?;
+    let zb: Vec<Ball> = z.iter().map(|x| Ball::from_rational(x, &bits)).collect();
+    let (t, _) =
+        parametrization_with_shape(&zb, &shape).map_err(|e| format!("the parametrization: {e}"))?;
+    let spline = NaturalCubicSpline::with_increasing_knots(t.clone(), zb.clone())
+        .map_err(|e| format!("the spline: {e}"))?;
+    let h: Vec<Ball> = t.windows(2).map(|w| w[1].clone() - &w[0]).collect();
+    // (i) no overshoot.
+    for i in 1..t.len() {
+        let bound = super::proven_splines::overshoot_bound(&spline, &h[i - 1], i)
+            .ok_or_else(|| format!("θ′ on interval {i} could not be enclosed"))?;
+        if bound > 1e-40 {
+            problems.push(format!("set {s}: overshoot on interval {i}"));
         }
     }
-    // (ii) the third derivative jumps only at extremes.
-    let idx = extreme_indices(zf).map_err(|e| format!("the data's extremes: {e}"))?;
-    let m = spline.second_derivatives_at_knots();
-    let third = |i: usize| (m[i].clone() - &m[i - 1]) / (t[i].clone() - &t[i - 1]);
+    // (ii) the third derivative jumps only at extremes (decided on the exact data).
+    let idx = shape.extremes();
+    let third = super::proven_splines::third_derivatives(&spline, &h);
     for j in 1..t.len() - 1 {
-        if !idx.contains(&j) && (third(j + 1) - third(j)).abs() > Float::with_val(bits, 1e-30) {
+        if !idx.contains(&j) && (third[j].clone() - &third[j - 1]).abs_upper() > 1e-30 {
             problems.push(format!(
                 "set {s}: third-derivative jump at non-extreme knot {j}"
             ));
         }
     }
-    // (iii) θ″ at the interior extremes: −3 sgn(D)(Σ ε_j √|D_j|)².
-    let d: Vec<Float> = idx
-        .windows(2)
-        .map(|w| zf[w[1]].clone() - &zf[w[0]])
-        .collect();
+    // (iii) θ″ at the interior extremes: −3 sgn(D)(Σ ε_j √|D_j|)², D_j exact.
+    let d: Vec<Q> = idx.windows(2).map(|w| z[w[1]].clone() - &z[w[0]]).collect();
     let mm = d.len();
-    let root2 = Float::with_val(bits, 2).sqrt();
+    let root2 = Ball::from_i64(2, &bits).sqrt();
     let sum = d
         .iter()
         .enumerate()
-        .fold(Float::with_val(bits, 0), |acc, (j, x)| {
-            let r = x.clone().abs().sqrt();
-            acc + if j == 0 || j == mm - 1 { r } else { r * &root2 }
+        .fold(Ball::zero_in(&bits), |acc, (j, x)| {
+            let r = Ball::from_rational(&x.abs(), &bits).sqrt();
+            acc + &(if j == 0 || j == mm - 1 { r } else { r * &root2 })
         });
-    let peak = sum.square() * 3u32;
+    let peak = sum.clone() * &sum * &Ball::from_i64(3, &bits);
+    let m = spline.second_derivatives_at_knots();
     for k in 1..mm {
-        let expected = if d[k - 1] > 0 {
+        let expected = if d[k - 1] > Q::default() {
             -peak.clone()
         } else {
             peak.clone()
         };
-        let rel = ((m[idx[k]].clone() - &expected) / &expected).abs();
-        if rel > Float::with_val(bits, 1e-40) {
+        let rel = ((m[idx[k]].clone() - &expected) / &expected).abs_upper();
+        if rel > 1e-40 {
             problems.push(format!(
-                "set {s}: θ'' at extreme {k} off by {}",
-                format_float_digits(&rel, 3)
+                "set {s}: θ'' at extreme {k} off by up to {rel:.1e}"
             ));
         }
     }
