@@ -55,6 +55,11 @@ impl ProvenErbs {
         Ok(ProvenErbs { erbs, options })
     }
 
+    /// S_j = ∫ Ψ_j over its interval (Eq. 5), proven.
+    pub fn normalizer(&self, j: usize) -> &Ball {
+        self.erbs.normalizer(j)
+    }
+
     /// ∫_lo^hi Ψ_j, proven (an unbounded ball when it cannot be enclosed).
     pub fn integral(&self, knots: &Knots<Ball>, j: usize, lo: &Ball, hi: &Ball) -> Ball {
         proven_integral(&self.erbs, knots, j, lo, hi, &self.options)

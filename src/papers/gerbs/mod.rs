@@ -93,16 +93,12 @@ struct Results {
 /// Why each of this paper's claims that is only certified or floating is not proven (issue
 /// 36); the ledger appends the reason to the claim's evidence.
 const UNPROVEN: &[(&str, &str)] = &[
-    ("gerbs.partition_of_unity", ERBS),
-    ("gerbs.erbs.smoothness", ERBS),
-    ("gerbs.fig2.parameters", ERBS),
     ("gerbs.fig3.curvature_reduced", SAMPLED),
     ("gerbs.eq4.centre", SAMPLED),
     ("gerbs.fig6.bfbs_vs_erbs", SAMPLED),
     ("gerbs.fig7.dubins", SAMPLED),
     ("gerbs.locality", SAMPLED),
 ];
-const ERBS: &str = "the ERBS kernel's integrals run as MPFR quadratures here; the proven ERBS sweep of `run gerbs-path --scalar ball:…` (issue 39) encloses them, but these checks do not use it yet";
 const SAMPLED: &str = "a maximum or comparison over f64 samples of the path; a proven one needs the path in balls and a branch-and-bound search (not yet done)";
 
 /// Run every check of paper 003 and build its report.

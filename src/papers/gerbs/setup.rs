@@ -21,7 +21,7 @@ pub const LO: u32 = 128;
 pub const HI: u32 = 256;
 
 /// The ERBS parameter sets the report uses.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum ErbsSet {
     /// The Fig. 2 caption literally: α = 0, β = 3, γ = 1, σ = 0.2, λ = 0.5.
     Fig2Literal,
@@ -101,7 +101,24 @@ pub fn erbs_path<T: Real>(
 ///
 /// # Errors
 /// The basis error, as text.
+/// Each basis is built once per run and shared by the checks that need it (its proven
+/// integrals are the costly part).
 pub fn proven_erbs(bits: u32, set: ErbsSet) -> Result<ProvenErbs, String> {
+    type Cache =
+        std::sync::Mutex<std::collections::HashMap<(u32, ErbsSet), Result<ProvenErbs, String>>>;
+    static CACHE: std::sync::OnceLock<Cache> = std::sync::OnceLock::new();
+    let cache = CACHE.get_or_init(Default::default);
+    // A poisoned lock only means another check panicked; the entries stay valid.
+    let mut entries = cache
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner);
+    entries
+        .entry((bits, set))
+        .or_insert_with(|| build_proven_erbs(bits, set))
+        .clone()
+}
+
+fn build_proven_erbs(bits: u32, set: ErbsSet) -> Result<ProvenErbs, String> {
     let options = IntegralOptions {
         order: (bits as usize / 6).clamp(12, 40),
         ..IntegralOptions::default()
