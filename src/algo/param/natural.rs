@@ -10,6 +10,7 @@
 
 use crate::curve::parametric::{check_domain, CurveError, ParamCurve, ParamCurveArclen};
 use crate::numeric::quadrature::gauss_legendre4;
+use crate::scalar::ball::Ball;
 use crate::scalar::{max_of, Field, Real};
 
 /// Why a spline cannot be built.
@@ -362,6 +363,68 @@ impl<T: Field> NaturalCubicSpline<T> {
         let mut jet = vec![value, slope, curvature, third];
         jet.resize(order + 1, zero);
         Ok(jet)
+    }
+}
+
+impl NaturalCubicSpline<Ball> {
+    /// Where θ′ may vanish on piece i (1 ≤ i ≤ N) — root isolation in ball arithmetic, with
+    /// no comparison left undecided: θ′ is the quadratic A v² + B v + C in v = t − tᵢ₋₁ on
+    /// [0, hᵢ]. An empty list when θ′ is enclosed away from 0 over the whole piece (θ is
+    /// strictly monotone there: the enclosure of θ′ over the piece is computed by Horner's
+    /// rule on the interval [0, hᵢ]) or has no real root (the discriminant's enclosure is
+    /// negative); otherwise each real root's enclosure, clipped to [0, sup hᵢ] (a root proven
+    /// outside the piece is dropped). Every root of θ′ on the piece lies in one of the balls
+    /// returned; a ball need not hold a root (the discriminant may straddle 0).
+    ///
+    /// `None` for a piece index outside 1…N, or when a root cannot be enclosed (A may vanish
+    /// while θ′ may change sign: the quadratic formula would divide by a ball holding 0).
+    ///
+    /// ```
+    /// use trajverify::algo::param::natural::NaturalCubicSpline;
+    /// use trajverify::scalar::{ball::Ball, Field};
+    /// let ball = |n: i64| Ball::from_i64(n, &128);
+    /// // Data 0, 1, 0 on knots 0, 1, 2: θ rises on the first piece and turns at t = 1.
+    /// let s = NaturalCubicSpline::new(vec![ball(0), ball(1), ball(2)], vec![ball(0), ball(1), ball(0)])
+    ///     .unwrap();
+    /// let roots = s.slope_roots(1).unwrap();
+    /// // The extremum at t = 1 (v = h = 1): every root of θ′ on [0, 1] is in the balls.
+    /// assert!(roots.iter().any(|v| v.contains(&rug::Float::with_val(128, 1))));
+    /// assert_eq!(s.slope_roots(3), None);
+    /// ```
+    pub fn slope_roots(&self, i: usize) -> Option<Vec<Ball>> {
+        if i == 0 || i >= self.knots.len() {
+            return None;
+        }
+        let h = &self.spacings[i - 1];
+        let bits = h.mid().prec();
+        let m = &self.second;
+        let zero = Ball::zero_in(&bits);
+        let two = Ball::from_i64(2, &bits);
+        let a = (m[i].clone() - &m[i - 1]) / &(two.clone() * h);
+        let b = m[i - 1].clone();
+        let c = self.eval_offsets(h, &zero, i)[1].clone();
+        let piece = Ball::hull(&zero, h);
+        let slope = c.clone() + &(piece.clone() * &(b.clone() + &(piece * &a)));
+        let discriminant = b.clone() * &b - &(Ball::from_i64(4, &bits) * &a * &c);
+        if slope.lower() > 0 || slope.upper() < 0 || discriminant.upper() < 0 {
+            return Some(Vec::new());
+        }
+        if a.lower() <= 0 && a.upper() >= 0 {
+            return None;
+        }
+        // √ of the discriminant's non-negative part [max(lo, 0), hi].
+        let root = discriminant.max_with(&zero).sqrt();
+        let mut roots = Vec::new();
+        for sign in [-1i64, 1] {
+            let v = (-b.clone() + &(Ball::from_i64(sign, &bits) * &root)) / &(two.clone() * &a);
+            if v.upper() < 0 || v.lower() > h.upper() {
+                continue;
+            }
+            let low = v.lower().max(&rug::Float::with_val(bits, 0));
+            let high = v.upper().min(&h.upper());
+            roots.push(Ball::from_bounds(&low, &high));
+        }
+        Some(roots)
     }
 }
 

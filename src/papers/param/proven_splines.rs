@@ -14,7 +14,7 @@ use crate::algo::param::natural::NaturalCubicSpline;
 use crate::algo::param::objective::{chord_length_spacing, knots_from_spacing};
 use crate::algo::param::proven::ProvenMinimum;
 use crate::scalar::ball::{tally, Ball};
-use crate::scalar::{Field, Float, Real};
+use crate::scalar::{Field, Float};
 use rug::float::Round;
 
 /// The working precision of the proven parametrizations (bits).
@@ -126,55 +126,9 @@ pub fn decided<R>(f: impl FnOnce() -> Result<R, String>) -> Result<R, String> {
     Ok(value)
 }
 
-/// Where θ′ may vanish on piece i (1 ≤ i ≤ N) of a spline in balls, without deciding
-/// anything: θ′ is the quadratic A v² + B v + C in v = t − tᵢ₋₁ on [0, hᵢ]. `Some(vec![])` when
-/// θ′ is enclosed away from 0 over the whole piece (θ is strictly monotone there) or has no
-/// real root; otherwise each root's enclosure clipped to [0, sup hᵢ] (a root proven outside the
-/// piece is dropped). `None` when a root cannot be enclosed (A may vanish while θ′ may change
-/// sign).
-pub fn slope_roots(spline: &NaturalCubicSpline<Ball>, h: &Ball, i: usize) -> Option<Vec<Ball>> {
-    let bits = h.mid().prec();
-    let m = spline.second_derivatives_at_knots();
-    let zero = Ball::zero_in(&bits);
-    let two = Ball::from_i64(2, &bits);
-    let a = (m[i].clone() - &m[i - 1]) / &(two.clone() * h);
-    let b = m[i - 1].clone();
-    let c = spline.eval_offsets(h, &zero, i)[1].clone();
-    let piece = Ball::hull(&zero, h);
-    let slope = c.clone() + &(piece.clone() * &(b.clone() + &(piece * &a)));
-    let discriminant = b.clone() * &b - &(Ball::from_i64(4, &bits) * &a * &c);
-    if slope.lower() > 0 || slope.upper() < 0 || discriminant.upper() < 0 {
-        return Some(Vec::new());
-    }
-    if a.lower() <= 0 && a.upper() >= 0 {
-        return None;
-    }
-    // √ of the discriminant's non-negative part [max(lo, 0), hi].
-    let root = discriminant.max_with(&zero).sqrt();
-    let mut roots = Vec::new();
-    for sign in [-1i64, 1] {
-        let v = (-b.clone() + &(Ball::from_i64(sign, &bits) * &root)) / &(two.clone() * &a);
-        if v.upper() < 0 || v.lower() > h.upper() {
-            continue;
-        }
-        let low = if v.lower() < 0 {
-            Float::with_val(bits, 0)
-        } else {
-            v.lower()
-        };
-        let high = if v.upper() > h.upper() {
-            h.upper()
-        } else {
-            v.upper()
-        };
-        roots.push(Ball::from_bounds(&low, &high));
-    }
-    Some(roots)
-}
-
 /// A proven upper bound of how far the spline leaves the range of its end values on piece i
 /// — its overshoot (paper 004, Corollary 3 (i)): θ enclosed over each root of θ′
-/// ([`slope_roots`]) against the end values' range. `None` as [`slope_roots`].
+/// ([`NaturalCubicSpline::slope_roots`]) against the end values' range. `None` as that.
 pub fn overshoot_bound(spline: &NaturalCubicSpline<Ball>, h: &Ball, i: usize) -> Option<f64> {
     let bits = h.mid().prec();
     let zero = Ball::zero_in(&bits);
@@ -184,7 +138,7 @@ pub fn overshoot_bound(spline: &NaturalCubicSpline<Ball>, h: &Ball, i: usize) ->
     ];
     let (lo, hi) = (ends[0].min_with(&ends[1]), ends[0].max_with(&ends[1]));
     let mut worst = 0.0f64;
-    for v in slope_roots(spline, h, i)? {
+    for v in spline.slope_roots(i)? {
         let value = spline.eval_offsets(&(h.clone() - &v), &v, i)[0].clone();
         let above = Float::with_val(64, value.upper() - hi.lower()).to_f64_round(Round::Up);
         let below = Float::with_val(64, lo.upper() - value.lower()).to_f64_round(Round::Up);

@@ -298,7 +298,6 @@ pub fn case3_observations() -> Outcome {
 /// # Errors
 /// ψ's knots or spline, or a root of ψ′ that cannot be enclosed (the claim then fails).
 fn observation_ii(edited: &[Ball]) -> Result<bool, String> {
-    use super::proven_splines::slope_roots;
     use crate::algo::param::one_d::alternating;
     let bits = 256;
     let t_hat = alternating(edited).map_err(|e| format!("t̂: {e}"))?;
@@ -314,7 +313,8 @@ fn observation_ii(edited: &[Ball]) -> Result<bool, String> {
         let right = psi.eval_offsets(&zero, &h, k)[0].clone() - &edited[k];
         holds &= left.abs_upper() < 1e-70 && right.abs_upper() < 1e-70;
         let margin = h.clone() * &tiny;
-        let roots = slope_roots(&psi, &h, k)
+        let roots = psi
+            .slope_roots(k)
             .ok_or_else(|| format!("ψ′ on piece {k} could not be enclosed"))?;
         holds &= roots
             .iter()
