@@ -309,7 +309,8 @@ pub fn table2_no_problem(plane: &Result<Vec<ProvenKnots>, String>) -> Outcome {
         for k in plane {
             for (axis, z) in ["x", "y"].iter().zip(&table2()) {
                 let row = measure(k, z)?;
-                let range = Ball::from_rational(&exact_range(z), &BITS);
+                let range = exact_range(z).ok_or("an empty Table II component")?;
+                let range = Ball::from_rational(&range, &BITS);
                 let relative = row.largest.clone() / &range;
                 all_small &= relative < hundredth;
                 listing.push(format!(
@@ -338,9 +339,7 @@ pub fn table2_no_problem(plane: &Result<Vec<ProvenKnots>, String>) -> Outcome {
     )
 }
 
-/// max − min of a data column, exactly.
-fn exact_range(z: &[BigRational]) -> BigRational {
-    let max = z.iter().max().cloned().unwrap_or_default();
-    let min = z.iter().min().cloned().unwrap_or_default();
-    max - min
+/// max − min of a data column, exactly (`None` for an empty column).
+fn exact_range(z: &[BigRational]) -> Option<BigRational> {
+    Some(z.iter().max()?.clone() - z.iter().min()?)
 }
