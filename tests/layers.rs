@@ -13,6 +13,7 @@ const BUILDING_BLOCKS: &[&str] = &[
     "numeric::quat",
     "numeric::quadrature",
     "numeric::krawczyk",
+    "numeric::maximum",
     "curve",
 ];
 /// The algorithm modules: each may use every building block and none of the others.
@@ -30,7 +31,9 @@ const GROUPS: &[&str] = &["algo", "numeric"];
 fn allowed(module: &str) -> Option<Vec<&'static str>> {
     Some(match module {
         "scalar" | "ledger" | "algo" | "numeric" => vec![],
-        "numeric::linalg" | "numeric::quat" | "numeric::quadrature" => vec!["scalar"],
+        "numeric::linalg" | "numeric::quat" | "numeric::quadrature" | "numeric::maximum" => {
+            vec!["scalar"]
+        }
         "numeric::poly" | "numeric::krawczyk" => vec!["scalar", "numeric::linalg"],
         "curve" => vec![
             "scalar",
@@ -39,6 +42,7 @@ fn allowed(module: &str) -> Option<Vec<&'static str>> {
             "numeric::quat",
             "numeric::quadrature",
             "numeric::krawczyk",
+            "numeric::maximum",
         ],
         m if ALGORITHMS.contains(&m) => BUILDING_BLOCKS.to_vec(),
         // A study built on the algorithms (the PHODCOS and Hermite methods side by side).

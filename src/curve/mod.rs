@@ -6,6 +6,7 @@
 
 pub mod approx;
 pub mod bezier;
+pub mod distance;
 pub mod enclosure;
 pub mod expr;
 pub mod integral;

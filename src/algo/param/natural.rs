@@ -426,6 +426,63 @@ impl NaturalCubicSpline<Ball> {
         }
         Some(roots)
     }
+
+    /// The pieces i (1 ≤ i ≤ N) whose interval [tᵢ₋₁, tᵢ] may meet the box `x` (knots that
+    /// are balls count with their whole enclosure; a box beyond an end meets the end piece,
+    /// which extends there as in [`NaturalCubicSpline::eval_all`]).
+    pub fn pieces_meeting(&self, x: &Ball) -> Vec<usize> {
+        let n = self.knots.len() - 1;
+        let (lo, hi) = (x.lower(), x.upper());
+        (1..=n)
+            .filter(|&i| {
+                let before = i == 1 || self.knots[i - 1].lower() <= hi;
+                let after = i == n || self.knots[i].upper() >= lo;
+                before && after
+            })
+            .collect()
+    }
+
+    /// Enclosures of (θ, θ′, θ″, θ‴) over every t in the box `x`: each piece that may meet the
+    /// box ([`NaturalCubicSpline::pieces_meeting`]) evaluated on the whole box by the formulas
+    /// of [`NaturalCubicSpline::eval_offsets`] (natural interval evaluation), θ‴ = (mᵢ − mᵢ₋₁)/hᵢ
+    /// on a piece, and the hull taken over the pieces. This is an interval extension for a
+    /// proven search ([`crate::numeric::maximum::proven_maximum`]); since θ″ is continuous and
+    /// piecewise linear, θ‴'s hull also bounds θ″'s slope across a knot (a mean-value form of
+    /// θ″ is valid). A box straddling a knot that is itself a ball is handled by the hull.
+    ///
+    /// ```
+    /// use trajverify::algo::param::natural::NaturalCubicSpline;
+    /// use trajverify::scalar::{ball::Ball, Field};
+    /// use rug::Float;
+    /// let ball = |n: i64| Ball::from_i64(n, &128);
+    /// let s = NaturalCubicSpline::new(vec![ball(0), ball(1), ball(2)], vec![ball(0), ball(1), ball(0)])
+    ///     .unwrap();
+    /// let box_ = Ball::from_bounds(&Float::with_val(128, 0.5), &Float::with_val(128, 1.5));
+    /// let [value, _, _, _] = s.enclose_over(&box_);
+    /// // θ(1) = 1 lies in the box's enclosure, and so does θ(0.5).
+    /// assert!(value.contains(&Float::with_val(128, 1)));
+    /// assert!(value.contains(s.eval_all(&Ball::from_f64(0.5, &128))[0].mid()));
+    /// ```
+    pub fn enclose_over(&self, x: &Ball) -> [Ball; 4] {
+        let mut hull: Option<[Ball; 4]> = None;
+        for i in self.pieces_meeting(x) {
+            let (a, b) = (&self.knots[i - 1], &self.knots[i]);
+            let [value, slope, second] = self.eval_offsets(&(b.clone() - x), &(x.clone() - a), i);
+            let third = (self.second[i].clone() - &self.second[i - 1]) / &self.spacings[i - 1];
+            let piece = [value, slope, second, third];
+            hull = Some(match hull {
+                None => piece,
+                Some(h) => [0, 1, 2, 3].map(|k| Ball::hull(&h[k], &piece[k])),
+            });
+        }
+        // pieces_meeting always returns at least one piece (a spline has N ≥ 1 pieces and
+        // the first and last are taken beyond the ends); an empty hull cannot occur, but a
+        // ball of infinite radius would be the honest answer if it did.
+        hull.unwrap_or_else(|| {
+            let unknown = Ball::new(rug::Float::with_val(x.mid().prec(), 0), f64::INFINITY);
+            [unknown.clone(), unknown.clone(), unknown.clone(), unknown]
+        })
+    }
 }
 
 impl<T: Field> ParamCurve<T, 1> for NaturalCubicSpline<T> {
