@@ -1,7 +1,7 @@
 //! The Markdown report of paper 004, written from the checks' [`Results`](super::Results).
 
 use super::data::{TABLE1, TABLE3, TABLE4, TABLE6, TABLE7};
-use super::geometry::{four, CornerCurves, H1Row, CORNER};
+use super::geometry::{CornerCurves, H1Row, CORNER};
 use super::one_d::{printed_units, TableOne};
 use super::overshoot::{axis_range, OvershootRow, FIG9_AXIS};
 use super::plane::PlaneSection;
@@ -192,8 +192,8 @@ fn corner(c: &CornerCurves) -> String {
         "## Fig. 6: widely spaced data near a corner\n\nData (ours; the paper prints none): {:?}. Maximum distance of the parametric natural cubic spline from \
          the interpolating polygon: {} with chord length, {} with the minimizing parametrization (exact objective).\n\n![Fig. 6](./{ID}_fig6.svg)\n\n",
         CORNER,
-        four(c.distances.0),
-        four(c.distances.1)
+        number::ball(&c.distances.0, 4),
+        number::ball(&c.distances.1, 4)
     )
 }
 
