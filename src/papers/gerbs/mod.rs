@@ -94,10 +94,8 @@ struct Results {
 /// 36); the ledger appends the reason to the claim's evidence.
 const UNPROVEN: &[(&str, &str)] = &[
     ("gerbs.fig3.curvature_reduced", SAMPLED),
-    ("gerbs.eq4.centre", SAMPLED),
     ("gerbs.fig6.bfbs_vs_erbs", SAMPLED),
     ("gerbs.fig7.dubins", SAMPLED),
-    ("gerbs.locality", SAMPLED),
 ];
 const SAMPLED: &str = "a maximum or comparison over f64 samples of the path; a proven one needs the path in balls and a branch-and-bound search (not yet done)";
 

@@ -5,13 +5,13 @@ use super::setup::{bfbs_path, erbs_path, proven_erbs, spec, ErbsSet, HI, LO, RAD
 use crate::algo::gerbs::bfbs::Bfbs;
 use crate::algo::gerbs::dubins::{through_poses, DubinsPath};
 use crate::algo::gerbs::path::{
-    local_curves, tangents, ArcConvention, GerbsPath, PathPoint, PathSpec,
+    local_curves, tangents, ArcConvention, GerbsPath, LocalCurve, PathPoint, PathSpec,
 };
 use crate::algo::gerbs::{Blend, Side};
 use crate::papers::{Outcome, Verdict};
 use crate::scalar::ball::Ball;
 use crate::scalar::certify::certify;
-use crate::scalar::{Field, Float, Real};
+use crate::scalar::{BigRational, Field, Float, Real};
 
 /// Per-waypoint quantities at the knots of one path, enclosed (ball arithmetic).
 pub(super) struct KnotData {
@@ -405,53 +405,120 @@ pub fn against_dubins(erbs: &[PathPoint<f64>]) -> (Outcome, Vec<DubinsPath<f64>>
 
 /// Locality: move W3 with the tangents and turns of Algorithm 1 kept, then re-run Algorithm 1.
 pub fn locality() -> Outcome {
-    let conv = ArcConvention::TurnDirection;
-    let mut sp = spec::<f64>(&(), conv);
-    let tan = tangents(&sp.waypoints).expect("valid");
-    let base = bfbs_path::<f64>(&(), conv);
-    sp.waypoints[2] = [sp.waypoints[2][0] + 20.0, sp.waypoints[2][1] - 30.0];
-    let (moved_curves, _) = local_curves(&sp, Some(&tan)).expect("valid");
-    let kept = GerbsPath::from_parts(
-        base.knots().clone(),
-        base.blend().clone(),
-        moved_curves,
-        tan.clone(),
-    )
-    .expect("the base path's parts");
-    let rerun = GerbsPath::new(&sp, base.blend().clone()).expect("valid");
-    let changed = |p: &GerbsPath<f64, crate::algo::gerbs::bfbs::Bfbs>| -> (f64, f64, f64) {
-        let (mut lo, mut hi, mut outside) = (f64::INFINITY, f64::NEG_INFINITY, 0.0f64);
-        for i in 0..=1000 {
-            let t = i as f64 / 1000.0;
-            let (a, b) = (
-                base.at(&t, Side::Right).expect("t within the knots"),
-                p.at(&t, Side::Right).expect("t within the knots"),
-            );
-            if a.point != b.point {
-                lo = lo.min(t);
-                hi = hi.max(t);
-            }
-            if !(0.25..=0.75).contains(&t) {
-                outside = outside.max(
-                    (a.point[0] - b.point[0])
-                        .abs()
-                        .max((a.point[1] - b.point[1]).abs()),
-                );
-            }
-        }
-        (lo, hi, outside)
-    };
-    let (klo, khi, kout) = changed(&kept);
-    let (rlo, rhi, _) = changed(&rerun);
-    let kout_text = crate::report::number::sig(kout, 2);
-    Outcome::new(
-        format!(
-            "moving W3 with m and s kept changes the path only for t in ({klo:.3}, {khi:.3}) ⊂ (t_3, t_5) = (0.25, 0.75), bit for bit unchanged outside (largest change outside {kout_text}); re-running Algorithm 1 changes it on ({rlo:.3}, {rhi:.3}) because the tangents of W2 and W4 depend on W3"
+    locality_proof().unwrap_or_else(|e| Outcome::new("", "ball:256", Verdict::Failed, e))
+}
+
+/// Whether two balls are the same enclosure (the same midpoint and radius): the result of the
+/// same computation on the same inputs.
+fn same_ball(a: &Ball, b: &Ball) -> bool {
+    a.mid() == b.mid() && a.rad() == b.rad()
+}
+
+/// Whether two local curves are the same enclosures, field by field.
+fn same_curve(a: &LocalCurve<Ball>, b: &LocalCurve<Ball>) -> bool {
+    let all = |x: &[&Ball], y: &[&Ball]| x.iter().zip(y).all(|(p, q)| same_ball(p, q));
+    match (a, b) {
+        (
+            LocalCurve::Line {
+                origin: o1,
+                step: s1,
+            },
+            LocalCurve::Line {
+                origin: o2,
+                step: s2,
+            },
+        ) => all(
+            &[&o1[0], &o1[1], &s1[0], &s1[1]],
+            &[&o2[0], &o2[1], &s2[0], &s2[1]],
         ),
-        "f64",
-        Verdict::holds(kout == 0.0 && klo > 0.25 && khi < 0.75),
-        "1001 parameter values, BFBS i = 2; B_4 (the basis of c_3) vanishes identically outside [t_3, t_5], so the sums agree exactly there",
-    )
+        (
+            LocalCurve::Arc {
+                centre: c1,
+                radius: r1,
+                theta1: a1,
+                theta2: b1,
+            },
+            LocalCurve::Arc {
+                centre: c2,
+                radius: r2,
+                theta1: a2,
+                theta2: b2,
+            },
+        ) => all(&[&c1[0], &c1[1], r1, a1, b1], &[&c2[0], &c2[1], r2, a2, b2]),
+        _ => false,
+    }
+}
+
+/// The knot t_j (1-based) of Algorithm 2's uniform knots for n waypoints, exactly: t_1 = 0,
+/// t_{j+2} = j/(n − 1), t_{n+2} = 1.
+fn exact_knot(j: usize, n: usize) -> BigRational {
+    let ratio = |p: usize, q: usize| BigRational::new((p as i64).into(), (q as i64).into());
+    match j {
+        0 | 1 => ratio(0, 1),
+        j if j >= n + 2 => ratio(1, 1),
+        j => ratio(j - 2, n - 1),
+    }
+}
+
+/// The union of the supports [t_{i+1}, t_{i+3}] of the basis functions B_{i+2} that blend the
+/// local curves of the given (0-based) indices, as (start, end), exactly.
+fn support_hull(changed: &[usize], n: usize) -> Option<(BigRational, BigRational)> {
+    let first = changed.iter().min()?;
+    let last = changed.iter().max()?;
+    Some((exact_knot(first + 1, n), exact_knot(last + 3, n)))
+}
+
+fn locality_proof() -> Result<Outcome, String> {
+    let conv = ArcConvention::TurnDirection;
+    let base_spec = spec::<Ball>(&HI, conv);
+    let n = base_spec.waypoints.len();
+    let tan = tangents(&base_spec.waypoints).map_err(|e| e.to_string())?;
+    let base = bfbs_path::<Ball>(&HI, conv);
+    let mut moved = base_spec.clone();
+    let shift = [Ball::from_i64(20, &HI), Ball::from_i64(-30, &HI)];
+    moved.waypoints[2] = [
+        moved.waypoints[2][0].clone() + &shift[0],
+        moved.waypoints[2][1].clone() + &shift[1],
+    ];
+    let (kept_curves, _) = local_curves(&moved, Some(&tan)).map_err(|e| e.to_string())?;
+    let rerun = GerbsPath::new(&moved, base.blend().clone()).map_err(|e| e.to_string())?;
+    let differing = |curves: &[LocalCurve<Ball>]| -> Vec<usize> {
+        (0..curves.len())
+            .filter(|&i| !same_curve(&base.curves()[i], &curves[i]))
+            .collect()
+    };
+    let (kept_changed, rerun_changed) = (differing(&kept_curves), differing(rerun.curves()));
+    let kept = GerbsPath::from_parts(base.knots().clone(), base.blend().clone(), kept_curves, tan)
+        .map_err(|e| e.to_string())?;
+    // At t_4 = 1/2 only B_4 is non-zero (it is 1 there): the path moves with c_3.
+    let half = Ball::from_rational(&BigRational::new(1.into(), 2.into()), &HI);
+    let (p, q) = (base.at_on(&half, 4).point, kept.at_on(&half, 4).point);
+    let (dx, dy) = (p[0].clone() - &q[0], p[1].clone() - &q[1]);
+    let moved_by = (dx.clone() * &dx + &(dy.clone() * &dy)).sqrt();
+    let region = support_hull(&kept_changed, n).ok_or("moving W3 changed no local curve")?;
+    let allowed = (exact_knot(3, n), exact_knot(5, n));
+    let local = region.0 >= allowed.0 && region.1 <= allowed.1;
+    let rerun_region = support_hull(&rerun_changed, n)
+        .map_or("nowhere".to_string(), |(a, b)| format!("[{a}, {b}]"));
+    let names = |v: &[usize]| {
+        v.iter()
+            .map(|i| format!("c_{}", i + 1))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    Ok(Outcome::new(
+        format!(
+            "moving W3 with m and s kept changes only the local curve(s) {} (every other one the same enclosure), so the path can change only on [{}, {}] ⊆ [t_3, t_5] = [1/4, 3/4] and is unchanged outside; at t_4 = 1/2 it moves by {}; re-running Algorithm 1 gives other enclosures for {} (the tangents of W2 and W4 depend on W3), so there the path may change on {rerun_region}",
+            names(&kept_changed), region.0, region.1, crate::report::number::ball(&moved_by, 4), names(&rerun_changed)
+        ),
+        "ball:256",
+        Verdict::holds(local && moved_by.lower() > 0),
+        "BFBS i = 2 in ball arithmetic at 256 bits. On knot interval j the path is Σ B_k c_{k−1} over the basis functions non-zero \
+         there (Algorithm 2), and B_k vanishes outside [t_{k−1}, t_{k+1}] (exact knots), so the path can differ only on the supports \
+         of the basis functions whose local curve differs. Local curves are compared as enclosures: the same midpoint and radius \
+         is the same computation on the same inputs, hence the same curve; the support region is exact; the change at t_4 is an \
+         enclosure whose lower end is above 0 (nothing is sampled)",
+    ))
 }
 
 /// The documented BFBS path (arcs in the turn direction) and a variant of it whose spec

@@ -117,8 +117,7 @@ fn tables(r: &Results) -> String {
         &[
             "reading",
             "centre",
-            "peak of Ψ_3 (fraction of interval)",
-            "max |B_4(t_4 − s) − B_4(t_4 + s)|",
+            "max |B_4(t_4 − s) − B_4(t_4 + s)|, s = k/128, k = 1…31 (proven bound)",
         ],
         &r.centre,
     ));
