@@ -6,7 +6,7 @@
 //!   hull of the candidate formulas is returned (the true distance is one of them), so no
 //!   comparison is guessed. The distance to a fixed set is 1-Lipschitz in the point: over a
 //!   box of a curve's parameter it lies within |c′|·(half-width) of its value at the box's
-//!   midpoint, which is how a search bounds it ([`lipschitz_bound`]).
+//!   midpoint; where it is smooth, a mean-value form is tighter ([`CurveBox`] takes both).
 //! - [`net_turning`]: the net angle a plane vector function v(u), u ∈ [0, 1], turns through
 //!   (a curve's tangent, or its position about a point). On a box whose enclosure of v is a
 //!   rectangle with v·v(a) > 0 for every point (the box's own enclosure, checked), the angle
@@ -96,13 +96,141 @@ pub fn quarter_arc_distance(p: &Point2, centre: &Point2, radius: &Ball, e: [&Poi
     }
 }
 
-/// An enclosure of f over a box X of the parameter, for f 1-Lipschitz in the point: its
-/// value `at_mid` at the box's midpoint widened by |c′(X)|·rad(X) (rounded up), where
-/// `velocity` encloses c′ over the box.
-pub fn lipschitz_bound(at_mid: Ball, velocity: &Point2, x: &Ball) -> Ball {
-    let speed = norm(velocity).abs_upper();
-    let reach = (Ball::from_f64(speed, &64) * &Ball::from_f64(x.rad(), &64)).abs_upper();
-    at_mid.widen(reach)
+/// A plane curve over a box X of its parameter: its point at the box's midpoint m, and
+/// enclosures of its points and of its velocity over the whole box. The distances below are
+/// enclosed over the box from it, each by the tighter of two forms: the mean-value form
+/// f(c(m)) + ∇f(c(X))·c′(X)·(X − m) on a piece where f is smooth (second order in the box's
+/// width, so a search needs few boxes near a maximum), and the Lipschitz form
+/// f(c(m)) ± |c′(X)|·rad(X) (a distance to a set is 1-Lipschitz in the point).
+#[derive(Clone, Debug)]
+pub struct CurveBox {
+    /// c(m), enclosed.
+    pub at_mid: Point2,
+    /// c over the whole box.
+    pub over: Point2,
+    /// c′ over the whole box.
+    pub velocity: Point2,
+    /// The box X itself.
+    pub parameter: Ball,
+}
+
+/// The intersection of two enclosures of the same quantity (the first when they are
+/// disjoint, which rounding cannot cause since both are proven).
+fn intersect(a: Ball, b: &Ball) -> Ball {
+    let lo = a.lower().max(&b.lower());
+    let hi = a.upper().min(&b.upper());
+    if lo > hi {
+        return a;
+    }
+    Ball::from_bounds_at(&lo, &hi, a.mid().prec())
+}
+
+impl CurveBox {
+    /// The Lipschitz form of a 1-Lipschitz function with value `at_mid` at c(m).
+    pub fn lipschitz(&self, at_mid: Ball) -> Ball {
+        let speed = norm(&self.velocity).abs_upper();
+        let reach =
+            (Ball::from_f64(speed, &64) * &Ball::from_f64(self.parameter.rad(), &64)).abs_upper();
+        at_mid.widen(reach)
+    }
+
+    /// The mean-value form of a smooth function with value `at_mid` at c(m) and gradient
+    /// enclosed by `gradient` over c(X).
+    pub fn smooth(&self, at_mid: Ball, gradient: &Point2) -> Ball {
+        let slope =
+            gradient[0].clone() * &self.velocity[0] + &(gradient[1].clone() * &self.velocity[1]);
+        let offset = Ball::new(
+            Float::with_val(self.parameter.mid().prec(), 0),
+            self.parameter.rad(),
+        );
+        at_mid + &(slope * &offset)
+    }
+
+    /// |c − q| over the box.
+    pub fn distance_to_point(&self, q: &Point2) -> Ball {
+        let at_mid = norm(&minus(&self.at_mid, q));
+        let lipschitz = self.lipschitz(at_mid.clone());
+        let away = minus(&self.over, q);
+        let length = norm(&away);
+        if length.lower() <= 0 {
+            return lipschitz;
+        }
+        let gradient = [away[0].clone() / &length, away[1].clone() / &length];
+        intersect(self.smooth(at_mid, &gradient), &lipschitz)
+    }
+
+    /// |g| over the box for a smooth signed g (value at c(m), gradient over c(X)), as a
+    /// distance: both forms, intersected.
+    fn signed(&self, at_mid: Ball, gradient: &Point2) -> Ball {
+        let lipschitz = self.lipschitz(at_mid.clone().abs());
+        intersect(self.smooth(at_mid, gradient).abs(), &lipschitz)
+    }
+
+    /// The distance from the segment [a, b] (a ≠ b) over the box: by the case of the
+    /// projection decided over c(X), the hull of the cases' enclosures where it is not.
+    pub fn distance_to_segment(&self, a: &Point2, b: &Point2) -> Ball {
+        let d = minus(b, a);
+        let length = norm(&d);
+        let length2 = d[0].clone() * &d[0] + &(d[1].clone() * &d[1]);
+        let w = minus(&self.over, a);
+        let s = (w[0].clone() * &d[0] + &(w[1].clone() * &d[1])) / &length2;
+        let line = || {
+            // The signed distance from the line, cross(c − a, d)/|d|: gradient (d_y, −d_x)/|d|.
+            let wm = minus(&self.at_mid, a);
+            let at_mid = (wm[0].clone() * &d[1] - &(wm[1].clone() * &d[0])) / &length;
+            self.signed(at_mid, &[d[1].clone() / &length, -(d[0].clone() / &length)])
+        };
+        let mut cases = Vec::new();
+        if s.lower() <= 0 {
+            cases.push(self.distance_to_point(a));
+        }
+        if s.upper() >= 1 {
+            cases.push(self.distance_to_point(b));
+        }
+        if s.upper() >= 0 && s.lower() <= 1 {
+            cases.push(line());
+        }
+        hull_of(cases, || self.distance_to_point(a))
+    }
+
+    /// The distance from the polygon through `vertices` over the box (`None` for fewer than
+    /// two vertices).
+    pub fn distance_to_polygon(&self, vertices: &[Point2]) -> Option<Ball> {
+        vertices
+            .windows(2)
+            .map(|w| self.distance_to_segment(&w[0], &w[1]))
+            .reduce(|a, b| a.min_with(&b))
+    }
+
+    /// The distance from the quarter arc of [`quarter_arc_distance`] over the box.
+    pub fn distance_to_quarter_arc(&self, centre: &Point2, radius: &Ball, e: [&Point2; 2]) -> Ball {
+        let v = minus(&self.over, centre);
+        let along = |u: &Point2| v[0].clone() * &u[0] + &(v[1].clone() * &u[1]);
+        let (a1, a2) = (along(e[0]), along(e[1]));
+        let radial = || {
+            // g = |c − centre| − r, gradient (c − centre)/|c − centre|.
+            let at_mid = norm(&minus(&self.at_mid, centre)) - radius;
+            let length = norm(&v);
+            if length.lower() <= 0 {
+                return self.lipschitz(at_mid.abs());
+            }
+            self.signed(at_mid, &[v[0].clone() / &length, v[1].clone() / &length])
+        };
+        let end = |u: &Point2| {
+            self.distance_to_point(&[
+                centre[0].clone() + &(radius.clone() * &u[0]),
+                centre[1].clone() + &(radius.clone() * &u[1]),
+            ])
+        };
+        let nearer_end = || end(e[0]).min_with(&end(e[1]));
+        if a1.lower() >= 0 && a2.lower() >= 0 {
+            radial()
+        } else if a1.upper() < 0 || a2.upper() < 0 {
+            nearer_end()
+        } else {
+            Ball::hull(&radial(), &nearer_end())
+        }
+    }
 }
 
 /// Why a net turning could not be enclosed.
@@ -203,6 +331,49 @@ mod tests {
         let arc = |q: Point2| quarter_arc_distance(&q, &c, &r, [&e1, &e2]);
         assert!(arc(p(2.0, 2.0)).contains(&(Float::with_val(128, 8).sqrt() - 1u32)));
         assert!(arc(p(0.0, -1.0)).contains(&Float::with_val(128, 2).sqrt()));
+    }
+
+    /// The parabola c(u) = (u, u² − 1/2) over a box, as a search gives it.
+    fn parabola_box(lo: f64, hi: f64) -> CurveBox {
+        let x = Ball::from_bounds(&Float::with_val(128, lo), &Float::with_val(128, hi));
+        let at = |u: &Ball| [u.clone(), u.clone() * u - &Ball::from_f64(0.5, &128)];
+        CurveBox {
+            at_mid: at(&Ball::exact(x.mid().clone())),
+            over: at(&x),
+            velocity: [Ball::one_in(&128), Ball::from_i64(2, &128) * &x],
+            parameter: x,
+        }
+    }
+
+    #[test]
+    fn a_curve_box_encloses_every_point_distance_of_its_box() {
+        let (a, b) = (p(0.0, 0.0), p(1.0, 0.0));
+        let polygon = [p(0.0, 0.0), p(1.0, 0.0), p(1.0, 1.0)];
+        let (centre, one) = (p(0.0, 0.0), Ball::one_in(&128));
+        let (e1, e2) = (p(1.0, 0.0), p(0.0, 1.0));
+        for (lo, hi) in [(0.0, 0.25), (0.3, 0.9), (-0.5, 1.5), (0.69, 0.71)] {
+            let cb = parabola_box(lo, hi);
+            let enclosures = [
+                cb.distance_to_segment(&a, &b),
+                cb.distance_to_polygon(&polygon).unwrap(),
+                cb.distance_to_quarter_arc(&centre, &one, [&e1, &e2]),
+            ];
+            for k in 0..=20 {
+                let u = lo + (hi - lo) * k as f64 / 20.0;
+                let q = p(u, u * u - 0.5);
+                let pointwise = [
+                    segment_distance(&q, &a, &b),
+                    polygon_distance(&q, &polygon).unwrap(),
+                    quarter_arc_distance(&q, &centre, &one, [&e1, &e2]),
+                ];
+                for (enclosure, value) in enclosures.iter().zip(&pointwise) {
+                    assert!(
+                        enclosure.lower() <= value.upper() && value.lower() <= enclosure.upper(),
+                        "[{lo}, {hi}] at {u}: {enclosure:?} misses {value:?}"
+                    );
+                }
+            }
+        }
     }
 
     #[test]

@@ -25,6 +25,8 @@ use std::collections::BinaryHeap;
 pub struct SearchOptions {
     /// Stop when the proven upper bound exceeds the proven lower bound by at most this much.
     pub tolerance: f64,
+    /// Or by at most this fraction of the lower bound's magnitude (0: only `tolerance`).
+    pub relative: f64,
     /// The most boxes to evaluate (the enclosure is returned, wider, when they run out).
     pub max_boxes: usize,
     /// The precision of the box ends and of the points evaluated (bits).
@@ -35,6 +37,7 @@ impl Default for SearchOptions {
     fn default() -> Self {
         SearchOptions {
             tolerance: 1e-12,
+            relative: 0.0,
             max_boxes: 100_000,
             bits: 256,
         }
@@ -186,7 +189,10 @@ where
         let mid = Float::with_val(bits, Float::with_val(bits + 2, &top.lo + &top.hi) / 2u32);
         // Done when the gap is within tolerance or the budget is spent; a box that cannot be
         // split at this precision keeps its bound as final.
-        if gap.to_f64_round(Round::Up) <= options.tolerance
+        let allowed = options
+            .tolerance
+            .max(options.relative * frontier.best.0.to_f64().abs());
+        if gap.to_f64_round(Round::Up) <= allowed
             || frontier.boxes >= options.max_boxes
             || mid <= top.lo
             || mid >= top.hi
@@ -362,6 +368,7 @@ mod tests {
         let (a, b) = unit();
         let options = SearchOptions {
             tolerance: 0.0,
+            relative: 0.0,
             max_boxes: 10,
             bits: 128,
         };

@@ -80,10 +80,15 @@ pub fn float_in(x: &Float, digits: u32, notation: Notation) -> String {
 /// stands for; "value ± radius" as [`Ball::printed`] gives it when not even one digit is
 /// shared, "—" for a ball that is not finite.
 pub fn ball(x: &Ball, digits: u32) -> String {
+    ball_in(x, digits, Notation::Auto)
+}
+
+/// [`ball`] in the given notation (a table column keeps one notation for all its cells).
+pub fn ball_in(x: &Ball, digits: u32, notation: Notation) -> String {
     let (lo, hi) = (x.lower(), x.upper());
     for d in (1..=digits).rev() {
-        let text = style(&lo, d, Notation::Auto);
-        if text == style(&hi, d, Notation::Auto) {
+        let text = style(&lo, d, notation);
+        if text == style(&hi, d, notation) {
             audit::formatted(&text, x.mid());
             return text;
         }

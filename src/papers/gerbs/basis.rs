@@ -413,15 +413,14 @@ pub fn centre_reading() -> (Outcome, Vec<Vec<String>>) {
     }
 }
 
-/// The mirrored offsets s = k/128, k = 1 … 31, of the symmetry check (inside (0, 1/4)):
+/// The mirrored offsets s = k/32, k = 1 … 7, of the symmetry check (inside (0, 1/4)):
 /// binary fractions, so every t is exact (a rounded t would add its rounding to the running
 /// integral as an absolute bound, which the tiny S_j of the printed reading cannot carry).
-const MIRRORED: i64 = 31;
+const MIRRORED: i64 = 7;
 
 /// max_k |B_4(1/2 − s_k) − B_4(1/2 + s_k)| on the ERBS of the Fig. 2 set (α = 1, σ = 0.2)
 /// under `reading`, enclosed: (the largest upper bound, the largest lower bound).
-fn mirrored_asymmetry(e: &ProvenErbs) -> Result<(f64, Float), String> {
-    let bits = KINKED_BITS;
+fn mirrored_asymmetry(e: &ProvenErbs, bits: u32) -> Result<(f64, Float), String> {
     let k = fig1_knots::<Ball>(&bits);
     let b4 = |t: BigRational| -> Result<Ball, String> {
         let t = Ball::from_rational(&t, &bits);
@@ -433,7 +432,7 @@ fn mirrored_asymmetry(e: &ProvenErbs) -> Result<(f64, Float), String> {
     };
     let (mut upper, mut lower) = (0.0f64, Float::with_val(bits, 0));
     for i in 1..=MIRRORED {
-        let s = BigRational::new(i.into(), 128.into());
+        let s = BigRational::new(i.into(), 32.into());
         let half = BigRational::new(1.into(), 2.into());
         let gap = (b4(half.clone() - &s)? - &b4(half.clone() + &s)?).abs();
         if !gap.is_finite() {
@@ -466,8 +465,8 @@ fn centre_evidence() -> Result<(Outcome, Vec<Vec<String>>), String> {
         },
     )
     .map_err(|e| e.to_string())?;
-    let (cited_upper, _) = mirrored_asymmetry(&cited_basis)?;
-    let (_, printed_lower) = mirrored_asymmetry(&printed_basis)?;
+    let (cited_upper, _) = mirrored_asymmetry(&cited_basis, KINKED_BITS)?;
+    let (_, printed_lower) = mirrored_asymmetry(&printed_basis, KINKED_BITS)?;
     let printed_asymmetric = printed_lower > 0;
     let rows = vec![
         vec![
@@ -494,7 +493,7 @@ fn centre_evidence() -> Result<(Outcome, Vec<Vec<String>>), String> {
     Ok((
         Outcome::new(
             format!(
-                "on (1/4, 1/2) with λ = 1/2 the printed centre is {} (outside the interval), the cited one {}; at the {MIRRORED} mirrored points t_4 ± k/128, |B_4(t_4 − s) − B_4(t_4 + s)| ≤ {} under the cited reading and ≥ {} at one of them under the printed one",
+                "on (1/4, 1/2) with λ = 1/2 the printed centre is {} (outside the interval), the cited one {}; at the {MIRRORED} mirrored points t_4 ± k/32, |B_4(t_4 − s) − B_4(t_4 + s)| ≤ {} under the cited reading and ≥ {} at one of them under the printed one",
                 rows[1][1], rows[0][1], rows[0][2].trim_start_matches("≤ "), rows[1][2].trim_start_matches("≥ ")
             ),
             "rational (centres), ball:64 (basis values)",

@@ -117,7 +117,7 @@ fn tables(r: &Results) -> String {
         &[
             "reading",
             "centre",
-            "max |B_4(t_4 − s) − B_4(t_4 + s)|, s = k/128, k = 1…31 (proven bound)",
+            "max |B_4(t_4 − s) − B_4(t_4 + s)|, s = k/32, k = 1…7 (proven bound)",
         ],
         &r.centre,
     ));

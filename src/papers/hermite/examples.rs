@@ -12,8 +12,12 @@
 //! - "almost straight-line": the curve is closer (Hausdorff distance) to the chord from
 //!   start to end than to the circular arc;
 //! - "approximates a circular turn": it is closer to the arc than to the chord;
-//! - "loops away from the terminal point": somewhere its distance from the terminal point
-//!   exceeds the start's distance from it.
+//! - "loops away from the terminal point": the tangent turns through a full extra
+//!   revolution and the distance to the terminal point rises by more than 1 % of the start's
+//!   above the closest it had come.
+//!
+//! The claims rest on the proven measures of `turn_proofs` (the curves in balls); the samples
+//! here draw the figure and the report's sampled columns.
 //!
 //! **Fig. 4 (landing).** Runway along +x with its threshold at the origin, altitude z.
 //! The aircraft is on the downwind leg abeam the threshold: p = (0, 2000, 300) m,
@@ -58,25 +62,17 @@ impl TurnData {
     }
 }
 
-/// Measurements of one Fig. 3 curve (from samples; see module doc).
+/// Sampled measurements of one Fig. 3 curve, for the figure and the report's sampled columns
+/// (the claims rest on `turn_proofs`' proven measures).
 pub struct TurnMetrics {
     /// The boundary data the curve is given.
     pub data: TurnData,
     pub factor: (i64, i64),
     pub duration: f64,
-    pub hausdorff_chord: f64,
-    pub hausdorff_arc: f64,
     pub max_radial_deviation: f64,
     /// max distance from the terminal point divided by the start's distance from it.
     pub farthest_from_end: f64,
-    /// How far the curve moves away from the terminal point along some stretch: the largest
-    /// rise of its distance to it above the smallest distance reached before, over the
-    /// start's distance.
-    pub recedes: f64,
     pub turning_degrees: f64,
-    /// The signed (net) turning of the tangent, in degrees: 90 for a quarter turn that does not
-    /// wind back.
-    pub net_turning_degrees: f64,
     pub max_speed: f64,
     pub samples: Vec<(f64, f64)>,
 }
@@ -115,65 +111,24 @@ fn dist(a: (f64, f64), b: (f64, f64)) -> f64 {
     ((a.0 - b.0).powi(2) + (a.1 - b.1).powi(2)).sqrt()
 }
 
-fn dist_to_segment(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
-    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
-    let s = (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / (dx * dx + dy * dy)).clamp(0.0, 1.0);
-    dist(p, (a.0 + s * dx, a.1 + s * dy))
-}
-
-/// Distance to the quarter arc of the unit circle about (0, 1) from (0, 0) to (1, 1).
-fn dist_to_arc(p: (f64, f64)) -> f64 {
-    let (x, y) = (p.0, p.1 - 1.0);
-    // The arc spans the angles −90°…0° about the centre: x ≥ 0 and y ≤ 0.
-    if x >= 0.0 && y <= 0.0 {
-        ((x * x + y * y).sqrt() - 1.0).abs()
-    } else {
-        dist(p, (0.0, 0.0)).min(dist(p, (1.0, 1.0)))
-    }
-}
-
-/// Symmetric Hausdorff distance between the sampled curve and a reference set given by its
-/// distance function and its own samples.
-fn hausdorff(
-    curve: &[(f64, f64)],
-    dist_to_ref: impl Fn((f64, f64)) -> f64,
-    reference: &[(f64, f64)],
-) -> f64 {
-    let forward = curve.iter().map(|&p| dist_to_ref(p)).fold(0.0, f64::max);
-    let backward = reference
-        .iter()
-        .map(|&r| {
-            curve
-                .iter()
-                .map(|&p| dist(p, r))
-                .fold(f64::INFINITY, f64::min)
-        })
-        .fold(0.0, f64::max);
-    forward.max(backward)
-}
-
-/// Total absolute and net (signed) turning of the tangent along the samples, in degrees
-/// (MPFR atan2, so the result does not depend on the platform's libm).
-fn turning_degrees(velocities: &[(f64, f64)]) -> (f64, f64) {
+/// Total absolute turning of the tangent along the samples, in degrees (MPFR atan2, so the
+/// result does not depend on the platform's libm).
+fn total_turning_degrees(velocities: &[(f64, f64)]) -> f64 {
     let mut total = Float::with_val(64, 0);
-    let mut net = Float::with_val(64, 0);
     for w in velocities.windows(2) {
         let (a, b) = (w[0], w[1]);
         let cross = Float::with_val(64, a.0 * b.1 - a.1 * b.0);
         let dot = Float::with_val(64, a.0 * b.0 + a.1 * b.1);
-        let angle = cross.atan2(&dot);
-        net += &angle;
-        total += angle.abs();
+        total += cross.atan2(&dot).abs();
     }
-    let degrees = |x: Float| (x * 180u32 / Float::pi(&64)).to_f64();
-    (degrees(total), degrees(net))
+    (total * 180u32 / Float::pi(&64)).to_f64()
 }
 
-/// The Fig. 3 curve for duration factor num/den of the nominal π/2, in MPFR, given `data`.
-fn turn_curve(factor: (i64, i64), data: TurnData) -> Option<Curve<Float>> {
-    let bits = TURN_BITS;
-    let i = |v: i64| Float::from_i64(v, &bits);
-    let duration = Float::pi(&bits) / 2u32 * Float::from_ratio(factor.0, factor.1, &bits);
+/// The Fig. 3 curve for duration factor num/den of the nominal π/2, given `data`, over any
+/// real scalar (MPFR for the sampled figure, balls for the proofs of `turn_proofs`).
+pub fn turn_curve<T: Real>(factor: (i64, i64), data: TurnData, ctx: &T::Ctx) -> Option<Curve<T>> {
+    let i = |v: i64| T::from_i64(v, ctx);
+    let duration = T::pi(ctx) / &T::from_i64(2, ctx) * &T::from_ratio(factor.0, factor.1, ctx);
     // (position, velocity, acceleration) at both ends, per coordinate, of the quarter turn.
     let ends = |start: [i64; 3], end: [i64; 3]| {
         let order = if data == TurnData::WithAcceleration {
@@ -203,21 +158,10 @@ pub fn turn_metrics() -> Option<Vec<TurnMetrics>> {
 
 /// The three Fig. 3 curves given `data`.
 fn turn_metrics_for(data: TurnData) -> Option<Vec<TurnMetrics>> {
-    let chord_ref: Vec<(f64, f64)> = (0..401)
-        .map(|i| (i as f64 / 400.0, i as f64 / 400.0))
-        .collect();
-    let arc_ref: Vec<(f64, f64)> = (0..401)
-        .map(|i| {
-            // Points of the arc from MPFR sin/cos (platform independent).
-            let angle = Float::pi(&64) / 2u32 * Float::with_val(64, i) / 400u32;
-            let (s, c) = Real::sin_cos(&angle);
-            (s.to_f64(), 1.0 - c.to_f64())
-        })
-        .collect();
     TURN_FACTORS
         .iter()
         .map(|&factor| {
-            let exact = turn_curve(factor, data)?;
+            let exact = turn_curve::<Float>(factor, data, &TURN_BITS)?;
             let c = to_f64_curve(&exact);
             let pts: Vec<(f64, f64)> = sample(&c, SAMPLES)
                 .into_iter()
@@ -230,34 +174,18 @@ fn turn_metrics_for(data: TurnData) -> Option<Vec<TurnMetrics>> {
                 .collect();
             let end = (1.0, 1.0);
             let start_dist = dist((0.0, 0.0), end);
-            let (turning_degrees, net_turning_degrees) = turning_degrees(&vel);
+            let turning_degrees = total_turning_degrees(&vel);
             Some(TurnMetrics {
                 data,
                 factor,
                 duration: exact[0].duration().to_f64(),
-                hausdorff_chord: hausdorff(
-                    &pts,
-                    |p| dist_to_segment(p, (0.0, 0.0), end),
-                    &chord_ref,
-                ),
-                hausdorff_arc: hausdorff(&pts, dist_to_arc, &arc_ref),
                 max_radial_deviation: pts
                     .iter()
                     .map(|&p| (dist(p, (0.0, 1.0)) - 1.0).abs())
                     .fold(0.0, f64::max),
                 farthest_from_end: pts.iter().map(|&p| dist(p, end)).fold(0.0, f64::max)
                     / start_dist,
-                recedes: pts
-                    .iter()
-                    .scan(f64::INFINITY, |closest, &p| {
-                        let d = dist(p, end);
-                        *closest = closest.min(d);
-                        Some(d - *closest)
-                    })
-                    .fold(0.0, f64::max)
-                    / start_dist,
                 turning_degrees,
-                net_turning_degrees,
                 max_speed: vel.iter().map(|&v| dist(v, (0.0, 0.0))).fold(0.0, f64::max),
                 samples: pts,
             })
@@ -268,84 +196,6 @@ fn turn_metrics_for(data: TurnData) -> Option<Vec<TurnMetrics>> {
 /// Four significant digits of a sampled measurement.
 pub fn fmt4(x: f64) -> String {
     crate::report::number::sig(x, 4)
-}
-
-/// The three Fig. 3 claims from the measurements of both readings of the data (the first
-/// three entries of `m` with accelerations, the next three velocity only). A claim is
-/// `reproduced` when it holds under both readings, `discrepancy` when under neither, and
-/// `undetermined` when the reading decides it: the paper gives speeds and directions only.
-pub fn turn_claims(m: &[TurnMetrics]) -> [Outcome; 3] {
-    let describe = |t: &TurnMetrics| {
-        format!(
-            "{}, duration {}×π/2: Hausdorff distance to the chord {} and to the arc {}; max radial deviation from the circle {}; \
-             farthest distance from the terminal point {}× the start's; tangent turns {}° in total, {}° net; peak speed {}",
-            t.data.label(),
-            if t.factor.1 == 1 { t.factor.0.to_string() } else { format!("{}/{}", t.factor.0, t.factor.1) },
-            fmt4(t.hausdorff_chord),
-            fmt4(t.hausdorff_arc),
-            fmt4(t.max_radial_deviation),
-            fmt4(t.farthest_from_end),
-            fmt4(t.turning_degrees),
-            fmt4(t.net_turning_degrees),
-            fmt4(t.max_speed)
-        )
-    };
-    let method = "data of a uniform quarter turn (R = 1, V = 1), once with the circle's centripetal accelerations (m = 2) and once \
-                  with velocities only (m = 1), since the text states only \"identical start and end speeds but different directions\"; \
-                  solved in MPFR-128 and sampled at 2001 parameters; Hausdorff distances against the sampled chord and arc (401 points each)";
-    let claim = |k: usize,
-                 holds: &dyn Fn(&TurnMetrics) -> bool,
-                 what: &dyn Fn(&TurnMetrics) -> String,
-                 criterion: &str| {
-        let (acc, vel) = (&m[k], &m[k + 3]);
-        let verdict = match (holds(acc), holds(vel)) {
-            (true, true) => Verdict::Reproduced,
-            (false, false) => Verdict::Discrepancy,
-            _ => Verdict::Undetermined,
-        };
-        Outcome::new(
-            format!("with accelerations: {}; velocity only: {}", what(acc), what(vel)),
-            "mpfr:128",
-            verdict,
-            format!(
-                "criterion: {criterion}; reproduced when it holds under both readings of the data, undetermined when only one. {method}. {}. {}",
-                describe(acc),
-                describe(vel)
-            ),
-        )
-    };
-    [
-        claim(
-            0,
-            &|t| t.hausdorff_chord < t.hausdorff_arc,
-            &|t| format!("closer to the chord ({}) than to the arc ({})", fmt4(t.hausdorff_chord), fmt4(t.hausdorff_arc)),
-            "Hausdorff distance to the chord < to the arc",
-        ),
-        claim(
-            1,
-            &|t| t.hausdorff_arc < t.hausdorff_chord,
-            &|t| format!("closer to the arc ({}) than to the chord ({})", fmt4(t.hausdorff_arc), fmt4(t.hausdorff_chord)),
-            "Hausdorff distance to the arc < to the chord",
-        ),
-        claim(
-            2,
-            // The end tangents are fixed, so the net turning is 90° plus whole revolutions: a
-            // loop is a net turning other than 90° (any threshold below 360° is the same test).
-            &|t| (t.net_turning_degrees - 90.0).abs() > 180.0 && t.recedes > 0.01,
-            &|t| {
-                format!(
-                    "net tangent turning {}° ({}); moves away from the terminal point by {}× the start's distance",
-                    fmt4(t.net_turning_degrees),
-                    if (t.net_turning_degrees - 90.0).abs() > 180.0 { "a loop" } else { "no loop" },
-                    fmt4(t.recedes)
-                )
-            },
-            "the sentence, which the figure captions interrupt in the text, reads \"Finally, the dotted line shows the effect of an \
-             increased duration, the connecting curve loops away from the terminal point.\" Criterion, fixed before computing: the \
-             curve makes a loop (its tangent turns through a full extra revolution: net turning ≠ 90°) and, along it, moves away from \
-             the terminal point (its distance to it rises by more than 1 % of the start's distance above the closest it had come)",
-        ),
-    ]
 }
 
 /// The landing instance of Fig. 4 (exact), one polynomial per coordinate x, y, z.

@@ -13,6 +13,7 @@ mod examples;
 mod figures;
 mod render;
 mod statements;
+mod turn_proofs;
 
 use super::{Ledger, Outcome, Paper, PaperOutput, Verdict};
 use crate::ledger::Severity;
@@ -82,6 +83,8 @@ struct Results {
     ranges: Outcome,
     /// The Fig. 3 measurements (`None` if the instance failed to solve).
     turn: Option<Vec<examples::TurnMetrics>>,
+    /// The Fig. 3 curves' proven measures, in the order of `turn` (or why they are not).
+    turn_proven: Result<Vec<turn_proofs::ProvenTurn>, String>,
     /// The Fig. 4 instance and its claim (`None` if it failed to solve).
     landing: Option<(examples::LandingMetrics, Outcome)>,
     /// The Fig. 5 rows.
@@ -90,12 +93,7 @@ struct Results {
 
 /// Why each of this paper's claims that is only certified or floating is not proven (issue
 /// 36); the ledger appends the reason to the claim's evidence.
-const UNPROVEN: &[(&str, &str)] = &[
-    ("hermite.fig3.short_is_straight", FIG3),
-    ("hermite.fig3.nominal_is_circular", FIG3),
-    ("hermite.fig3.long_loops_away", FIG3),
-];
-const FIG3: &str = "the curves' distances and turning are sampled at one MPFR precision; the curves are polynomials with exact rational control points, so exact or ball evaluation with a branch-and-bound maximum would prove them (not yet done)";
+const UNPROVEN: &[(&str, &str)] = &[];
 
 /// Run every check of paper 000 and build its report.
 pub fn verify() -> PaperOutput {
@@ -107,15 +105,7 @@ pub fn verify() -> PaperOutput {
     ledger.record("hermite.fig2.control_points.t2", slow.clone());
     let ranges = exact_checks(&mut ledger);
     let turn = examples::turn_metrics();
-    if let Some(metrics) = &turn {
-        let [short, nominal, long] = examples::turn_claims(metrics);
-        ledger.record("hermite.fig3.short_is_straight", fig3_illustrated(short));
-        ledger.record(
-            "hermite.fig3.nominal_is_circular",
-            fig3_illustrated(nominal),
-        );
-        ledger.record("hermite.fig3.long_loops_away", fig3_illustrated(long));
-    }
+    let turn_proven = turn_section(&mut ledger, turn.as_deref());
     let landing = landing_check(&mut ledger);
     ledger.record(
         "hermite.fig4.caption_vs_text",
@@ -144,6 +134,7 @@ pub fn verify() -> PaperOutput {
         fig2_curves: [fast_curve, slow_curve],
         ranges,
         turn,
+        turn_proven,
         landing,
         kappa,
     };
@@ -205,10 +196,44 @@ fn landing_check(ledger: &mut Ledger) -> Option<(examples::LandingMetrics, Outco
     })
 }
 
+/// The Fig. 3 claims, on the proven measures of the curves (the samples of `metrics` only
+/// choose where the recession is evaluated); returns those measures for the report.
+fn turn_section(
+    ledger: &mut Ledger,
+    metrics: Option<&[examples::TurnMetrics]>,
+) -> Result<Vec<turn_proofs::ProvenTurn>, String> {
+    const IDS: [&str; 3] = [
+        "hermite.fig3.short_is_straight",
+        "hermite.fig3.nominal_is_circular",
+        "hermite.fig3.long_loops_away",
+    ];
+    let proven = metrics
+        .ok_or_else(|| "the Fig. 3 instance failed to solve".to_string())
+        .and_then(|m| {
+            turn_proofs::prove_all(&m.iter().map(|t| t.samples.clone()).collect::<Vec<_>>())
+        });
+    match &proven {
+        Ok(p) => {
+            for (id, outcome) in IDS.iter().zip(turn_proofs::turn_claims(p)) {
+                ledger.record(id, fig3_illustrated(outcome));
+            }
+        }
+        Err(e) => {
+            for id in IDS {
+                ledger.record(id, Outcome::new("", "ball:128", Verdict::Failed, e.clone()));
+            }
+        }
+    }
+    proven
+}
+
 /// A Fig. 3 claim, computed on turn data of our own (the paper gives neither the directions,
 /// the speeds nor the nominal duration): `illustrated` (policy clause 1), with what the two
 /// readings of the data gave.
 fn fig3_illustrated(outcome: Outcome) -> Outcome {
+    if outcome.verdict == Verdict::Failed {
+        return outcome;
+    }
     let readings = match outcome.verdict {
         Verdict::Reproduced => "on turn data of our own (the paper gives none), it holds under both readings of that data",
         Verdict::Discrepancy => "on turn data of our own (the paper gives none), it holds under neither reading of that data",

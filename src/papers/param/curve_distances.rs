@@ -20,7 +20,7 @@
 //! leaves undecided.
 
 use crate::algo::param::natural::NaturalCubicSpline;
-use crate::curve::distance::{lipschitz_bound, polygon_distance};
+use crate::curve::distance::CurveBox;
 use crate::numeric::maximum::{mean_value, midpoint, proven_maximum, proven_range};
 use crate::numeric::maximum::{MaximumEnclosure, SearchOptions};
 use crate::scalar::ball::Ball;
@@ -35,6 +35,7 @@ fn unit(bits: u32) -> (Float, Float) {
 fn options(tolerance: f64, bits: u32) -> SearchOptions {
     SearchOptions {
         tolerance,
+        relative: 0.0,
         max_boxes: 200_000,
         bits,
     }
@@ -167,9 +168,13 @@ fn extent(curve: &PlaneCurve) -> f64 {
         .fold(f64::MIN_POSITIVE, f64::max)
 }
 
+/// Both components' (θ, θ′, θ″, θ‴) over the box x.
+fn curve_at(curve: &PlaneCurve, x: &Ball) -> [[Ball; 4]; 2] {
+    [curve[0].enclose_over(x), curve[1].enclose_over(x)]
+}
+
 /// A proven enclosure of the largest distance of the curve from the polygon through
-/// `vertices`, over t ∈ [0, 1]. The distance to a fixed set is 1-Lipschitz in the point, so on
-/// a box X it lies within |c′(X)|·rad(X) of its value at the box's midpoint.
+/// `vertices`, over t ∈ [0, 1], the distance over a box of t enclosed by [`CurveBox`].
 ///
 /// # Errors
 /// A polygon of fewer than two vertices, or the search's error.
@@ -180,11 +185,15 @@ pub fn max_distance_from_polygon(
     let bits = knots(curve)[0].mid().prec();
     let (start, end) = unit(bits);
     let distance = |x: &Ball| -> Result<Ball, String> {
-        let point = [0, 1].map(|c| curve[c].enclose_over(&midpoint(x))[0].clone());
-        let at_mid = polygon_distance(&point, vertices)
-            .ok_or_else(|| "the polygon has fewer than two vertices".to_string())?;
-        let velocity = [0, 1].map(|c| curve[c].enclose_over(x)[1].clone());
-        Ok(lipschitz_bound(at_mid, &velocity, x))
+        let (mid, over) = (curve_at(curve, &midpoint(x)), curve_at(curve, x));
+        CurveBox {
+            at_mid: [mid[0][0].clone(), mid[1][0].clone()],
+            over: [over[0][0].clone(), over[1][0].clone()],
+            velocity: [over[0][1].clone(), over[1][1].clone()],
+            parameter: x.clone(),
+        }
+        .distance_to_polygon(vertices)
+        .ok_or_else(|| "the polygon has fewer than two vertices".to_string())
     };
     let tolerance = 1e-6 * extent(curve);
     proven_maximum(distance, &start, &end, &options(tolerance, bits)).map_err(|e| e.to_string())

@@ -271,8 +271,9 @@ pub fn corner(ledger: &mut Ledger) -> Option<CornerCurves> {
             "documented L-shaped data with long segments at the corner (4, 0); natural splines in balls on chord length and on the \
              exact-objective minimizer (proven by Krawczyk's test); criterion fixed beforehand: the oscillation amplitude, measured as \
              the largest distance from the interpolating polygon, is smaller for the minimizing parametrization. Each largest \
-             distance over t ∈ [0, 1] enclosed by branch and bound (the distance to the polygon is 1-Lipschitz in the point, so a \
-             box's bound is the distance at its midpoint widened by the curve's speed times its half-width); the decision is \
+             distance over t ∈ [0, 1] enclosed by branch and bound (over a box of t, the distance from the nearest \
+             segment's line or vertex in the mean-value form, or the distance at the box's midpoint widened by the curve's speed \
+             times its half-width, whichever is tighter); the decision is \
              taken on disjoint enclosures",
         ),
     );
