@@ -117,7 +117,11 @@ fn curvature_outcome(kappa: &[String], kappa_ok: bool) -> Outcome {
         "ball:256",
         Verdict::holds(kappa_ok),
         "κ from Taylor series of the path to order 3 at each knot from both sides, in ball arithmetic at 256 bits (criterion: every \
-         jump's upper bound below 1e-60); the jump of dκ/dt is in the table (BFBS i = 2 is C² only, so κ′ may jump)",
+         jump's upper bound below 1e-60); the jump of dκ/dt is in the table (BFBS i = 2 is C² only, so κ′ may jump). The ERBS \
+         paths use α = σ = 1 (documented in the report): with Fig. 2's σ = 0.2, B″ is unbounded at every interval's centre \
+         (gerbs.fig2.parameters), so on the paper's own parameters the path's second derivative, p″ ∋ B″·(c_k − c_(k+1)), is \
+         unbounded there wherever the two blended local curves differ, and the curvature in general with it (not checked here); \
+         this claim checks the joints, which Algorithm 2's continuity argument is about",
     )
 }
 
@@ -517,7 +521,10 @@ fn locality_proof() -> Result<Outcome, String> {
          there (Algorithm 2), and B_k vanishes outside [t_{k−1}, t_{k+1}] (exact knots), so the path can differ only on the supports \
          of the basis functions whose local curve differs. Local curves are compared as enclosures: the same midpoint and radius \
          is the same computation on the same inputs, hence the same curve; the support region is exact; the change at t_4 is an \
-         enclosure whose lower end is above 0 (nothing is sampled)",
+         enclosure whose lower end is above 0 (nothing is sampled). The audit's reading that re-running Algorithm 1 changes \
+         the path everywhere: it changes c_(i−1), c_i and c_(i+1) (the neighbours' tangents depend on W_i), whose supports are \
+         [t_(i−1), t_(i+3)], two knot intervals on each side of W_i — still local; on this five-waypoint path that is all of \
+         [0, 1], so the sentence is judged on the blending step it describes (m and s kept), which is what holds",
     ))
 }
 
