@@ -48,6 +48,7 @@ pub const SPECS: &[ClaimSpec] = &[
     spec!("gerbs.sec2.cdr_rule", "Sec. II-A; Sec. IV", "a B-spline of degree d is C^{d−r} at a knot of multiplicity r; an order-two B-spline would not give a smooth path"),
     spec!("gerbs.sec3.lines_c0", "Sec. I", "a path of straight lines between the waypoints is only C⁰"),
     spec!("gerbs.eq1_25.index_range", "Eqs. (1), (25); Algorithm 2", "p(t) = Σ_{i=1}^n c_i(t)B_i(t) over the knots t_1…t_{n+2}"),
+    spec!("gerbs.alg1.degenerate_turns", "Sec. III (\"{s_i} ∈ {−1, 1} using Algorithm 1\"); Algorithm 1, steps 8, 10, 12", "Algorithm 1 gives unit tangents m_i and turning directions s_i ∈ {−1, 1} for the waypoints"),
     spec!("gerbs.alg1.returns_s", "Algorithm 1, step 14; Algorithm 2, step 1", "Algorithm 1 returns m; Algorithm 2 takes (W, m, s)"),
     spec!("gerbs.alg2.end_curves", "Algorithm 2, steps 4–5; Sec. III, Eqs. (23)–(24); Fig. 4", "the first and last local curves are straight lines, the others arcs (Algorithm 2 builds the local curves)"),
     spec!("gerbs.fig3.curvature_reduced", "Sec. IV, on Figs. 2–3", "the intrinsic parameters are chosen to give a smooth transition at the peaks, which reduces the required curvature"),
@@ -109,6 +110,10 @@ pub fn verify() -> PaperOutput {
     ledger.record("gerbs.alg2.tangent", tangent);
     ledger.record("gerbs.alg1.returns_s", paths::algorithm1_returns_s());
     ledger.record("gerbs.alg2.end_curves", paths::end_curves());
+    ledger.record(
+        "gerbs.alg1.degenerate_turns",
+        statements::degenerate_turns(),
+    );
     ledger.record(
         "gerbs.fig3.curvature_reduced",
         paths::curvature_by_parameters(),
@@ -181,6 +186,7 @@ const AMENDMENTS: &[Amendment] = &[
     ("gerbs.sec3.knot_vector_words", None, "a strictly increasing knot vector … where t_1 = t_2 = 0", "the end knots repeat, so the vector is increasing, not strictly; the interior knots are simple", Minor, "the printed knots themselves are consistent (gerbs.sec3.knots)"),
     ("gerbs.eq1_25.index_range", None, "p(t) = Σ_{i=1}^n c_i(t)B_i(t), knots t_1…t_{n+2}", "the knots define B_2…B_{n+1}, Algorithm 2's range; B_1 would need t_0", Minor, "Algorithm 2, which a reader implements, uses the consistent range"),
     ("gerbs.alg1.returns_s", None, "Algorithm 1 returns m", "it must return (m, s): Algorithm 2 takes s, and without it every right turn bends the wrong way", Minor, "s is computed in Algorithm 1 and its use in Algorithm 2 is printed"),
+    ("gerbs.alg1.degenerate_turns", None, "unit tangents and turns s_i ∈ {−1, 1} from Algorithm 1, no condition on the waypoints", "a straight continuation gives s = 0 and a path that passes its knot 2R past the waypoint; a U-turn divides by zero in step 8; for n = 2, s[2] is never set", Material, "a reader implementing Algorithm 1 silently misses a collinear waypoint by 2R (the precedent of gerbs.alg2.end_curves)"),
     ("gerbs.alg2.end_curves", None, "straight lines at the first and last waypoints (text, Fig. 4)", "Algorithm 2 as printed builds arcs there, and the path then misses the first and last waypoints by 2R sin(θ_o/2)", Material, "a reader implementing Algorithm 2 as printed gets a path that does not start and end at its waypoints"),
     ("gerbs.fig3.curvature_reduced", None, "parameters chosen to reduce the required curvature (Figs. 2–3)", "on waypoints of our own: the paper gives no waypoints and no reference curvature", Minor, "an illustration; the paper draws no quantitative conclusion from it"),
     ("gerbs.fig6.bfbs_vs_erbs", Some(Verdict::Illustrated), "BFBS and ERBS paths compared (Figs. 5–6)", "on waypoints of our own and ERBS parameters α = σ = 1, not the paper's α = 0, σ = 0.2", Minor, "the figures' data are not in the paper"),

@@ -9,7 +9,8 @@ use crate::algo::gerbs::path::turn_wedge;
 use crate::algo::gerbs::{basis_derivatives, Blend, Knots, Side};
 use crate::numeric::poly::{binomial, Poly};
 use crate::papers::{Outcome, Verdict};
-use crate::scalar::{powi, BigRational};
+use crate::scalar::ball::Ball;
+use crate::scalar::{powi, BigRational, Field, Real};
 
 type Q = BigRational;
 
@@ -399,5 +400,133 @@ pub fn index_range() -> Outcome {
         "the knot vectors of the printed rule, exactly; the basis values at the midpoint of (t_n, t_{n+1}) from the library's BFBS \
          (i = 2), whose indexing is Algorithm 2's. Eqs. (1)/(25)'s range is shifted by one against the knot vector they name \
          and against Algorithm 2: an index offset with one consistent reading (k = 2…n+1), on which no number depends: clause 3",
+    )
+}
+
+/// The unit vector of an integer-coordinate vector along an axis or with an integer length,
+/// exactly (`None` when its length is not rational, or for the zero vector).
+fn exact_unit(v: [i64; 2]) -> Option<[Q; 2]> {
+    let norm2 = num_bigint::BigInt::from(v[0] * v[0] + v[1] * v[1]);
+    let norm = norm2.sqrt();
+    (norm.clone() * &norm == norm2 && norm2 != 0.into())
+        .then(|| [Q::new(v[0].into(), norm.clone()), Q::new(v[1].into(), norm)])
+}
+
+/// p(t_k) = c_k(1/2) of the arc at waypoint `w` with tangent `m` and turn `s` (Eqs. (20)–(22),
+/// then (19) at t = 1/2, θ_o = π/8 as in the report's paths), in balls: the point and its
+/// distance from the waypoint.
+fn knot_point(w: &[Q; 2], m: &[Q; 2], s: i64, radius: &Q, bits: u32) -> ([Ball; 2], Ball) {
+    let ball = |x: &Q| Ball::from_rational(x, &bits);
+    let (w, r) = ([ball(&w[0]), ball(&w[1])], ball(radius));
+    let phi = ball(&m[1]).atan2(&ball(&m[0]));
+    let quarter = Ball::pi(&bits) / &Ball::from_i64(2, &bits);
+    let s_ball = Ball::from_i64(s, &bits);
+    let (sin_c, cos_c) = (phi.clone() + &(s_ball.clone() * &quarter)).sin_cos();
+    let centre = [
+        w[0].clone() + &(r.clone() * &cos_c),
+        w[1].clone() + &(r.clone() * &sin_c),
+    ];
+    let theta_o = Ball::pi(&bits) / &Ball::from_i64(8, &bits);
+    let base = phi - &(s_ball * &quarter);
+    let (theta1, theta2) = (base.clone() + &theta_o, base - &theta_o);
+    let half = ball(&q(1, 2));
+    let angle = (Ball::one_in(&bits) - &half) * &theta1 + &(half * &theta2);
+    let (sin_a, cos_a) = angle.sin_cos();
+    let point = [
+        centre[0].clone() + &(r.clone() * &cos_a),
+        centre[1].clone() + &(r * &sin_a),
+    ];
+    let (dx, dy) = (point[0].clone() - &w[0], point[1].clone() - &w[1]);
+    let miss = (dx.clone() * &dx + &(dy.clone() * &dy)).sqrt();
+    (point, miss)
+}
+
+/// trajverify's own Algorithm 1 on the degenerate waypoints: what it answers.
+fn library_refusals() -> Vec<String> {
+    [
+        ("straight", [[0.0, 0.0], [300.0, 0.0], [600.0, 0.0]]),
+        ("U-turn", [[0.0, 0.0], [100.0, 0.0], [0.0, 0.0]]),
+    ]
+    .iter()
+    .map(
+        |(name, w)| match crate::algo::gerbs::path::tangents::<f64>(w) {
+            Ok(_) => format!("{name}: accepted"),
+            Err(e) => format!("{name}: refused ({e})"),
+        },
+    )
+    .collect()
+}
+
+/// Algorithm 1 as printed on degenerate waypoints, in exact arithmetic (§III: "turning
+/// directions {s_i} ∈ {−1, 1} using Algorithm 1"). A straight continuation W = (0, 0),
+/// (300, 0), (600, 0): m₁ = m₂ = (1, 0), s = sign(m₁ ∧ m₂) = sign(0) = 0; Eq. (20) then puts
+/// the centre at W + R(1, 0) (φ = atan2(0, 1) = 0 exactly) and Eqs. (21)–(22) the arc's
+/// midpoint, which is p(t_k) (B_k(t_k) = 1, gerbs.interpolates_at_knot), at angle φ: W + 2R(1, 0).
+/// A U-turn (0, 0), (100, 0), (0, 0): m₁ + m₂ = 0, so step 8 divides by zero. For n = 2 the loop
+/// of steps 5–10 is empty and step 12 reads s[2], never set.
+pub fn degenerate_turns() -> Outcome {
+    let radius = Q::from_integer(super::setup::RADIUS.into());
+    let (Some(m1), Some(m2)) = (exact_unit([300, 0]), exact_unit([300, 0])) else {
+        return Outcome::new(
+            "",
+            "rational",
+            Verdict::Failed,
+            "the unit directions are not exact",
+        );
+    };
+    let wedge = m1[0].clone() * &m2[1] - &(m1[1].clone() * &m2[0]);
+    let s = if wedge > q(0, 1) {
+        1
+    } else if wedge < q(0, 1) {
+        -1
+    } else {
+        0
+    };
+    // m₁ + m₂ is a positive multiple of (1, 0) (decided exactly), so its unit vector is (1, 0).
+    let sum = [m1[0].clone() + &m2[0], m1[1].clone() + &m2[1]];
+    if !(sum[1] == q(0, 1) && sum[0] > q(0, 1)) {
+        return Outcome::new(
+            "",
+            "rational",
+            Verdict::Failed,
+            "m₁ + m₂ is not along (1, 0)",
+        );
+    }
+    let bits = 128u32;
+    let (point, miss) = knot_point(&[q(300, 1), q(0, 1)], &[q(1, 1), q(0, 1)], s, &radius, bits);
+    let (Some(u1), Some(u2)) = (exact_unit([100, 0]), exact_unit([-100, 0])) else {
+        return Outcome::new(
+            "",
+            "rational",
+            Verdict::Failed,
+            "the unit directions are not exact",
+        );
+    };
+    let sum = [u1[0].clone() + &u2[0], u1[1].clone() + &u2[1]];
+    let sum_norm2 = sum[0].clone() * &sum[0] + &(sum[1].clone() * &sum[1]);
+    let refusals = library_refusals();
+    let two_r = Ball::from_rational(&(radius.clone() + &radius), &bits);
+    let misses_by_two_r = miss.lower() > 0 && (miss.clone() - &two_r).abs().upper() < 1e-30;
+    let degenerate = s == 0 && sum_norm2 == q(0, 1) && misses_by_two_r;
+    Outcome::new(
+        format!(
+            "straight continuation (0, 0), (300, 0), (600, 0): s = sign(m₁ ∧ m₂) = {s} ∉ {{−1, 1}}, and with R = {radius} the path passes \
+             its knot at ({}, {}), {} from the waypoint (2R = {}); U-turn (0, 0), (100, 0), (0, 0): ‖m₁ + m₂‖² = {sum_norm2}, step 8 \
+             divides by zero; n = 2: step 12 reads s[2], which the empty loop never sets",
+            crate::report::number::ball(&point[0], 6),
+            crate::report::number::ball(&point[1], 6),
+            crate::report::number::ball(&miss, 6),
+            crate::report::number::ball(&two_r, 6)
+        ),
+        "rational (Algorithm 1), ball:128 (Eqs. (19)–(22))",
+        if degenerate { Verdict::Discrepancy } else { Verdict::Reproduced },
+        format!(
+            "Algorithm 1 as printed in exact rationals (the unit vectors of axis-aligned steps are exact, so s and ‖m₁ + m₂‖ are \
+             decided exactly), then Eqs. (20)–(22) and (19) with θ_o = π/8 in ball arithmetic at 128 bits; p(t_k) = c_k(1/2) because B_k(t_k) = 1 (gerbs.interpolates_at_knot) and \
+             the arc's parameter 1/2 is the angle (θ₁ + θ₂)/2 = φ − s·π/2. The paper states s_i ∈ {{−1, 1}} and puts no condition \
+             on the waypoints. trajverify's own Algorithm 1 refuses such waypoints with a named error rather than building the \
+             path: {}",
+            refusals.join("; ")
+        ),
     )
 }
