@@ -31,22 +31,7 @@ fn minus(p: &Point2, q: &Point2) -> Point2 {
 
 /// The distance of the point p from the segment [a, b] (a ≠ b), enclosed.
 pub fn segment_distance(p: &Point2, a: &Point2, b: &Point2) -> Ball {
-    let d = minus(b, a);
-    let w = minus(p, a);
-    let length2 = d[0].clone() * &d[0] + &(d[1].clone() * &d[1]);
-    let s = (w[0].clone() * &d[0] + &(w[1].clone() * &d[1])) / &length2;
-    let line = (w[0].clone() * &d[1] - &(w[1].clone() * &d[0])).abs() / &length2.sqrt();
-    let mut candidates = Vec::new();
-    if s.lower() <= 0 {
-        candidates.push(norm(&w));
-    }
-    if s.upper() >= 1 {
-        candidates.push(norm(&minus(p, b)));
-    }
-    if s.upper() >= 0 && s.lower() <= 1 {
-        candidates.push(line);
-    }
-    hull_of(candidates, || norm(&w))
+    CurveBox::at_point(p).distance_to_segment(a, b)
 }
 
 /// The hull of the candidates (the fallback when there are none, which the callers' case
@@ -61,10 +46,7 @@ fn hull_of(candidates: Vec<Ball>, fallback: impl FnOnce() -> Ball) -> Ball {
 /// segments; min is continuous, so no comparison is decided). `None` for fewer than two
 /// vertices.
 pub fn polygon_distance(p: &Point2, vertices: &[Point2]) -> Option<Ball> {
-    vertices
-        .windows(2)
-        .map(|w| segment_distance(p, &w[0], &w[1]))
-        .reduce(|a, b| a.min_with(&b))
+    CurveBox::at_point(p).distance_to_polygon(vertices)
 }
 
 /// The distance of p from the circular arc about `centre` of radius `radius` whose points
@@ -73,27 +55,7 @@ pub fn polygon_distance(p: &Point2, vertices: &[Point2]) -> Option<Ball> {
 /// centre + radius·e₂): ||p − c| − r| when p − c lies in the cone, the nearer end otherwise;
 /// the hull of both where the enclosures do not decide.
 pub fn quarter_arc_distance(p: &Point2, centre: &Point2, radius: &Ball, e: [&Point2; 2]) -> Ball {
-    let v = minus(p, centre);
-    let along = |u: &Point2| v[0].clone() * &u[0] + &(v[1].clone() * &u[1]);
-    let (a1, a2) = (along(e[0]), along(e[1]));
-    let radial = (norm(&v) - radius).abs();
-    let end = |u: &Point2| {
-        let q = [
-            centre[0].clone() + &(radius.clone() * &u[0]),
-            centre[1].clone() + &(radius.clone() * &u[1]),
-        ];
-        norm(&minus(p, &q))
-    };
-    let nearer_end = end(e[0]).min_with(&end(e[1]));
-    let inside = a1.lower() >= 0 && a2.lower() >= 0;
-    let outside = a1.upper() < 0 || a2.upper() < 0;
-    if inside {
-        radial
-    } else if outside {
-        nearer_end
-    } else {
-        Ball::hull(&radial, &nearer_end)
-    }
+    CurveBox::at_point(p).distance_to_quarter_arc(centre, radius, e)
 }
 
 /// A plane curve over a box X of its parameter: its point at the box's midpoint m, and
@@ -126,6 +88,18 @@ fn intersect(a: Ball, b: &Ball) -> Ball {
 }
 
 impl CurveBox {
+    /// A single point (a box of width 0 with no motion): the distances below are then those of
+    /// the point itself.
+    pub fn at_point(p: &Point2) -> CurveBox {
+        let zero = Ball::zero_in(&p[0].mid().prec());
+        CurveBox {
+            at_mid: p.clone(),
+            over: p.clone(),
+            velocity: [zero.clone(), zero.clone()],
+            parameter: zero,
+        }
+    }
+
     /// The Lipschitz form of a 1-Lipschitz function with value `at_mid` at c(m).
     pub fn lipschitz(&self, at_mid: Ball) -> Ball {
         let speed = norm(&self.velocity).abs_upper();

@@ -23,6 +23,7 @@ use super::super::{Outcome, Verdict};
 use super::examples::{turn_curve, Curve, TurnData, TURN_FACTORS};
 use crate::curve::distance::{net_turning, CurveBox, Point2};
 use crate::numeric::maximum::{midpoint, proven_maximum, SearchOptions};
+use crate::numeric::poly::Bernstein;
 use crate::scalar::ball::Ball;
 use crate::scalar::{Field, Float, Real};
 
@@ -50,52 +51,35 @@ pub struct ProvenTurn {
     pub recedes_at_least: Float,
 }
 
-/// Control points (x, y) of a curve in its local parameter u ∈ [0, 1], and of its velocity
-/// dc/du.
+/// A curve's coordinates as Bernstein polynomials in its local parameter u ∈ [0, 1] (the same
+/// control points on [0, 1]), and their derivatives d/du; evaluated on a ball u by
+/// [`Bernstein::eval`] (de Casteljau), which encloses the polynomial over the ball.
 struct Polygons {
-    points: Vec<Point2>,
-    velocity: Vec<Point2>,
+    points: [Bernstein<Ball>; 2],
+    velocity: [Bernstein<Ball>; 2],
 }
 
 impl Polygons {
     fn new(curve: &Curve<Ball>) -> Result<Polygons, String> {
-        let [x, y] = [&curve[0], &curve[1]];
-        let (px, py) = (x.control_points(), y.control_points());
-        if px.len() != py.len() || px.len() < 2 {
-            return Err("the curve's coordinates have different degrees".into());
-        }
-        let points: Vec<Point2> = px
-            .iter()
-            .zip(py)
-            .map(|(a, b)| [a.clone(), b.clone()])
-            .collect();
-        let n = Ball::from_i64(points.len() as i64 - 1, &BITS);
-        let velocity = points
-            .windows(2)
-            .map(|w| [0, 1].map(|k| n.clone() * &(w[1][k].clone() - &w[0][k])))
-            .collect();
+        let local = |b: &Bernstein<Ball>| {
+            Bernstein::new(
+                b.control_points().to_vec(),
+                Ball::zero_in(&BITS),
+                Ball::one_in(&BITS),
+            )
+            .map_err(|e| e.to_string())
+        };
+        let points = [local(&curve[0])?, local(&curve[1])?];
+        let velocity = [points[0].derivative(), points[1].derivative()];
         Ok(Polygons { points, velocity })
     }
 
-    /// de Casteljau's algorithm on a ball u: an enclosure of the polynomial over the ball.
-    fn at(polygon: &[Point2], u: &Ball) -> Point2 {
-        let one_minus = Ball::one_in(&BITS) - u;
-        let mut work = polygon.to_vec();
-        for level in 1..work.len() {
-            for i in 0..work.len() - level {
-                work[i] = [0, 1]
-                    .map(|k| one_minus.clone() * &work[i][k] + &(u.clone() * &work[i + 1][k]));
-            }
-        }
-        work.swap_remove(0)
-    }
-
     fn point(&self, u: &Ball) -> Point2 {
-        Self::at(&self.points, u)
+        [self.points[0].eval(u), self.points[1].eval(u)]
     }
 
     fn velocity(&self, u: &Ball) -> Point2 {
-        Self::at(&self.velocity, u)
+        [self.velocity[0].eval(u), self.velocity[1].eval(u)]
     }
 
     /// A proven enclosure of max_u f(c(u)), f a distance enclosed over a box of the curve.

@@ -463,14 +463,16 @@ fn nearly_verdict(percents: &[Ball]) -> Verdict {
     }
 }
 
-/// The x and y splines of Table II on each proven parametrization.
-fn plane_splines(proven: &Result<Vec<ProvenKnots>, String>) -> Result<Vec<PlaneCurve>, String> {
+/// The x and y splines of Table II on the three proven parametrizations (t^CL, t^EX, t^AP).
+fn plane_splines(proven: &Result<Vec<ProvenKnots>, String>) -> Result<[PlaneCurve; 3], String> {
     let knots = proven.as_ref().map_err(Clone::clone)?;
     let data = components::<Ball>(&proven_splines::BITS);
-    knots
+    let curves: Vec<PlaneCurve> = knots
         .iter()
         .map(|k| Ok([k.spline(&data[0])?, k.spline(&data[1])?]))
-        .collect()
+        .collect::<Result<_, String>>()?;
+    <[PlaneCurve; 3]>::try_from(curves)
+        .map_err(|c| format!("{} parametrizations, not the three of Table III", c.len()))
 }
 
 /// The larger side of the bounding box of Table II's points, exactly.
@@ -490,8 +492,7 @@ fn data_extent() -> Result<BigRational, String> {
 pub fn plane_curves(proven: &Result<Vec<ProvenKnots>, String>) -> Outcome {
     let fail = |e: String| Outcome::new("", "ball:256", Verdict::Failed, e);
     let curves = match plane_splines(proven) {
-        Ok(c) if c.len() == 3 => c,
-        Ok(_) => return fail("fewer than three parametrizations".into()),
+        Ok(c) => c,
         Err(e) => return fail(e),
     };
     let names: Vec<&str> = proven
@@ -541,8 +542,7 @@ pub fn plane_curves(proven: &Result<Vec<ProvenKnots>, String>) -> Outcome {
 pub fn validity_of_34(proven: &Result<Vec<ProvenKnots>, String>) -> Outcome {
     let fail = |e: String| Outcome::new("", "ball:256", Verdict::Failed, e);
     let curves = match plane_splines(proven) {
-        Ok(c) if c.len() == 3 => c,
-        Ok(_) => return fail("a minimizer is missing".into()),
+        Ok(c) => c,
         Err(e) => return fail(e),
     };
     let (ex, ap) = (&curves[1], &curves[2]);
