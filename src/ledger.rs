@@ -41,7 +41,13 @@
 //!    member of a family of alternative metrics, declared before computing (for a sampled
 //!    maximum: every count of equally spaced samples per segment in a declared range, and the
 //!    grids of the authors' code and of common tools), reproduces it; the evidence names the
-//!    member, how many rows it explains and how large the family is.
+//!    member, how many cells it explains and how large the family is. A derived cell (a ratio
+//!    of errors, an observed order) is compared with the same derivation of unrounded values of
+//!    one definition, never of the printed cells. A table row is one claim: every cell within
+//!    ½ (1) unit of the true values, `reproduced` (`reproduced-rounding`); else `metric` when
+//!    one member gives every cell of the row within one unit; else `typo` when, under the true
+//!    values or the table's best member, exactly one cell is off by one symbol other than its
+//!    last digit and every later cell computed from it agrees; else `discrepancy`.
 //! 7. **Severity.** Every claim not reproduced carries a [`Finding`]: what the paper printed,
 //!    what is computed, how they differ (at most ten significant digits each), and its
 //!    [`Severity`], `material` when it changes a conclusion the paper draws or a formula a

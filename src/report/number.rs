@@ -97,6 +97,14 @@ pub fn ball_in(x: &Ball, digits: u32, notation: Notation) -> String {
         .map_or("—".into(), |p| format!("{} ± {}", p.value, p.radius))
 }
 
+/// `x` with its sign and `decimals` decimals: a difference such as (ours − printed) in units
+/// of a printed cell's last digit.
+pub fn signed_fixed(x: f64, decimals: usize) -> String {
+    let text = format!("{x:+.decimals$}");
+    audit::formatted(text.trim_start_matches('+'), &Float::with_val(64, x));
+    text
+}
+
 /// A table column: every value to `digits` significant digits in one notation, scientific
 /// for the whole column when any of its values needs it.
 pub fn column(values: &[f64], digits: u32) -> Vec<String> {

@@ -132,9 +132,23 @@ pub fn grid_error<T: Real, C: Curve<T> + ?Sized>(curve: &C, pw: &PiecewisePh<T>,
 pub fn proven_grid_error<C: Curve<Ball> + ?Sized>(
     curve: &C,
     pw: &PiecewisePh<Ball>,
-    (a, b): (&BigRational, &BigRational),
+    interval: (&BigRational, &BigRational),
     ts: &[BigRational],
 ) -> Ball {
+    let bits = pw.step().ctx();
+    proven_grid_distances(curve, pw, interval, ts)
+        .into_iter()
+        .fold(Ball::zero_in(&bits), |m, d| m.max_with(&d))
+}
+
+/// The distances ‖γ(t) − p(t)‖ at the grid `ts`, in order, each proven (a ball), each t
+/// located exactly as [`proven_grid_error`] locates it.
+pub fn proven_grid_distances<C: Curve<Ball> + ?Sized>(
+    curve: &C,
+    pw: &PiecewisePh<Ball>,
+    (a, b): (&BigRational, &BigRational),
+    ts: &[BigRational],
+) -> Vec<Ball> {
     let bits = pw.step().ctx();
     let count = pw.segments().len();
     let n = BigRational::from_integer(count.into());
@@ -151,9 +165,11 @@ pub fn proven_grid_error<C: Curve<Ball> + ?Sized>(
             (i, k, xi)
         })
         .collect();
-    distances_at(curve, pw, &points)
-        .into_iter()
-        .fold(Ball::zero_in(&bits), |m, (_, _, d)| m.max_with(&d))
+    let mut out = vec![Ball::zero_in(&bits); ts.len()];
+    for (i, _, d) in distances_at(curve, pw, &points) {
+        out[i] = d;
+    }
+    out
 }
 
 /// What lets [`certified_grid_error`] and [`super::piecewise::certified_error`] skip grid

@@ -45,6 +45,10 @@ pub const SPECS: &[ClaimSpec] = &[
     spec!("gerbs.bfbs.smoothness", "Sec. II-B", "the BFBS is C^m with m = min i_k"),
     spec!("gerbs.erbs.smoothness", "Sec. II-A", "for α > 0 the ERBS basis is C^∞ (all one-sided derivatives vanish at the knots)"),
     spec!("gerbs.sec2.derivatives_vanish", "Sec. II-A", "all derivatives of c_k(t)B_k(t) are zero at t_{k−1} and t_{k+1} for lines, arcs and Bézier curves"),
+    spec!("gerbs.eq6.f_conditions", "Sec. II-B, after Eq. (6)", "F_j is monotonously increasing and left-continuous, and the left-hand limits satisfy F(t_{j−1}+) = F(t_{i_1}) = 0 and F(t_i+) = F(t_i) = 1"),
+    spec!("gerbs.erbs.parameter_range", "Sec. II-A, after Eq. (4)", "with α_k > 0, β_k > 0, γ_k > 0, 1 ≥ λ_k ≥ 0, σ_k ≥ 0 the basis B_k(t) is C^∞"),
+    spec!("gerbs.sec2.second_order_bspline", "Sec. II-A", "in contrast to normal B-splines where a second order B-spline is C¹ continuous"),
+    spec!("gerbs.alg2.loop_range", "Algorithm 2, step 9; Eq. (1)", "for t ∈ (T[1], T[n+2]): evaluate the path"),
     spec!("gerbs.sec2.cdr_rule", "Sec. II-A; Sec. IV", "a B-spline of degree d is C^{d−r} at a knot of multiplicity r; an order-two B-spline would not give a smooth path"),
     spec!("gerbs.sec3.lines_c0", "Sec. I", "a path of straight lines between the waypoints is only C⁰"),
     spec!("gerbs.eq1_25.index_range", "Eqs. (1), (25); Algorithm 2", "p(t) = Σ_{i=1}^n c_i(t)B_i(t) over the knots t_1…t_{n+2}"),
@@ -156,6 +160,12 @@ fn basis_checks(ledger: &mut Ledger) -> (Vec<basis::SmoothRow>, Vec<Vec<String>>
         statements::derivatives_vanish(),
     );
     ledger.record("gerbs.sec2.cdr_rule", statements::continuity_rule());
+    ledger.record(
+        "gerbs.sec2.second_order_bspline",
+        statements::second_order_bspline(),
+    );
+    ledger.record("gerbs.eq6.f_conditions", statements::f_conditions());
+    ledger.record("gerbs.alg2.loop_range", paths::loop_range());
     ledger.record("gerbs.sec3.lines_c0", statements::polyline_c0());
     ledger.record("gerbs.eq1_25.index_range", statements::index_range());
     let (partition, at_knot) = basis::partition();
@@ -163,10 +173,11 @@ fn basis_checks(ledger: &mut Ledger) -> (Vec<basis::SmoothRow>, Vec<Vec<String>>
     ledger.record("gerbs.interpolates_at_knot", at_knot);
     let (bfbs, mut rows) = basis::bfbs_smoothness();
     ledger.record("gerbs.bfbs.smoothness", bfbs);
-    let (erbs_smooth, fig2, erbs_rows) = basis::erbs_smoothness();
+    let (erbs_smooth, fig2, sigma_range, erbs_rows) = basis::erbs_smoothness();
     rows.extend(erbs_rows);
     ledger.record("gerbs.erbs.smoothness", erbs_smooth);
     ledger.record("gerbs.fig2.parameters", fig2);
+    ledger.record("gerbs.erbs.parameter_range", sigma_range);
     let (centre, centre_rows) = basis::centre_reading();
     ledger.record("gerbs.eq4.centre", centre);
     (rows, centre_rows)
@@ -186,6 +197,10 @@ const AMENDMENTS: &[Amendment] = &[
     ("gerbs.sec3.knot_vector_words", None, "a strictly increasing knot vector … where t_1 = t_2 = 0", "the end knots repeat, so the vector is increasing, not strictly; the interior knots are simple", Minor, "the printed knots themselves are consistent (gerbs.sec3.knots)"),
     ("gerbs.eq1_25.index_range", None, "p(t) = Σ_{i=1}^n c_i(t)B_i(t), knots t_1…t_{n+2}", "the knots define B_2…B_{n+1}, Algorithm 2's range; B_1 would need t_0", Minor, "Algorithm 2, which a reader implements, uses the consistent range"),
     ("gerbs.alg1.returns_s", None, "Algorithm 1 returns m", "it must return (m, s): Algorithm 2 takes s, and without it every right turn bends the wrong way", Minor, "s is computed in Algorithm 1 and its use in Algorithm 2 is printed"),
+    ("gerbs.eq6.f_conditions", None, "F(t_{j−1}+) = F(t_{i_1}) = 0 and F(t_i+) = F(t_i) = 1", "indices i_1 and i that Eq. (6) does not define and a right-hand limit at the right end; the consistent reading F(t_{j−1}) = 0, F(t_j−) = F(t_j) = 1 holds for the BFBS", Minor, "the bases the paper uses satisfy the consistent reading; no number depends on it"),
+    ("gerbs.erbs.parameter_range", None, "B_k ∈ C^∞ for α_k > 0, β_k > 0, γ_k > 0, 1 ≥ λ_k ≥ 0, σ_k ≥ 0", "a non-integer σ (the paper's own σ = 0.2) leaves B″ unbounded at the centre of each knot interval: C¹ only; σ ∈ ℕ₀ keeps C^∞", Material, "Figs. 2–4, 6 and 7 use σ = 0.2, and a reader taking the stated range gets unbounded curvature between the waypoints"),
+    ("gerbs.sec2.second_order_bspline", None, "a second order B-spline is C¹ continuous", "C⁰ for C¹: a second-order B-spline (degree 1, the order whose interpolating property the paper invokes next) is C⁰ at simple knots; degree 2 is C¹ but does not interpolate", Minor, "one digit; the paper's own C^(d−r) rule gives C⁰, and the argument (ERBS raise the continuity without raising the degree) stands"),
+    ("gerbs.alg2.loop_range", None, "for t ∈ (T[1], T[n+2])", "the open right end never evaluates t = 1, where the path reaches W_n; Eq. (1)'s domain (t_1, t_{n+2}] includes it", Minor, "one bracket; Eq. (1) fixes the reading and no printed number depends on it"),
     ("gerbs.alg1.degenerate_turns", None, "unit tangents and turns s_i ∈ {−1, 1} from Algorithm 1, no condition on the waypoints", "a straight continuation gives s = 0 and a path that passes its knot 2R past the waypoint; a U-turn divides by zero in step 8; for n = 2, s[2] is never set", Material, "a reader implementing Algorithm 1 silently misses a collinear waypoint by 2R (the precedent of gerbs.alg2.end_curves)"),
     ("gerbs.alg2.end_curves", None, "straight lines at the first and last waypoints (text, Fig. 4)", "Algorithm 2 as printed builds arcs there, and the path then misses the first and last waypoints by 2R sin(θ_o/2)", Material, "a reader implementing Algorithm 2 as printed gets a path that does not start and end at its waypoints"),
     ("gerbs.fig3.curvature_reduced", None, "parameters chosen to reduce the required curvature (Figs. 2–3)", "on waypoints of our own: the paper gives no waypoints and no reference curvature", Minor, "an illustration; the paper draws no quantitative conclusion from it"),

@@ -1,7 +1,7 @@
 //! Path checks: Algorithm 2 (interpolation, tangent direction, curvature continuity), the
 //! BFBS/ERBS and Dubins comparisons of Figs. 6–7, and locality.
 
-use super::setup::{bfbs_path, erbs_path, proven_erbs, spec, ErbsSet, HI, LO, RADIUS};
+use super::setup::{bfbs_path, erbs_path, proven_erbs, spec, ErbsSet, HI, LO, RADIUS, WAYPOINTS};
 use crate::algo::gerbs::bfbs::Bfbs;
 use crate::algo::gerbs::dubins::{through_poses, DubinsPath};
 use crate::algo::gerbs::path::{
@@ -526,6 +526,46 @@ fn locality_proof() -> Result<Outcome, String> {
          [t_(i−1), t_(i+3)], two knot intervals on each side of W_i — still local; on this five-waypoint path that is all of \
          [0, 1], so the sentence is judged on the blending step it describes (m and s kept), which is what holds",
     ))
+}
+
+/// Algorithm 2, step 9: "for t ∈ (T[1], T[n+2])". Eq. (1) defines the path on
+/// (t_1, t_{n+2}], and Sec. III: "the path starts at W_1 and ends in W_n". On the documented
+/// BFBS path (lines at the ends, in balls at 256 bits): the path at t_{n+2} = 1 (from the
+/// left) is W_n, and at t = 1 − 10⁻³, inside the printed open range, it is not; the open right
+/// end never evaluates the path where it reaches W_n.
+pub fn loop_range() -> Outcome {
+    let scalar = "ball:256";
+    let (path, _) = bfbs_and_variant(|_| {});
+    let n = WAYPOINTS.len();
+    let last = WAYPOINTS[n - 1];
+    let distance = |p: &[Ball; 2]| {
+        let dx = p[0].clone() - &Ball::from_i64(last[0], &HI);
+        let dy = p[1].clone() - &Ball::from_i64(last[1], &HI);
+        (dx.clone() * &dx + &(dy.clone() * &dy)).sqrt()
+    };
+    let end = distance(&path.at_knot(n + 2, Side::Left).point);
+    let near = Ball::from_rational(&BigRational::new(999.into(), 1000.into()), &HI);
+    // Knot interval n (1-based) is [t_n, t_{n+1}] = [(n − 2)/(n − 1), 1].
+    let inside = distance(&path.at_on(&near, n).point);
+    let verdict = if end.abs_upper() < 1e-60 && inside.lower() > 0 {
+        Verdict::Typo
+    } else {
+        Verdict::Failed
+    };
+    Outcome::new(
+        format!(
+            "|p(t_(n+2)) − W_n| ≤ {:.1e} (the path ends at W_n at t = 1); at t = 0.999, inside the printed range, |p − W_n| = {}",
+            end.abs_upper(),
+            crate::report::number::ball(&inside, 6)
+        ),
+        scalar,
+        verdict,
+        "the documented waypoints (setup::WAYPOINTS), R = 80, θ_o = π/8, BFBS i = 2 with lines at the ends, in ball arithmetic \
+         at 256 bits; p(t_(n+2)) from the left at the last knot (B_(n+1)(t_(n+1)) = 1 with t_(n+1) = t_(n+2) = 1). As printed, \
+         step 9's open range (T[1], T[n+2]) never evaluates t = 1, so the sampled path never reaches W_n, against \"ends in W_n\" \
+         and Eq. (1)'s domain (t_1, t_(n+2)]. One bracket, with one consistent reading that Eq. (1) fixes and on which no printed \
+         number depends: clause 3",
+    )
 }
 
 /// The documented BFBS path (arcs in the turn direction) and a variant of it whose spec

@@ -298,26 +298,7 @@ pub fn continuity_rule() -> Outcome {
     for d in 1..=5usize {
         for r in 1..=d {
             cases += 1;
-            // Clamped ends, interior knots 1 (simple), 2 (multiplicity r), 3 (simple).
-            let mut knots: Vec<Q> = vec![q(0, 1); d + 1];
-            knots.push(q(1, 1));
-            knots.extend(std::iter::repeat_n(q(2, 1), r));
-            knots.push(q(3, 1));
-            knots.extend(std::iter::repeat_n(q(4, 1), d + 1));
-            let left = knots.iter().rposition(|t| *t < q(2, 1)).unwrap_or(0); // interval ending at 2
-            let right = knots.iter().position(|t| *t == q(2, 1)).unwrap_or(0) + r - 1; // interval starting at 2
-            let smooth = de_boor_pieces(&knots, d)
-                .iter()
-                .map(|b| {
-                    (0..=d)
-                        .take_while(|&o| {
-                            b[left].nth_derivative(o).eval(&q(2, 1))
-                                == b[right].nth_derivative(o).eval(&q(2, 1))
-                        })
-                        .count()
-                })
-                .min()
-                .unwrap_or(0);
+            let smooth = knot_behaviour(d, r).0;
             // smooth = number of orders that agree: C^(smooth − 1).
             if smooth != d - r + 1 {
                 failures.push(format!("d = {d}, r = {r}: C^{}", smooth as i64 - 1));
@@ -334,6 +315,90 @@ pub fn continuity_rule() -> Outcome {
         "clamped knot vectors with interior knots 1, 2 (multiplicity r) and 3; every B-spline basis function built by the Cox–de \
          Boor recursion as exact polynomials on each knot interval; its derivatives of orders 0…d compared from the left and the \
          right of t = 2; the basis is C^m there when orders 0…m agree for every function",
+    )
+}
+
+/// How the degree-d B-spline basis behaves on clamped knots with interior knots 1 (simple),
+/// 2 (multiplicity r) and 3 (simple), exactly: the number of derivative orders 0…d in which
+/// every basis function agrees from both sides of t = 2 (the basis is C^(that − 1) there), and
+/// the largest basis value at the simple knot t = 1 (1 where a basis function interpolates its
+/// coefficient there).
+fn knot_behaviour(d: usize, r: usize) -> (usize, Q) {
+    let mut knots: Vec<Q> = vec![q(0, 1); d + 1];
+    knots.push(q(1, 1));
+    knots.extend(std::iter::repeat_n(q(2, 1), r));
+    knots.push(q(3, 1));
+    knots.extend(std::iter::repeat_n(q(4, 1), d + 1));
+    let left = knots.iter().rposition(|t| *t < q(2, 1)).unwrap_or(0); // interval ending at 2
+    let right = knots.iter().position(|t| *t == q(2, 1)).unwrap_or(0) + r - 1; // interval starting at 2
+    let at_one = knots.iter().position(|t| *t == q(1, 1)).unwrap_or(0); // interval starting at 1
+    let basis = de_boor_pieces(&knots, d);
+    let smooth = basis
+        .iter()
+        .map(|b| {
+            (0..=d)
+                .take_while(|&o| {
+                    b[left].nth_derivative(o).eval(&q(2, 1))
+                        == b[right].nth_derivative(o).eval(&q(2, 1))
+                })
+                .count()
+        })
+        .min()
+        .unwrap_or(0);
+    let peak = basis
+        .iter()
+        .map(|b| b[at_one].eval(&q(1, 1)))
+        .fold(q(0, 1), |m, v| if v > m { v } else { m });
+    (smooth, peak)
+}
+
+/// Sec. II-A: "in contrast to normal B-splines where a second order B-spline is C¹
+/// continuous", two sentences before "it is therefore possible to keep the interpolating
+/// property of second order B-splines". Which degree "second order" names is fixed by the
+/// second sentence: of degree 1 (order = degree + 1) and degree 2 (order = degree), the one
+/// whose basis interpolates at a simple knot (a basis function equal to 1 there). The sentence
+/// holds when that degree is C¹ at simple knots. Exact, by [`knot_behaviour`].
+pub fn second_order_bspline() -> Outcome {
+    let degrees = [1usize, 2];
+    let behaviour: Vec<(usize, Q)> = degrees.iter().map(|&d| knot_behaviour(d, 1)).collect();
+    let interpolating: Vec<usize> = degrees
+        .iter()
+        .zip(&behaviour)
+        .filter(|(_, (_, peak))| *peak == q(1, 1))
+        .map(|(&d, _)| d)
+        .collect();
+    let class = |d: usize| behaviour[d - 1].0 as i64 - 1;
+    // The printed class is C¹: a class of 1 reproduces it; C⁰ is one digit from the print,
+    // with the reading the paper's own C^(d−r) rule fixes (clause 3); anything else contradicts.
+    let verdict = match interpolating[..] {
+        [d] if class(d) == 1 => Verdict::Reproduced,
+        [d] if class(d) == 0 => Verdict::Typo,
+        [_] => Verdict::Discrepancy,
+        _ => Verdict::Undetermined,
+    };
+    let describe = |d: usize| {
+        let (_, peak) = &behaviour[d - 1];
+        format!(
+            "degree {d}: C^{} at a simple knot, largest basis value there {peak} ({})",
+            class(d),
+            if *peak == q(1, 1) {
+                "interpolates"
+            } else {
+                "does not interpolate"
+            }
+        )
+    };
+    Outcome::new(
+        format!("{}; {}", describe(1), describe(2)),
+        "rational",
+        verdict,
+        "clamped knots with simple interior knots, the basis by the Cox–de Boor recursion as exact polynomials on each interval \
+         (as gerbs.sec2.cdr_rule): one-sided derivatives compared at an interior knot, basis values at another. The paper's own \
+         use of \"second order\" is fixed by the interpolating property it names two sentences later, which only the degree-1 \
+         basis (order = degree + 1, the usual convention) has; that basis is C⁰, not C¹ (the paper's own C^(d−r) rule with d = 1, \
+         r = 1, gerbs.sec2.cdr_rule). The other reading (degree 2) is C¹ but does not interpolate, so it contradicts the next \
+         sentence. One digit (C¹ for C⁰), with the one consistent reading the paper's own rule fixes, on which no printed number \
+         depends: clause 3",
     )
 }
 
@@ -527,6 +592,54 @@ pub fn degenerate_turns() -> Outcome {
              on the waypoints. trajverify's own Algorithm 1 refuses such waypoints with a named error rather than building the \
              path: {}",
             refusals.join("; ")
+        ),
+    )
+}
+
+/// Sec. II-B, after Eq. (6): F_j "is monotonously increasing and left-continuous, and the
+/// left-hand limits satisfy F(t_{j−1}+) = F(t_{i_1}) = 0 and F(t_i+) = F(t_i) = 1". Eq. (6)
+/// is indexed by j; the consistent reading is F(t_{j−1}) = 0 and F(t_j−) = F(t_j) = 1 (the
+/// rising part on [t_{j−1}, t_j]). The BFBS of the report (i = 2) on Fig. 1's knots, exactly:
+/// its rising part at both ends of every non-empty knot interval.
+pub fn f_conditions() -> Outcome {
+    let knots = super::setup::fig1_knots::<Q>(&());
+    let Ok(bfbs) = crate::algo::gerbs::bfbs::Bfbs::uniform(2, 5) else {
+        return Outcome::failed(
+            "rational",
+            "the BFBS of order 2 on five knots could not be built",
+        );
+    };
+    let mut failures = Vec::new();
+    let mut intervals = 0;
+    for j in 1..knots.as_slice().len() {
+        let (a, b) = (knots.at(j).clone(), knots.at(j + 1).clone());
+        if a >= b {
+            continue;
+        }
+        intervals += 1;
+        let start = bfbs.rising(&knots, j, &a, 0).value().clone();
+        let end = bfbs.rising(&knots, j, &b, 0).value().clone();
+        if start != q(0, 1) || end != q(1, 1) {
+            failures.push(format!("[{a}, {b}]: F = {start} … {end}"));
+        }
+    }
+    Outcome::new(
+        format!(
+            "the BFBS rising part is 0 at the start and 1 at the end of {} of {intervals} knot intervals (the reading F(t_(j−1)) = 0, \
+             F(t_j) = 1); the printed F(t_(i_1)) = 0, F(t_i+) = 1 name indices i_1 and i that Eq. (6) does not define, and a \
+             right-hand limit at the interval's right end",
+            intervals - failures.len()
+        ),
+        "rational",
+        if failures.is_empty() && intervals > 0 {
+            Verdict::Discrepancy
+        } else {
+            Verdict::Failed
+        },
+        format!(
+            "Fig. 1's knots {{0, 0, 1/4, 1/2, 3/4, 1, 1}}, the BFBS of order i = 2 (Eq. 10), its rising part F_j evaluated exactly \
+             at both ends of each non-empty interval. The printed conditions carry several independent garbles (two index letters \
+             and a limit side), so by clause 3 they are not one typo; the consistent reading holds. Failures: {failures:?}"
         ),
     )
 }

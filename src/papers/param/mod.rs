@@ -54,7 +54,10 @@ pub const SPECS: &[ClaimSpec] = &[
     ClaimSpec { id: "marin.eq34.quadrature_factor", location: "Sec. 3, before Eq. 34", statement: "replacing M by its diagonal has the same effect as rectangular quadrature with centred differences for the second derivatives", published: None },
     ClaimSpec { id: "marin.abstract.objective_weights", location: "Abstract", statement: "parametrizations are chosen by minimizing Σ_l ∫(d²θ^l/dt²)² dt (the weights 1/α_l² not written)", published: None },
     ClaimSpec { id: "marin.eq30.always_improves", location: "Sec. 3, after Eq. 30; Sec. 4", statement: "gradient projection from chord length always results in an improved parametrization, provided π_B(∇G|h⁽⁰⁾) ≠ 0", published: None },
+    ClaimSpec { id: "marin.fig34.x_most_pronounced", location: "Sec. 3, example 1", statement: "these observations (smaller third-derivative jumps, oscillations more centred about zero) are most pronounced when the plot of d²x/dt² from Fig. 3 is compared to the one in Fig. 4", published: None },
     ClaimSpec { id: "marin.sec2.oscillations_centred", location: "Sec. 2 bullet (iii); Sec. 3", statement: "with the minimizing parametrization, oscillations in the second derivative are more centred about zero", published: None },
+    ClaimSpec { id: "marin.eq26.tilde", location: "Sec. 2, proof of Corollary 2, Eq. (26), first line", statement: "the immediate implication of (25) and case II uniqueness is that t̂_{i_k} = t*_{i_k}, k = 0, …, M", published: None },
+    ClaimSpec { id: "marin.eq13.extremum_index", location: "Sec. 2, case III, before Eq. (13)", statement: "identify all indices 1 ≤ i_1 < … < i_{M−1} ≤ N−1 for which Δ_{i_{k+1}}/Δ_{i_k} < 0", published: None },
     ClaimSpec { id: "marin.case3.observations", location: "Sec. 2, case III, observations (i)–(ii)", statement: "z_j lies strictly between consecutive extremes; ψ interpolates the edited data and is strictly monotone between them, so Eq. 17 is uniquely solvable", published: None },
     ClaimSpec { id: "marin.table2.overshoots_no_problem", location: "Sec. 3, on Table II", statement: "position overshoots are not a problem in any of the parametrizations of this data", published: None },
     ClaimSpec { id: "marin.fig2.plane_curves", location: "Sec. 3, Fig. 2", statement: "the resulting plane curves are nearly identical for the three parametrizations", published: None },
@@ -134,9 +137,14 @@ pub fn verify() -> PaperOutput {
     );
     ledger.record("marin.eq30.always_improves", sentences::always_improves());
     ledger.record("marin.case3.observations", sentences::case3_observations());
+    ledger.record("marin.eq13.extremum_index", sentences::extremum_index());
     ledger.record(
         "marin.sec2.oscillations_centred",
         sentences::oscillations_centred(&plane.proven),
+    );
+    ledger.record(
+        "marin.fig34.x_most_pronounced",
+        sentences::x_most_pronounced(&plane.proven),
     );
     ledger.record(
         "marin.table2.overshoots_no_problem",
@@ -189,6 +197,9 @@ const AMENDMENTS: &[Amendment] = &[
     ("marin.sec2.overshoots_reduced", None, "the minimizing parametrization reduces overshoots", "one reading holds on the robot data, not on Table II (see the evidence)", Minor, "a remark, not a result of the paper"),
     ("marin.fig45.validity_of_34", None, "Figs. 4 and 5 illustrate that (34) may replace (31)", "some panels differ by more than the declared 1 % of their range (see the reproduced value)", Minor, "an illustration; the paper compares the two objectives by Table III (marin.table3.*)"),
     ("marin.eq34.quadrature_factor", None, "M̂ has the same effect as rectangular quadrature with centred differences", "Eq. 34's G is 3/2 times that objective for every h: the same minimizer, not the same value", Minor, "a constant factor changes no parametrization the paper computes"),
+    ("marin.fig34.x_most_pronounced", None, "most pronounced for x", "x's jump sum falls more than y's, but y becomes more centred than x under the declared measure", Minor, "an observation about two figures; no number depends on it"),
+    ("marin.eq26.tilde", None, "t̂_{i_k} = t*_{i_k} as the implication of (25)", "the printed line is Eq. (16), a definition; the step needs t̃_{i_k} = t̂_{i_k}, which holds", Minor, "one symbol in a proof; the corollary itself is checked by marin.cor2.unique_minimizer"),
+    ("marin.eq13.extremum_index", None, "indices for which Δ_{i_{k+1}}/Δ_{i_k} < 0", "the condition relates chosen indices to each other and admits many index sets; Δ_{i_k+1}/Δ_{i_k} < 0 (the case's heading, Corollary 3 (ii)) selects the interior extremes", Minor, "one misplaced subscript; the heading and Corollary 3 fix the reading"),
     ("marin.abstract.objective_weights", None, "Σ_l ∫(d²θ^l/dt²)² dt", "the weights 1/α_l² of Eq. 31 are lost; they change the robot's parametrization (see the reproduced value)", Minor, "Eq. 31, which the paper computes with, carries them"),
     ("marin.sec2.oscillations_centred", None, "oscillations in θ″ more centred about zero", "not under the declared measure for every component (see the reproduced value)", Minor, "a qualitative remark; the paper gives no measure"),
     // Provenance (clause 1): the corner data are ours.

@@ -185,7 +185,9 @@ pub fn section(ledger: &mut Ledger) -> Option<TableOne> {
     ledger.record("marin.eq8.interior_slope", eq8_slope());
     ledger.record("marin.eq11.jump", eq11_general());
     ledger.record("marin.cor1.numerical", corollary_one());
-    ledger.record("marin.cor2.unique_minimizer", corollary_two());
+    let corollary = corollary_two();
+    ledger.record("marin.eq26.tilde", super::sentences::eq26_tilde(&corollary));
+    ledger.record("marin.cor2.unique_minimizer", corollary);
     ledger.record("marin.cor3.properties", corollary_three());
     Some(TableOne {
         t_star: t_hi,

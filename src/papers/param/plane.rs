@@ -370,29 +370,32 @@ fn exact_components() -> Vec<Vec<BigRational>> {
 /// Sec. 2, after Corollary 3, bullet (ii) for higher-dimensional data: the minimizing
 /// parametrizations reduce the third-derivative jumps at breakpoints that are not relative
 /// extremes of the component, compared with chord length.
+/// Per component of Table II, on the knots `p`: Σ |θ‴(t_j+) − θ‴(t_j−)| over the interior
+/// knots that are not relative extremes of that component's data (decided on the exact data).
+pub(super) fn jump_sums(p: &ProvenKnots) -> Result<Vec<Ball>, String> {
+    exact_components()
+        .iter()
+        .map(|z| {
+            let extremes = weak_extremes(z);
+            let s = p.spline(&balls(z))?;
+            let third = third_derivatives(&s, &p.h);
+            Ok((1..p.knots.len() - 1)
+                .filter(|j| !extremes.contains(j))
+                .fold(Ball::zero_in(&BITS), |a, j| {
+                    a + &(third[j].clone() - &third[j - 1]).abs()
+                }))
+        })
+        .collect()
+}
+
 fn third_jump_claim(proven: &Result<Vec<ProvenKnots>, String>) -> Outcome {
     let scalar = "ball:256";
     // Per parametrization and component: Σ |θ‴(t_j+) − θ‴(t_j−)| over the non-extreme knots.
     let computed = decided(|| {
         let proven = proven.as_ref().map_err(Clone::clone)?;
-        let exact = exact_components();
         let sums = proven
             .iter()
-            .map(|p| {
-                exact
-                    .iter()
-                    .map(|z| {
-                        let extremes = weak_extremes(z);
-                        let s = p.spline(&balls(z))?;
-                        let third = third_derivatives(&s, &p.h);
-                        Ok((1..p.knots.len() - 1)
-                            .filter(|j| !extremes.contains(j))
-                            .fold(Ball::zero_in(&BITS), |a, j| {
-                                a + &(third[j].clone() - &third[j - 1]).abs()
-                            }))
-                    })
-                    .collect::<Result<Vec<Ball>, String>>()
-            })
+            .map(jump_sums)
             .collect::<Result<Vec<_>, String>>()?;
         let reduced = sums.len() == 3
             && sums[1..]

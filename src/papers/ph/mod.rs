@@ -12,6 +12,7 @@
 mod algorithm2;
 mod coefficients;
 mod figures;
+mod forensics;
 mod nrho;
 mod preliminaries;
 mod proven;
@@ -131,6 +132,30 @@ pub const SPECS: &[ClaimSpec] = &[
         "phodcos.eq18.a4",
         "Remark 2, Eq. (18)",
         "A_4 from Lemma 2 applied as printed",
+        None
+    ),
+    spec!(
+        "phodcos.sec6a.poles",
+        "Sec. 6A",
+        "the NRHO's high eccentricity brings it very close to the lunar north pole, while it deviates significantly when passing over the south pole",
+        None
+    ),
+    spec!(
+        "phodcos.eq24a.unit_direction",
+        "Sec. 6B, Eq. (24a)",
+        "ṗ = v[cos φ cos θ, sin φ, cos φ sin θ], with v the velocity magnitude and θ, φ the gimbal angles",
+        None
+    ),
+    spec!(
+        "phodcos.sec5b.order7_unknowns",
+        "Sec. 5B",
+        "a preimage of order 7 (4 · 7 = 28 > 27) accounts for sufficient degrees of freedom",
+        None
+    ),
+    spec!(
+        "phodcos.sec3.smoothness_class",
+        "Sec. 3, after Eq. (1); P3",
+        "the curve is assumed to be of differentiability class C^m, where m ≥ 2",
         None
     ),
     spec!(
@@ -537,6 +562,7 @@ fn preliminary_checks(ledger: &mut Ledger) -> Vec<(&'static str, Outcome)> {
         "phodcos.sec5c.theta4_redundant",
         preliminaries::theta4_redundant(),
     );
+    counting_checks(ledger);
     let (eq15, eq28) = coefficients::hodograph();
     let [lam, ap, cp, cp26] = coefficients::middle_equations();
     let coefficients = vec![
@@ -658,6 +684,11 @@ fn nrho_checks(ledger: &mut Ledger) -> (nrho::Nrho, [String; 4]) {
     ledger.record("phodcos.sec6a.nrho_conversion", conv);
     ledger.record("phodcos.sec6a.nrho_continuity", cont);
     ledger.record("phodcos.sec6a.resonance", res);
+    ledger.record("phodcos.sec6a.poles", nrho::poles());
+    ledger.record(
+        "phodcos.eq24a.unit_direction",
+        preliminaries::unit_direction(),
+    );
     let transitions = if transitions.verdict == Verdict::Reproduced {
         transitions
     } else {
@@ -671,4 +702,28 @@ fn nrho_checks(ledger: &mut Ledger) -> (nrho::Nrho, [String; 4]) {
     };
     ledger.record("phodcos.fig4.four_transitions", transitions);
     (nrho, nrho_findings)
+}
+
+/// Sec. 5B's count of unknowns and Sec. 3's smoothness class, both counted on Algorithm 1.
+fn counting_checks(ledger: &mut Ledger) {
+    ledger.record(
+        "phodcos.sec5b.order7_unknowns",
+        found(
+            preliminaries::order7_unknowns(),
+            "a preimage of order 7 has 4 · 7 = 28 unknowns",
+            "a degree-n preimage has n + 1 quaternion coefficients, 4(n + 1) unknowns: 32 for order 7 (the paper's own n = 8 count, 36 − 27 = 9, uses 4(n + 1))",
+            Minor,
+            "the conclusion (enough unknowns for 27 conditions) holds either way, and the method uses n = 8",
+        ),
+    );
+    ledger.record(
+        "phodcos.sec3.smoothness_class",
+        found(
+            preliminaries::smoothness_class(),
+            "γ ∈ C^m with m ≥ 2",
+            "Algorithm 1 needs γ′ … γ⁗ at the segment ends: C⁴, as Sec. 2 states",
+            Minor,
+            "Sec. 2 and Algorithm 1's inputs state what is needed; no number depends on it",
+        ),
+    );
 }

@@ -363,3 +363,72 @@ fn substituted(outcome: Outcome, paper: &str) -> Outcome {
         "an illustration of the method on the tutorial's orbit; the paper prints no number to compare",
     )
 }
+
+/// Sec. 6A: the NRHO's "high orbital eccentricity brings it very close to the lunar north pole,
+/// while it deviates significantly when passing over the south pole". On the orbit's data rows
+/// (the catalogue orbit the paper cites, rotating frame, the Moon at (1 − μ, 0, 0)), each double
+/// taken exactly as a rational: the perilune and apolune rows (the least and greatest distance
+/// from the Moon's centre, compared exactly), and the criterion declared before computing —
+/// the perilune at latitude ≥ +60° (z ≥ 0 and z² ≥ ¾|r|², as sin 60° = √3/2), the apolune at
+/// latitude ≤ −60° (z ≤ 0, z² ≥ ¾|r|²), apolune/perilune ≥ 10 (|r_a|² ≥ 100|r_p|²) — decided
+/// exactly. The distances and latitudes shown are f64 roundings of those rows.
+pub fn poles() -> Outcome {
+    let scalar = "rational (the distances and latitudes shown are f64)";
+    let orbit = load();
+    let exact = |x: f64| BigRational::from_float(x);
+    let (Some(mu), Some(one)) = (exact(MU), exact(1.0)) else {
+        return Outcome::failed(scalar, "μ is not finite");
+    };
+    let moon = |s: &[f64; 6]| -> Option<[BigRational; 3]> {
+        Some([
+            exact(s[0])? - &(one.clone() - &mu),
+            exact(s[1])?,
+            exact(s[2])?,
+        ])
+    };
+    let rows: Option<Vec<[BigRational; 3]>> = orbit.states.iter().map(moon).collect();
+    let Some(rows) = rows else {
+        return Outcome::failed(scalar, "a data row is not finite");
+    };
+    let norm2 = |r: &[BigRational; 3]| {
+        r[0].clone() * &r[0] + &(r[1].clone() * &r[1]) + &(r[2].clone() * &r[2])
+    };
+    let (Some(near), Some(far)) = (
+        rows.iter().min_by(|a, b| norm2(a).cmp(&norm2(b))),
+        rows.iter().max_by(|a, b| norm2(a).cmp(&norm2(b))),
+    ) else {
+        return Outcome::failed(scalar, "the orbit's data have no rows");
+    };
+    let zero = BigRational::from_integer(0.into());
+    let three_quarters = BigRational::new(3.into(), 4.into());
+    let high = |r: &[BigRational; 3]| r[2].clone() * &r[2] >= three_quarters.clone() * norm2(r);
+    let north = near[2] >= zero && high(near);
+    let south = far[2] <= zero && high(far);
+    let eccentric = norm2(far) >= BigRational::from_integer(100.into()) * norm2(near);
+    let shown = |r: &[BigRational; 3]| {
+        let v: Vec<f64> = r.iter().map(Field::to_f64).collect();
+        let d = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+        (d * LU_KM, (v[2] / d).asin().to_degrees())
+    };
+    let ((rp, lat_p), (ra, lat_a)) = (shown(near), shown(far));
+    Outcome::new(
+        format!(
+            "perilune {} km from the Moon's centre at latitude {:+.1}°; apolune {} km at {:+.1}°; ratio {:.1}",
+            crate::report::number::sig(rp, 5),
+            lat_p,
+            crate::report::number::sig(ra, 5),
+            lat_a,
+            ra / rp
+        ),
+        scalar,
+        Verdict::holds(north && south && eccentric),
+        format!(
+            "the {} data rows of the orbit (data/nrho_l2_halo.csv, the catalogue orbit of footnote 7), positions relative to the \
+             Moon at (1 − μ, 0, 0) of the rotating frame, every double read exactly; LU = {LU_KM} km. Latitude about the frame's z \
+             axis (the normal of the Earth–Moon plane, about 6.7° from the lunar spin axis, which does not change the verdict). \
+             Criterion, declared: perilune latitude ≥ +60°, apolune latitude ≤ −60°, apolune/perilune ≥ 10, each decided exactly \
+             on the rows (north {north}, south {south}, ratio {eccentric}); the extremes are over the rows, as the data give the orbit",
+            orbit.states.len()
+        ),
+    )
+}

@@ -513,3 +513,118 @@ pub fn eq10c_second_equality() -> Outcome {
          1/(2n + 1) would be one too many (p₀ + ∫₀^ξ h is the curve): more than one lost symbol (policy clause 3)",
     )
 }
+
+/// Sec. 5B: "Given the four-dimensional nature of the preimage A(ξ), a preimage of order 7
+/// (4 · 7 = 28 > 27) accounts for sufficient degrees of freedom." A preimage of degree n has
+/// n + 1 quaternion coefficients, 4(n + 1) scalar unknowns — the count the paper itself uses
+/// for n = 8 ("9 parameter family" = 4 · 9 − 27). Counted on Algorithm 1's output: the
+/// preimage of a C⁴ interpolant (its degree and coefficients) and the free parameters that
+/// select it (θ₀, θ₄, θ₈, τ₁…τ₃, τ₅…τ₇), against the 27 conditions of footnote 3 and Sec. 5B
+/// (2 ends · 3 coordinates · 5 orders, less p₀).
+pub fn order7_unknowns() -> Outcome {
+    let mut rng = SplitMix64::new(0x5b07);
+    let data = into::<Ball>(&random_data(&mut rng), &BITS);
+    let free: FreeParameters<Ball> = FreeParameters::zero(4, &BITS);
+    let curve = match interpolate(&data, &free) {
+        Ok(c) => c,
+        Err(e) => return Outcome::failed("rational", format!("Algorithm 1: {e}")),
+    };
+    let (degree, coefficients) = (curve.preimage_degree(), curve.preimage.len());
+    let conditions = 2 * 3 * (data.order() + 1) - 3;
+    let parameters = 3 + free.tau_start.len() + free.tau_end.len();
+    let counts_hold = coefficients == degree + 1 && 4 * coefficients - conditions == parameters;
+    let (printed, counted) = (4 * 7, 4 * (7 + 1));
+    Outcome::new(
+        format!(
+            "Algorithm 1's preimage of degree {degree} has {coefficients} coefficients, {} unknowns, and {} − {conditions} = {parameters} \
+             free parameters: 4(n + 1) unknowns. A degree-7 preimage has {counted} unknowns, not {printed}",
+            4 * coefficients,
+            4 * coefficients
+        ),
+        "rational",
+        if counts_hold && printed != counted {
+            Verdict::Discrepancy
+        } else {
+            Verdict::Failed
+        },
+        "counts on Algorithm 1's output for C⁴ data (a random data set, φ* = 0): the number of preimage coefficients against its \
+         degree, and 4 × coefficients − 27 conditions against the number of free parameters Algorithm 1 takes; both give 4(n + 1) \
+         unknowns for a degree-n preimage. The sentence's arithmetic 4 · 7 = 28 is right on a wrong count, so it is not one lost \
+         symbol (clause 3); its conclusion (enough unknowns, 32 > 27) still holds",
+    )
+}
+
+/// Sec. 3: γ "is assumed to be of differentiability class C^m … where m ≥ 2". Algorithm 1
+/// interpolates position, velocity, acceleration, jerk and snap at both segment ends (Eq. 16):
+/// the number of derivatives its input carries (`HermiteData::order` of the data Table 1's
+/// conversion builds) is what the curve must have, as Sec. 2 says ("can be applied to any C⁴
+/// curve").
+pub fn smoothness_class() -> Outcome {
+    let mut rng = SplitMix64::new(0x0003);
+    let data = into::<Ball>(&random_data(&mut rng), &BITS);
+    let free: FreeParameters<Ball> = FreeParameters::zero(data.order(), &BITS);
+    let needed = data.order();
+    let runs = interpolate(&data, &free).is_ok();
+    // Algorithm 1 with one derivative fewer at each end, as a C³ curve could supply, is not the
+    // paper's method: its free-parameter vector and degree change.
+    Outcome::new(
+        format!(
+            "Algorithm 1 takes {needed} derivatives of γ at each segment end (v, a, j, s): γ must be C^{needed}; the stated m ≥ 2 \
+             admits C² curves, whose third and fourth derivatives Algorithm 1 cannot be given"
+        ),
+        "rational",
+        if runs && needed > 2 {
+            Verdict::Discrepancy
+        } else {
+            Verdict::Failed
+        },
+        "the order of the Hermite data Algorithm 1 interpolates (a random C⁴ data set, φ* = 0, the conversion runs), against \
+         the m ≥ 2 of Sec. 3 and P3. Sec. 2 states C⁴ and Eq. (16g, h) take s_b, s_e = γ⁗ at the ends; the tutorial's \
+         fourth-order spline (Sec. 6A) is C² (order 4) or C³ (degree 4), which meets Sec. 3 but not Algorithm 1. A deliberate \
+         wording repeated in P3, not one garbled symbol (clause 3)",
+    )
+}
+
+/// Sec. 6B, Eq. (24a): "ṗ = v[cos φ cos θ, sin φ, cos φ sin θ]" with "{v, θ, φ} … the velocity
+/// magnitude and gimbal angles": the bracket is a unit vector for every θ, φ, so |ṗ| = |v|.
+/// Exact, at angles whose sine and cosine are rational (c, s) = ((1 − u²)/(1 + u²), 2u/(1 + u²)),
+/// u over a grid of rationals (7 × 7 pairs): cos²φ cos²θ + sin²φ + cos²φ sin²θ = 1.
+pub fn unit_direction() -> Outcome {
+    let q = |n: i64, d: i64| BigRational::new(n.into(), d.into());
+    let one = q(1, 1);
+    let angle = |u: &BigRational| {
+        let u2 = u.clone() * u;
+        let den = one.clone() + &u2;
+        ((one.clone() - &u2) / &den, (u.clone() + u) / &den)
+    };
+    let us: Vec<BigRational> = [(-3, 1), (-1, 2), (-1, 7), (0, 1), (2, 9), (1, 1), (5, 2)]
+        .iter()
+        .map(|&(n, d)| q(n, d))
+        .collect();
+    let mut failures = Vec::new();
+    for a in &us {
+        for b in &us {
+            let ((ct, st), (cp, sp)) = (angle(a), angle(b));
+            let x = cp.clone() * &ct;
+            let z = cp.clone() * &st;
+            let norm2 = x.clone() * &x + &(sp.clone() * &sp) + &(z.clone() * &z);
+            if norm2 != one {
+                failures.push(format!("u_θ = {a}, u_φ = {b}: {norm2}"));
+            }
+        }
+    }
+    Outcome::new(
+        format!(
+            "|[cos φ cos θ, sin φ, cos φ sin θ]|² = 1 at {} of {} angle pairs: |ṗ| = |v|, the speed",
+            us.len() * us.len() - failures.len(),
+            us.len() * us.len()
+        ),
+        "rational",
+        Verdict::holds(failures.is_empty()),
+        format!(
+            "exact rationals, angles with rational sine and cosine from u ∈ {{−3, −1/2, −1/7, 0, 2/9, 1, 5/2}} for θ and for φ (all \
+             quadrants, not a special point: clause 2); the identity cos²φ(cos²θ + sin²θ) + sin²φ = 1 makes v the velocity \
+             magnitude, as the text names it. Failures: {failures:?}"
+        ),
+    )
+}

@@ -19,7 +19,7 @@ use crate::curve::enclosure::ErrorEnclosure;
 use crate::curve::CompiledCurve;
 use crate::curve::ExprCurve;
 use crate::scalar::ball::Ball;
-use crate::scalar::certify::{certify, format_float_digits, Certified};
+use crate::scalar::certify::{certify, Certified};
 use crate::scalar::parse::parse_rational;
 use crate::scalar::{BigRational, Field, Float};
 use rayon::prelude::*;
@@ -139,7 +139,7 @@ pub fn f64_column(levels: &[u32]) -> Vec<(usize, f64)> {
 }
 
 /// The printed decimal as an exact rational and its last-digit unit.
-fn printed_value(text: &str) -> Option<(BigRational, BigRational)> {
+pub(super) fn printed_value(text: &str) -> Option<(BigRational, BigRational)> {
     let value = parse_rational(text).ok()?;
     let (mantissa, exponent) = match text.split_once(['e', 'E']) {
         Some((m, e)) => (m, e.parse::<i64>().ok()?),
@@ -167,29 +167,37 @@ pub fn units_off(printed: &str, ours: &Float) -> Option<f64> {
     Some(((ours - value) / unit).to_f64_lossy())
 }
 
-/// The interval of values x/y allows when x and y are the printed decimals `x`, `y`, each
-/// standing for half a unit of its last digit either side.
-fn ratio_interval(x: &str, y: &str) -> Option<(f64, f64)> {
-    let ((xv, xu), (yv, yu)) = (printed_value(x)?, printed_value(y)?);
-    let half = BigRational::new(1.into(), 2.into());
-    let (x_lo, x_hi) = (xv.clone() - xu.clone() * &half, xv + xu * &half);
-    let (y_lo, y_hi) = (yv.clone() - yu.clone() * &half, yv + yu * &half);
-    Some(((x_lo / y_hi).to_f64_lossy(), (x_hi / y_lo).to_f64_lossy()))
-}
-
 /// The test curve's conversion into a number of segments in balls (φ* = 0, no roll
 /// correction: it turns each preimage by Q(α), which leaves p and so E unchanged), for the
-/// proven grid maxima.
+/// proven grid maxima; or one segment of it, converted alone (without the roll correction a
+/// segment depends only on the Hermite data at its two ends).
 pub struct BallConversion {
     curve: CompiledCurve<Ball>,
     pw: PiecewisePh<Ball>,
+    interval: (BigRational, BigRational),
 }
 
 impl BallConversion {
     /// The conversion into `segments` segments at [`BITS`] bits.
     pub fn new(segments: usize) -> Result<BallConversion, String> {
+        Self::on((rational(0), rational(1)), segments)
+    }
+
+    /// Segment `k` (0-based) of the conversion into `segments` segments, alone: the same
+    /// polynomial on [k/N, (k + 1)/N].
+    pub fn segment(segments: usize, k: usize) -> Result<BallConversion, String> {
+        let n = BigRational::from_integer(segments.into());
+        let start = BigRational::from_integer(k.into()) / &n;
+        let end = start.clone() + BigRational::from_integer(1.into()) / &n;
+        Self::on((start, end), 1)
+    }
+
+    fn on(interval: (BigRational, BigRational), segments: usize) -> Result<BallConversion, String> {
         let curve = curve().compile::<Ball>(&BITS);
-        let (a, b) = (Ball::zero_in(&BITS), Ball::one_in(&BITS));
+        let (a, b) = (
+            Ball::from_rational(&interval.0, &BITS),
+            Ball::from_rational(&interval.1, &BITS),
+        );
         let pw = convert(
             &curve,
             &a,
@@ -202,88 +210,53 @@ impl BallConversion {
         .map_err(|e| {
             format!("the test curve's conversion into {segments} segments in balls: {e}")
         })?;
-        Ok(BallConversion { curve, pw })
+        Ok(BallConversion {
+            curve,
+            pw,
+            interval,
+        })
     }
 
-    /// The proven maximum of ‖γ − p‖ over the grid `ts` (rationals in [0, 1]).
+    /// The proven maximum of ‖γ − p‖ over the grid `ts` (rationals in the interval).
     pub fn grid_maximum(&self, ts: &[BigRational]) -> Ball {
-        proven_grid_error(&self.curve, &self.pw, (&rational(0), &rational(1)), ts)
-    }
-}
-
-/// The proven maxima over the authors' grid, computed the first time a verdict needs one.
-pub struct ProvenGrids {
-    found: Vec<Option<Result<Ball, String>>>,
-}
-
-impl ProvenGrids {
-    fn new(rows: usize) -> ProvenGrids {
-        ProvenGrids {
-            found: vec![None; rows],
-        }
-    }
-    /// How far the authors' grid maximum of row `i` (true maximum enclosed by `e`) is from
-    /// the printed error `printed`, in units of its last digit, and whether the range is of
-    /// the whole grid's proven maximum (`true`) or of a bound that already decides that the
-    /// grid is not within one unit (`false`): the grid maximum lies between the largest
-    /// distance over the grid points of the segment where the true maximum lies (a lower
-    /// bound, from about 100 points) and the true maximum's upper bound, and when that range
-    /// is more than one unit from the print no grid point needs evaluating beyond them.
-    fn units(
-        &mut self,
-        i: usize,
-        e: &ErrorEnclosure,
-        printed: &str,
-    ) -> Result<((f64, f64), bool), String> {
-        let unparsed = || format!("Table 1's printed cell {printed} does not parse");
-        if self.found[i].is_none() {
-            let segments = TABLE1[i].0;
-            let conversion = BallConversion::new(segments)?;
-            let grid = paper_grid(segments);
-            let n = BigRational::from_integer(segments.into());
-            let seed: Vec<BigRational> = grid
-                .iter()
-                .filter(|t| (*t * &n).floor() == BigRational::from_integer(e.segment.into()))
-                .cloned()
-                .collect();
-            let lower = conversion.grid_maximum(&seed).lower();
-            let bound = units_range(printed, &lower, &e.upper).ok_or_else(unparsed)?;
-            if bound.0 > 1.0 || bound.1 < -1.0 {
-                return Ok((bound, false));
-            }
-            self.found[i] = Some(Ok(conversion.grid_maximum(&grid)));
-        }
-        let g = self.get(i)?;
-        Ok((
-            units_range(printed, &g.lower(), &g.upper()).ok_or_else(unparsed)?,
-            true,
-        ))
+        proven_grid_error(
+            &self.curve,
+            &self.pw,
+            (&self.interval.0, &self.interval.1),
+            ts,
+        )
     }
 
-    /// The proven maximum over the authors' grid of row `i` (Table 1 index).
-    fn get(&mut self, i: usize) -> Result<Ball, String> {
-        self.found[i]
-            .get_or_insert_with(|| {
-                let segments = TABLE1[i].0;
-                BallConversion::new(segments).map(|c| c.grid_maximum(&paper_grid(segments)))
-            })
-            .clone()
+    /// Proven Taylor models of this conversion's error ([`ErrorModels`]), pieces fine enough
+    /// for a search to relative width `target`.
+    pub fn models(&self, target: f64) -> crate::curve::enclosure::ErrorModels {
+        crate::curve::enclosure::ErrorModels::build(&self.curve, &self.pw, target, None)
+    }
+
+    /// The proven distances ‖γ − p‖ at the points `ts`, in order.
+    pub fn distances(&self, ts: &[BigRational]) -> Vec<Ball> {
+        crate::algo::ph::grid::proven_grid_distances(
+            &self.curve,
+            &self.pw,
+            (&self.interval.0, &self.interval.1),
+            ts,
+        )
     }
 }
 
 /// The printed cell against every point of [lo, hi]: the range of differences in units of its
 /// last printed digit (`None` if the cell does not parse).
-fn units_range(printed: &str, lo: &Float, hi: &Float) -> Option<(f64, f64)> {
+pub(super) fn units_range(printed: &str, lo: &Float, hi: &Float) -> Option<(f64, f64)> {
     Some((units_off(printed, lo)?, units_off(printed, hi)?))
 }
 
 /// The largest |units| over a range: the whole enclosure is within it of the print.
-fn farthest((lo, hi): (f64, f64)) -> f64 {
+pub(super) fn farthest((lo, hi): (f64, f64)) -> f64 {
     lo.abs().max(hi.abs())
 }
 
 /// A proven interval printed with 6 significant digits, outward.
-fn interval(lo: &Float, hi: &Float) -> String {
+pub(super) fn interval(lo: &Float, hi: &Float) -> String {
     format!(
         "[{}, {}]",
         crate::report::number::bound_text(lo, 6, Round::Down),
@@ -291,332 +264,12 @@ fn interval(lo: &Float, hi: &Float) -> String {
     )
 }
 
-/// Units ranges as text.
-fn units_text((lo, hi): (f64, f64)) -> String {
-    format!("{lo:+.2}…{hi:+.2} units")
-}
-
-/// What one row's verdict is decided on: its proven enclosure and its neighbour's, the
-/// printed cells, and the certified values shown beside them.
-pub struct RowInputs<'a> {
-    /// Table 1 index of the row.
-    pub index: usize,
-    pub row: &'a Row,
-    pub enclosure: &'a ErrorEnclosure,
-    pub previous_enclosure: Option<&'a ErrorEnclosure>,
-    /// The certified maximum over the authors' grid (shown, not decided on).
-    pub grid: &'a (Float, Float),
-}
-
-/// The proven ratio E_{n−1}/E_n from two enclosures: [lower_{n−1}/upper_n, upper_{n−1}/lower_n].
-fn ratio_enclosure(coarse: &ErrorEnclosure, fine: &ErrorEnclosure) -> (Float, Float) {
-    let bits = coarse.lower.prec().max(fine.lower.prec());
-    (
-        Float::with_val_round(bits, &coarse.lower / &fine.upper, Round::Down).0,
-        Float::with_val_round(bits, &coarse.upper / &fine.lower, Round::Up).0,
-    )
-}
-
-/// The verdict of one printed row and its evidence, every decision taken on proven
-/// enclosures: the true maximum's ([`super::proven`]), the ratio's from two of them, and
-/// where the true maximum does not explain a cell, the authors' grid maximum proven in balls
-/// (`grids`).
-///
-/// The error cell: every point of the true maximum's enclosure within half a unit of the last
-/// printed digit is `reproduced`, within one unit `reproduced-rounding`; otherwise `metric`
-/// when every point of the authors' grid maximum's enclosure ([`paper_grid`]) is within one
-/// unit; otherwise `typo` when the printed error contradicts its own ratio column (lies
-/// outside the interval that previous printed error ÷ printed ratio allows) while the whole
-/// enclosure lies inside it; otherwise `discrepancy`. The ratio cell must agree within one
-/// unit with the proven ratio or the proven grid ratio, or lie in the interval the printed
-/// errors' rounding allows; if not, the row is a `discrepancy` whatever its error cell. Also
-/// whether the ratio cell is consistent.
-pub fn row_outcome(inputs: &RowInputs, grids: &mut ProvenGrids) -> Result<(Outcome, bool), String> {
-    let i = inputs.index;
-    let (_, p_err, p_ratio) = TABLE1[i];
-    let previous_printed = (i > 0).then(|| TABLE1[i - 1].1);
-    let e = inputs.enclosure;
-    let unparsed = || format!("Table 1's printed cell {p_err} / {p_ratio} does not parse");
-    let true_units = units_range(p_err, &e.lower, &e.upper).ok_or_else(unparsed)?;
-    let implied_error = previous_printed.and_then(|prev| ratio_interval(prev, p_ratio));
-    let inside = |x: f64, (lo, hi): (f64, f64)| lo <= x && x <= hi;
-    let printed_err = printed_value(p_err).ok_or_else(unparsed)?.0.to_f64_lossy();
-    let enclosure_inside = |range: (f64, f64)| {
-        inside(e.lower.to_f64_round(Round::Down), range)
-            && inside(e.upper.to_f64_round(Round::Up), range)
-    };
-    let mut grid_units = None;
-    let error_verdict = if farthest(true_units) <= 1.0 {
-        Verdict::by_printed_units(farthest(true_units))
-    } else {
-        let (units, whole) = grids.units(i, e, p_err)?;
-        grid_units = Some((units, whole));
-        if whole && farthest(units) <= 1.0 {
-            Verdict::Metric
-        } else if implied_error.is_some_and(|r| !inside(printed_err, r) && enclosure_inside(r)) {
-            Verdict::Typo
-        } else {
-            Verdict::Discrepancy
-        }
-    };
-    // The ratio cell, tried against the proven ratio, the printed errors' interval, then the
-    // proven grid ratio (computed only if needed).
-    let ratio = inputs
-        .previous_enclosure
-        .map(|prev| ratio_enclosure(prev, e));
-    let ratio_units = match &ratio {
-        Some((lo, hi)) => Some(units_range(p_ratio, lo, hi).ok_or_else(unparsed)?),
-        None => None,
-    };
-    let printed_ratio = previous_printed.and_then(|prev| ratio_interval(prev, p_err));
-    let p_ratio_value = printed_value(p_ratio).map(|(v, _)| v.to_f64_lossy());
-    let mut grid_ratio_units = None;
-    let ratio_ok = ratio.is_none()
-        || ratio_units.is_some_and(|u| farthest(u) <= 1.0)
-        || matches!((p_ratio_value, printed_ratio), (Some(r), Some(iv)) if inside(r, iv))
-        || {
-            let g = grids.get(i - 1)?.clone() / &grids.get(i)?;
-            let units = units_range(p_ratio, &g.lower(), &g.upper()).ok_or_else(unparsed)?;
-            grid_ratio_units = Some(units);
-            farthest(units) <= 1.0
-        };
-    let verdict = if ratio_ok {
-        error_verdict
-    } else {
-        error_verdict.max(Verdict::Discrepancy)
-    };
-    let evidence = row_evidence(
-        inputs,
-        (true_units, grid_units),
-        implied_error,
-        error_verdict,
-        (ratio.as_ref(), ratio_units, grid_ratio_units),
-        printed_ratio,
-        ratio_ok,
-    );
-    let cert = inputs.row.error.certified();
-    let reproduced = match &inputs.row.ratio_certified() {
-        Some(r) => format!("error {}, ratio {}", cert.text, r.text),
-        None => format!("error {}", cert.text),
-    };
-    Ok((
-        Outcome::new(
-            reproduced,
-            format!("ball:{} (mpfr:{BITS}/{HI_BITS} shown)", super::proven::BITS),
-            verdict,
-            evidence,
-        ),
-        ratio_ok,
-    ))
-}
-
 /// A range of differences from a printed cell, in units of its last digit.
-type Units = (f64, f64);
-/// The grid's range and whether it is of the whole grid's maximum (`false`: a bound).
-type GridUnits = Option<(Units, bool)>;
-/// The proven ratio, its units and the proven grid ratio's units, where computed.
-type RatioEvidence<'a> = (Option<&'a (Float, Float)>, Option<Units>, Option<Units>);
+pub(super) type Units = (f64, f64);
 
-/// What the evidence says of the authors' grid: the range that decided the error cell
-/// (a bound, or the whole grid's proven maximum), or the certified value shown for comparison.
-fn grid_evidence(inputs: &RowInputs, grid_units: GridUnits) -> String {
-    match grid_units {
-        Some((units, false)) => format!(
-            " The true maximum does not give the cell; nor can the authors' measure (the maximum over {PAPER_GRID_PER_SEGMENT}·N \
-             points of linspace(1e-6, 1), phodcos.py): it lies between the largest distance over its points in segment {} (where the \
-             true maximum lies), evaluated in balls, and the true maximum's upper bound, {} of the print (certified value {}).",
-            inputs.enclosure.segment,
-            units_text(units),
-            format_float_digits(&inputs.grid.1, 6)
-        ),
-        Some((units, true)) => format!(
-            " The true maximum does not give the cell, so the authors' measure decides: the maximum over {PAPER_GRID_PER_SEGMENT}·N \
-             points of linspace(1e-6, 1) (phodcos.py, evaluate_parameterization, n_eval = 100 in examples/hermite_interpolation.py), \
-             each point located exactly and evaluated in balls: {} of the print (certified value {}).",
-            units_text(units),
-            format_float_digits(&inputs.grid.1, 6)
-        ),
-        None => format!(
-            " For comparison only, the maximum over the authors' grid of {PAPER_GRID_PER_SEGMENT}·N points of linspace(1e-6, 1), \
-             certified: {}.",
-            format_float_digits(&inputs.grid.1, 6)
-        ),
-    }
-}
-
-/// The evidence of one Table 1 row: every number its verdict rests on.
-fn row_evidence(
-    inputs: &RowInputs,
-    (true_units, grid_units): (Units, GridUnits),
-    implied_error: Option<(f64, f64)>,
-    error_verdict: Verdict,
-    (ratio, ratio_units, grid_ratio_units): RatioEvidence,
-    printed_ratio: Option<(f64, f64)>,
-    ratio_ok: bool,
-) -> String {
-    let (_, p_err, p_ratio) = TABLE1[inputs.index];
-    let (row, e) = (inputs.row, inputs.enclosure);
-    let cert = row.error.certified();
-    let mut evidence = format!(
-        "Decided on proven enclosures. True maximum over ξ of ‖γ − p‖: proven {} by branch and bound in balls \
-         (`phodcos.table1.proven`), {} of the printed {p_err}; the certified search ({DEFAULT_SAMPLES} sample intervals per segment, \
-         Newton-refined, {BITS} bits against {HI_BITS}: {} digits agree) gives {}, shown in the table.",
-        interval(&e.lower, &e.upper),
-        units_text(true_units),
-        cert.digits,
-        format_float_digits(&row.error.hi, 6),
-    );
-    evidence.push_str(&grid_evidence(inputs, grid_units));
-    if error_verdict == Verdict::Discrepancy {
-        let sampled_units =
-            units_off(p_err, &row.error.sampled).map_or("–".into(), |u| format!("{u:+.2}"));
-        evidence.push_str(&format!(
-            " For comparison only: our own search grid ({DEFAULT_SAMPLES} intervals per segment, aligned with the segments, fixed for \
-             locating maxima) has maximum {} ({sampled_units} units); the paper does not say which grid its Table 1 used, so \
-             this does not decide the verdict.",
-            format_float_digits(&row.error.sampled, 6)
-        ));
-    }
-    if let Some((lo, hi)) = implied_error {
-        let printed_err = printed_value(p_err).map(|(v, _)| v.to_f64_lossy());
-        let lies_in = printed_err.is_some_and(|v| lo <= v && v <= hi);
-        evidence.push_str(&format!(
-            " Previous printed error ÷ printed ratio allows E in [{lo:.5e}, {hi:.5e}]: the printed error {} it{}.",
-            if lies_in { "lies in" } else { "contradicts" },
-            if error_verdict == Verdict::Typo {
-                format!("; the whole enclosure lies in it, so the printed error is garbled and the reading used is the value its ratio column gives ({:.4e})", (lo + hi) / 2.0)
-            } else {
-                String::new()
-            }
-        ));
-    }
-    if let (Some((lo, hi)), Some(units)) = (ratio, ratio_units) {
-        evidence.push_str(&format!(
-            " Ratio: printed {p_ratio}; proven {} ({}; certified {}){}; the printed errors allow {}{}.",
-            interval(lo, hi),
-            units_text(units),
-            row.ratio.as_ref().map_or("–".into(), |(_, hi)| format_float_digits(hi, 6)),
-            grid_ratio_units.map_or(String::new(), |u| format!("; proven grid ratio {}", units_text(u))),
-            printed_ratio.map_or("–".into(), |(lo, hi)| format!("[{lo:.4}, {hi:.4}]")),
-            if ratio_ok { "" } else { " — the printed ratio agrees with none of them" }
-        ));
-    }
-    evidence
-}
-
-/// A row's outcome after the metric forensics (policy clause 6) for an error cell that is
-/// neither the true maximum nor the authors' grid maximum: `metric` when a member of the
-/// declared family reproduces the printed error (and the ratio cell is consistent), with
-/// the members, how many and the family's size in the evidence; and its finding.
-/// What the metric forensics found for one row: the members that reproduce its error, and
-/// for every examined row (Table 1 indices) its members, to count how many rows a member
-/// explains.
-struct Forensics<'a> {
-    /// The members whose maximum, screened in f64, rounds to the printed error.
-    members: &'a [String],
-    examined: &'a [usize],
-    all: &'a [Vec<String>],
-    /// The first member, in order of rows explained, confirmed in balls: its proven maximum.
-    confirmed: Option<Confirmed>,
-}
-
-/// A member of the metric family confirmed in balls: its name, proven maximum, and the range
-/// of that maximum's difference from the print in units of its last digit.
-type Confirmed = (String, Ball, (f64, f64));
-
-impl Forensics<'_> {
-    /// The member of this row that explains the most examined rows, with those rows'
-    /// segment counts.
-    fn best(&self) -> Option<(&str, Vec<usize>)> {
-        self.members
-            .iter()
-            .map(|m| {
-                let rows: Vec<usize> = self
-                    .examined
-                    .iter()
-                    .zip(self.all)
-                    .filter(|(_, ms)| ms.contains(m))
-                    .map(|(&i, _)| TABLE1[i].0)
-                    .collect();
-                (m.as_str(), rows)
-            })
-            .max_by_key(|(_, rows)| rows.len())
-    }
-}
-
-fn with_forensics(
-    outcome: Outcome,
-    printed: &(usize, &str, &str),
-    forensics: Option<Forensics>,
-    ratio_ok: bool,
-) -> Outcome {
-    let (_, p_err, p_ratio) = *printed;
-    let mut outcome = outcome;
-    if let Some(f) = forensics {
-        let size = 1 + 2 * FAMILY_SAMPLES.count();
-        let examined: Vec<usize> = f.examined.iter().map(|&i| TABLE1[i].0).collect();
-        outcome.evidence.push_str(&format!(
-            " Metric forensics, over a family of {size} grids declared before computing (the authors' linspace(1e-6, 1, \
-             100·N); k = 2…200 equally spaced samples per segment with the joints; numpy's linspace(0, 1, k·N)) and the rows \
-             neither the true maximum nor the authors' grid explain (N = {examined:?}): {}.",
-            match f.best() {
-                None => "no member reproduces this row's printed error".to_string(),
-                Some((member, rows)) => format!(
-                    "{} of {size} members reproduce it; the one explaining most rows is {member}, which explains N = {rows:?} \
-                     ({} of {}). With so many members a single match is weak evidence: the chance that some coarse grid \
-                     rounds to a 4-digit value is not small",
-                    f.members.len(),
-                    rows.len(),
-                    examined.len()
-                ),
-            }
-        ));
-        if let Some((member, max, units)) = f.confirmed {
-            outcome.evidence.push_str(&format!(
-                " Confirmed in balls: the maximum over {member}, each point located exactly and evaluated in ball arithmetic, \
-                 is {} ({} of the print), within half a unit at every point of the enclosure.",
-                interval(&max.lower(), &max.upper()),
-                units_text(units)
-            ));
-            if ratio_ok {
-                // A member reproduces the error cell, proven (a ratio cell that agrees with
-                // nothing keeps the discrepancy).
-                outcome.verdict = Verdict::Metric;
-            }
-        } else if !f.members.is_empty() && ratio_ok {
-            outcome.evidence.push_str(
-                " No member the f64 screen names is confirmed in balls within half a unit, so none decides the verdict.",
-            );
-        }
-    }
-    let reproduced = outcome.reproduced.clone();
-    let paper = match p_ratio {
-        "-" => format!("error {p_err}"),
-        r => format!("error {p_err}, ratio {r}"),
-    };
-    match outcome.verdict {
-        Verdict::Reproduced => outcome,
-        Verdict::Metric => outcome.finding(
-            (&paper, &reproduced, "the printed error is a maximum over a grid of the declared family, not the true maximum"),
-            crate::ledger::Severity::Minor,
-            "the order of Theorem 1 rests on the finer rows, which agree",
-        ),
-        Verdict::ReproducedRounding => outcome.finding(
-            (&paper, &reproduced, "the last printed digit differs by one unit"),
-            crate::ledger::Severity::Minor,
-            "a rounding of the last digit",
-        ),
-        Verdict::Typo => outcome.finding(
-            (&paper, &reproduced, "the printed error contradicts its own ratio column, which gives our value"),
-            crate::ledger::Severity::Minor,
-            "a garbled exponent; the ratio column and the order are right",
-        ),
-        _ => outcome.finding(
-            (&paper, &reproduced, "neither the true maximum, the authors' grid, nor any grid of the declared family gives the printed cells"),
-            crate::ledger::Severity::Minor,
-            "coarse rows, before the asymptotic range; Theorem 1's order rests on the finer rows, which agree",
-        ),
-    }
+/// Units ranges as text.
+pub(super) fn units_text((lo, hi): (f64, f64)) -> String {
+    format!("{lo:+.2}…{hi:+.2} units")
 }
 
 /// Theorem 1, O(h⁶): the observed order log₂(E_{n−1}/E_n) of the last rows, as proven
@@ -877,139 +530,6 @@ pub fn f64_floor(
     )
 }
 
-/// Samples per segment of the equally spaced grids of the metric family (policy clause 6).
-pub const FAMILY_SAMPLES: std::ops::RangeInclusive<usize> = 2..=200;
-
-/// The family of alternative metrics for a sampled maximum, declared before computing
-/// (policy clause 6): the maximum of ‖γ − p‖ over
-/// - the authors' grid, linspace(1e-6, 1, 100·N) ([`paper_grid`]);
-/// - every grid of k equally spaced samples per segment with the joints included,
-///   linspace(0, 1, k·N + 1), k in [`FAMILY_SAMPLES`] (our own search grid is k = 16);
-/// - every grid numpy's linspace(0, 1, k·N) gives, k in [`FAMILY_SAMPLES`], the common tool.
-///
-/// The members as (name, points on [0, 1]).
-pub fn metric_family(segments: usize) -> Vec<(String, Vec<f64>)> {
-    let linspace = |a: f64, b: f64, m: usize| -> Vec<f64> {
-        (0..m)
-            .map(|j| a + (b - a) * j as f64 / (m - 1) as f64)
-            .collect()
-    };
-    let mut family = vec![(
-        "the authors' linspace(1e-6, 1, 100·N)".to_string(),
-        linspace(1e-6, 1.0, PAPER_GRID_PER_SEGMENT * segments),
-    )];
-    for k in FAMILY_SAMPLES {
-        family.push((
-            format!("{k} samples per segment, linspace(0, 1, {k}·N + 1)"),
-            linspace(0.0, 1.0, k * segments + 1),
-        ));
-    }
-    for k in FAMILY_SAMPLES {
-        family.push((
-            format!("numpy linspace(0, 1, {k}·N)"),
-            linspace(0.0, 1.0, k * segments),
-        ));
-    }
-    family
-}
-
-/// The members of [`metric_family`] whose maximum, on the f64 conversion of `segments`
-/// segments, rounds to the printed error `printed` (within half a unit of its last digit), and
-/// the family's size. f64 suffices: the errors of these rows are above 1e-7 and f64 carries
-/// their digits to 1e-9 relative; the report certifies nothing by it, it only names members.
-pub fn members_explaining(segments: usize, printed: &str) -> (Vec<String>, usize) {
-    let Some((value, unit)) = printed_value(printed) else {
-        return (Vec::new(), 0);
-    };
-    let c = curve().compile::<f64>(&());
-    let free = FreeParameters::zero(4, &());
-    let Ok(pw) = convert(&c, &0.0, &1.0, segments, 4, &free, false) else {
-        return (Vec::new(), 0);
-    };
-    let family = metric_family(segments);
-    let size = family.len();
-    let half = unit.to_f64_lossy() / 2.0;
-    let target = value.to_f64_lossy();
-    let explaining = family
-        .into_par_iter()
-        .filter(|(_, ts)| {
-            let e = crate::algo::ph::piecewise::grid_error(&c, &pw, ts);
-            (e - target).abs() <= half
-        })
-        .map(|(name, _)| name)
-        .collect();
-    (explaining, size)
-}
-
-/// Row `i`'s outcome from its proven enclosure and its predecessor's (an error when either
-/// is missing: the row cannot be decided).
-fn proven_row_outcome(
-    i: usize,
-    row: &Row,
-    proven: &[super::proven::ProvenRow],
-    grid: &(Float, Float),
-    grids: &mut ProvenGrids,
-) -> Result<(Outcome, bool), String> {
-    let missing = |k: usize| {
-        format!(
-            "no proven enclosure of the error with {} segments (the conversion in balls failed)",
-            TABLE1[k].0
-        )
-    };
-    let enclosure = proven[i].enclosure.as_ref().ok_or_else(|| missing(i))?;
-    let previous_enclosure = match i {
-        0 => None,
-        _ => Some(
-            proven[i - 1]
-                .enclosure
-                .as_ref()
-                .ok_or_else(|| missing(i - 1))?,
-        ),
-    };
-    let inputs = RowInputs {
-        index: i,
-        row,
-        enclosure,
-        previous_enclosure,
-        grid,
-    };
-    row_outcome(&inputs, grids)
-}
-
-/// `members` ordered by how many examined rows (`all`) each explains, most first.
-fn by_rows_explained(members: &[String], all: &[Vec<String>]) -> Vec<String> {
-    let mut ordered = members.to_vec();
-    ordered.sort_by_key(|m| std::cmp::Reverse(all.iter().filter(|ms| ms.contains(m)).count()));
-    ordered
-}
-
-/// The first of `members` (names from [`metric_family`]) whose maximum over its grid, proven in
-/// balls (each f64 grid point taken exactly), lies within half a unit of the printed error
-/// `printed` at every point of its enclosure; `None` if no member is confirmed.
-fn confirm_member(
-    segments: usize,
-    printed: &str,
-    members: &[String],
-) -> Result<Option<Confirmed>, String> {
-    let conversion = BallConversion::new(segments)?;
-    let family = metric_family(segments);
-    for name in members {
-        let Some((_, ts)) = family.iter().find(|(n, _)| n == name) else {
-            continue;
-        };
-        let exact: Option<Vec<BigRational>> =
-            ts.iter().map(|&t| BigRational::from_float(t)).collect();
-        let exact = exact.ok_or_else(|| format!("a point of {name} is not finite"))?;
-        let max = conversion.grid_maximum(&exact);
-        let units = units_range(printed, &max.lower(), &max.upper())
-            .ok_or_else(|| format!("Table 1's printed cell {printed} does not parse"))?;
-        if farthest(units) <= 0.5 {
-            return Ok(Some((name.clone(), max, units)));
-        }
-    }
-    Ok(None)
-}
-
 /// Table 1 and Theorem 1, computed: what the report's tables and figure show.
 pub struct Section {
     /// The certified C⁴ rows at every level (φ* = 0).
@@ -1022,6 +542,8 @@ pub struct Section {
     pub paper_grid: Vec<(Float, Float)>,
     /// The verdict of each printed row.
     pub verdicts: Vec<Verdict>,
+    /// The metric family's best member on the coarse rows (`None` if the forensics failed).
+    pub best_member: Option<super::forensics::BestMember>,
     /// Theorem 1 for φ ≠ 0.
     pub other: OtherOrders,
     /// Proven enclosures of every row's error.
@@ -1063,7 +585,7 @@ pub fn section(ledger: &mut Ledger) -> Section {
     let rows = rows_from(&levels, errors);
     let baseline = rows_of(&levels, 2);
     let f64_column = f64_column(&levels);
-    let verdicts = record_rows(ledger, &rows, &proven, &paper_grid);
+    let (verdicts, best_member) = record_rows(ledger, &rows, &proven);
     ledger.record(
         "phodcos.table1.proven",
         super::proven::outcome(&rows, &proven),
@@ -1089,63 +611,28 @@ pub fn section(ledger: &mut Ledger) -> Section {
         f64_column,
         paper_grid,
         verdicts,
+        best_member,
         other,
         proven,
     }
 }
 
-/// Every printed row's outcome, decided on the proven enclosures and then the metric
-/// forensics, recorded in `ledger`; returns the verdicts.
+/// Every printed row's outcome, decided by [`super::forensics::judge`], recorded in `ledger`;
+/// returns the verdicts.
 fn record_rows(
     ledger: &mut Ledger,
     rows: &[Row],
     proven: &[super::proven::ProvenRow],
-    paper_grid: &[(Float, Float)],
-) -> Vec<Verdict> {
-    let failed = |e: String| Outcome::failed(format!("ball:{}", super::proven::BITS), e);
-    let mut grids = ProvenGrids::new(rows.len());
-    let outcomes: Vec<(Outcome, bool)> = rows
-        .iter()
-        .enumerate()
-        .map(|(i, row)| {
-            proven_row_outcome(i, row, proven, &paper_grid[i], &mut grids)
-                .unwrap_or_else(|e| (failed(e), false))
-        })
-        .collect();
-    // Metric forensics over every row whose error cell nothing above explains.
-    let examined: Vec<usize> = (0..rows.len())
-        .filter(|&i| outcomes[i].0.verdict == Verdict::Discrepancy)
-        .collect();
-    let explaining: Vec<Vec<String>> = examined
-        .iter()
-        .map(|&i| members_explaining(TABLE1[i].0, TABLE1[i].1).0)
-        .collect();
+) -> (Vec<Verdict>, Option<super::forensics::BestMember>) {
+    let enclosures: Vec<Option<&ErrorEnclosure>> =
+        proven.iter().map(|p| p.enclosure.as_ref()).collect();
+    let (outcomes, best) = super::forensics::judge(rows, &enclosures);
     let mut verdicts = Vec::new();
-    for (i, (row, (outcome, ratio_ok))) in rows.iter().zip(outcomes).enumerate() {
-        let position = examined.iter().position(|&r| r == i);
-        let confirmed = match position {
-            Some(k) if ratio_ok => {
-                let ordered = by_rows_explained(&explaining[k], &explaining);
-                confirm_member(TABLE1[i].0, TABLE1[i].1, &ordered)
-            }
-            _ => Ok(None),
-        };
-        let outcome = match confirmed {
-            Ok(confirmed) => {
-                let forensics = position.map(|k| Forensics {
-                    members: &explaining[k],
-                    examined: &examined,
-                    all: &explaining,
-                    confirmed,
-                });
-                with_forensics(outcome, &TABLE1[i], forensics, ratio_ok)
-            }
-            Err(e) => failed(e),
-        };
+    for (row, outcome) in rows.iter().zip(outcomes) {
         verdicts.push(outcome.verdict);
         ledger.record(&format!("phodcos.table1.n{}", row.segments), outcome);
     }
-    verdicts
+    (verdicts, best)
 }
 
 /// The rows of the C^m interpolant with zero free parameters.
