@@ -39,6 +39,8 @@ pub const SPECS: &[ClaimSpec] = &[
     ClaimSpec { id: "bspline.sec3.eq7", location: "Sec. 3, Eq. 7", statement: "the third derivative is 2a, −6a, 6a, −2a on the four unit intervals", published: Some("2a, -6a, 6a, -2a") },
     ClaimSpec { id: "bspline.problem3.missing_constraint", location: "Sec. 4, Problem 3", statement: "Problem 3 (min ‖u‖∞ with zero state at t = 0 and t = 4) is the problem the bang-bang law solves and the B-spline does not", published: None },
     ClaimSpec { id: "bspline.sec41.integral_forms", location: "Sec. 4.1, the four constraint displays", statement: "ẍ(4) = ∫u, ẋ(4) = ∫(4−t)u, x(4) = ½∫(4−t)²u, x(2) = ½∫(2−t)₊²u, and ⟨(2−t)₊², u⟩ = 2ξ", published: Some("the four integral forms") },
+    ClaimSpec { id: "bspline.sec41.dual_variable_space", location: "Sec. 4.1, after the dual problem", statement: "if a* ∈ L₁[0, 4] solves the dual problem then the optimal u* has to satisfy ⟨Ya*, u*⟩ = ‖Ya*‖_(L₁)‖u*‖_(L∞)", published: None },
+    ClaimSpec { id: "bspline.sec5.not_optimal_any", location: "Sec. 5, first sentence", statement: "the basis elements for uniform B-splines are not optimal in any usual sense", published: None },
     ClaimSpec { id: "bspline.sec41.dual_space", location: "Sec. 4.1, after the constraints", statement: "the inner product pairs L∞[0,4] with L1[0,4], which is the dual space of L∞[0,4]", published: None },
     ClaimSpec { id: "bspline.sec41.switching_times", location: "Sec. 4.1, Eq. 9", statement: "the system for r has the unique solution r = (2+√2, 2, 2−√2), so t = (2−√2, 2, 2+√2)", published: Some("t1 = 2 - sqrt(2), t2 = 2, t3 = 2 + sqrt(2)") },
     ClaimSpec { id: "bspline.sec41.uniqueness", location: "Sec. 4.1", statement: "the solution with 4 > r1 > r2 > r3 > 0 is unique", published: None },
@@ -184,7 +186,16 @@ fn optimal_checks(ledger: &mut Ledger) -> ([QSqrt2; 3], QSqrt2, Option<optimal::
         statements::dual_space(certified),
     );
     ledger.record("bspline.sec42.solution", optimal::section42());
+    let bang_bang_better = better.verdict == super::Verdict::Reproduced;
     ledger.record("bspline.sec4.does_better", better);
+    ledger.record(
+        "bspline.sec41.dual_variable_space",
+        statements::dual_variable_space(),
+    );
+    ledger.record(
+        "bspline.sec5.not_optimal_any",
+        statements::not_optimal_any(bang_bang_better),
+    );
     (printed, exact_u, numeric, finding)
 }
 
@@ -235,6 +246,16 @@ fn policy(ledger: &mut Ledger) {
         ("Problem 3: min ‖u‖∞ with zero state at t = 0 and t = 4", "as printed u ≡ 0 solves it; the constraint x(2) = ξ appears only in Sec. 4.1"),
         Minor,
         "Sec. 4.1 adds the constraint before solving, and every number of Sec. 4 is computed with it",
+    );
+    ledger.amend(
+        "bspline.sec41.dual_variable_space",
+        None,
+        (
+            "a* ∈ L₁[0, 4]",
+            "a* ∈ R⁴ and Ya* ∈ L₁[0, 4]: the Y is lost (Y is injective, so the reading is unique)",
+        ),
+        Minor,
+        "the next display uses Ya* and ‖Ya*‖_(L₁); no number depends on it",
     );
     ledger.amend(
         "bspline.sec41.dual_space",

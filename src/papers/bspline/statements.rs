@@ -516,3 +516,89 @@ pub fn vector_separates() -> Outcome {
          alternative the paper mentions (\"a more complicated set of dynamics\") gives no dynamics to check",
     )
 }
+
+/// ∫_a^b p(t)q(t) dt for polynomials given by coefficients in t, exactly.
+fn inner(p: &[Q], r: &[Q], (a, b): (i64, i64)) -> Q {
+    let mut product = vec![q(0, 1); p.len() + r.len() - 1];
+    for (i, x) in p.iter().enumerate() {
+        for (j, y) in r.iter().enumerate() {
+            product[i + j] += x.clone() * y;
+        }
+    }
+    product.iter().enumerate().fold(q(0, 1), |acc, (k, c)| {
+        let e = k as u32 + 1;
+        let (pa, pb) = (q(a, 1).pow(e as i32), q(b, 1).pow(e as i32));
+        acc + c.clone() * (pb - pa) / q(i64::from(e), 1)
+    })
+}
+
+/// The functions of §4.1's constraints on [0, 4] (x‴ = u from rest to rest, x(2) = ξ):
+/// ⟨1, u⟩, ⟨4 − t, u⟩, ⟨(4 − t)², u⟩ on [0, 4] and ⟨(2 − t)₊², u⟩, which lives on [0, 2]; their
+/// Gram matrix, exactly.
+fn constraint_gram() -> Matrix<Q> {
+    let f: [Vec<Q>; 4] = [
+        vec![q(1, 1)],
+        vec![q(4, 1), q(-1, 1)],
+        vec![q(16, 1), q(-8, 1), q(1, 1)],
+        vec![q(4, 1), q(-4, 1), q(1, 1)],
+    ];
+    Matrix::from_fn(4, 4, |i, j| {
+        let range = if i == 3 || j == 3 { (0, 2) } else { (0, 4) };
+        inner(&f[i], &f[j], range)
+    })
+}
+
+/// §4.1, after the dual problem: "If a* ∈ L₁[0, 4] solves the dual problem then the optimal u*
+/// has to satisfy ⟨Ya*, u*⟩ = ‖Ya*‖_{L₁}‖u*‖_{L∞}". The dual variable is a = (a₁, …, a₄)ᵀ ∈ R⁴
+/// (as the paper defines it), and Ya = a₁ + a₂(4 − t) + a₃(4 − t)² + a₄(2 − t)₊² is the element
+/// of L₁. Exact: Y is injective (the four functions' Gram matrix is nonsingular), so "Ya* ∈ L₁"
+/// is the one consistent reading of the lost Y.
+pub fn dual_variable_space() -> Outcome {
+    let gram = constraint_gram();
+    let det = crate::numeric::linalg::determinant(&gram);
+    let injective = det.as_ref().is_ok_and(|d| *d != q(0, 1));
+    Outcome::new(
+        format!(
+            "det of the Gram matrix of 1, 4 − t, (4 − t)², (2 − t)₊² on [0, 4]: {}; Y: R⁴ → L₁ is injective, so a* ∈ R⁴ and Ya* ∈ L₁",
+            det.map_or("—".into(), |d| d.to_string())
+        ),
+        "rational",
+        if injective { Verdict::Typo } else { Verdict::Failed },
+        "exact integrals of the polynomial products ((2 − t)₊² on [0, 2]); a nonsingular Gram matrix means the four functions are \
+         linearly independent, so Ya determines a. The printed a* ∈ L₁[0, 4] loses the Y of the next display (⟨Ya*, u*⟩ = \
+         ‖Ya*‖_(L₁)‖u*‖_(L∞)): one lost symbol with the one reading that display fixes, on which no number depends: clause 3",
+    )
+}
+
+/// Sec. 5, first sentence: "the basis elements for uniform B-splines are not optimal in any
+/// usual sense". Over the costs the paper itself poses, under §4.1's constraints (rest to rest
+/// on [0, 4], x(2) = ξ = 2/3 = B₃(2)): ‖u‖_∞ (Problem 3: the B-spline's 3 against the optimal
+/// (2 + √2)/2, bspline.sec4.does_better) and ∫u² (Problems 1, 2, 4, 5): the B-spline's control
+/// 1, −3, 3, −1 on the unit intervals costs 20, the minimum of ∫u² under the four constraints
+/// is 4ξ²(G⁻¹)₄₄ with G the constraints' Gram matrix, exactly.
+pub fn not_optimal_any(bang_bang_better: bool) -> Outcome {
+    let gram = constraint_gram();
+    let Ok(inverse) = crate::numeric::linalg::inverse(&gram) else {
+        return Outcome::failed("rational", "the constraints' Gram matrix is singular");
+    };
+    let xi = q(2, 3);
+    // Constraint values: x(4) = x′(4) = x″(4) = 0 and x(2) = ξ, i.e. ⟨(2 − t)₊², u⟩ = 2ξ.
+    let c4 = q(2, 1) * &xi;
+    let minimum = c4.clone() * &c4 * &inverse[(3, 3)];
+    let bspline: Q = [1, -3, 3, -1]
+        .iter()
+        .map(|&u| q(u * u, 1))
+        .fold(q(0, 1), |a, b| a + b);
+    Outcome::new(
+        format!(
+            "∫u²: the B-spline's control costs {bspline}, the minimum under the same constraints is {minimum}; ‖u‖_∞: {} \
+             (bspline.sec4.does_better)",
+            if bang_bang_better { "a bang-bang law does better" } else { "not shown better" }
+        ),
+        "rational",
+        Verdict::holds(minimum < bspline && bang_bang_better),
+        "the minimum of ∫₀⁴u² subject to ⟨f_k, u⟩ = c_k is cᵀG⁻¹c (u* = Σ λ_k f_k), with f = 1, 4 − t, (4 − t)², (2 − t)₊² and \
+         c = (0, 0, 0, 2ξ), exact; \"any usual sense\" is checked over the two costs the paper poses (the classical sense in which \
+         a cubic spline is optimal, min ∫(x″)² given its values at the knots, imposes the nodes, which §4 asks about instead)",
+    )
+}

@@ -57,6 +57,8 @@ pub const SPECS: &[ClaimSpec] = &[
     ClaimSpec { id: "hermite.sec23.order_count", location: "Sec. 2.3", statement: "each derivative constraint raises the order by two: constraints up to the tenth derivative give order twenty-one", published: Some("twenty-one") },
     ClaimSpec { id: "hermite.sec3.n_is_count", location: "Sec. 3, after Eq. 11", statement: "f : H ∈ R^n → P ∈ R^n with n = 2(m + 1), the n of Eqs. 12–18", published: Some("n = 2(m + 1)") },
     ClaimSpec { id: "hermite.sec31.first_derivative", location: "Sec. 3.1, after Eq. 15", statement: "x_0^(1) = nΔ¹(p_0) = n(p_1 − p_0)", published: Some("x_0^(1) = n(p_1 − p_0)") },
+    ClaimSpec { id: "hermite.sec31.triangular", location: "Sec. 3.1", statement: "note the triangular structure of the problem; these equations can be recursively solved", published: None },
+    ClaimSpec { id: "hermite.fig2.duration_coupling", location: "Sec. 4, Fig. 2", statement: "both curves meet their associated constraints but only when connected to the duration of the underlying parameter", published: None },
     ClaimSpec { id: "hermite.fig2.shorter_accelerates_more", location: "Sec. 4, Fig. 2", statement: "the lower duration curve must have larger acceleration (and deceleration)", published: None },
     ClaimSpec { id: "hermite.sec4.degree_elevation", location: "Sec. 4, end", statement: "a Bernstein polynomial can be degree elevated: the curve is exactly represented with more control points", published: None },
     ClaimSpec { id: "hermite.fig4.caption_vs_text", location: "Sec. 4, Fig. 4 caption and text", statement: "the landing trajectory connects the vehicle's initial position, velocity and acceleration (caption) — the initial condition is the current position and velocity (text)", published: Some("position, velocity, and acceleration | position and velocity") },
@@ -139,6 +141,11 @@ pub fn verify() -> PaperOutput {
         "hermite.fig2.shorter_accelerates_more",
         statements::shorter_accelerates_more(&fast_curve, &slow_curve),
     );
+    ledger.record(
+        "hermite.fig2.duration_coupling",
+        statements::duration_coupling(&fast_curve, &slow_curve),
+    );
+    ledger.record("hermite.sec31.triangular", statements::triangular());
     ledger.record("hermite.sec4.degree_elevation", exact::degree_elevation());
     let results = Results {
         fig2: [fast, slow],

@@ -278,3 +278,103 @@ pub fn sec22_indexing() -> Outcome {
         "the equations and (A1) use n + 1 entries consistently; only the prose is off by one",
     )
 }
+
+/// Sec. 4 on Fig. 2: "Both curves meet their associated constraints but only when connected to
+/// the duration of the underlying parameter". Exact: each curve on its own duration, and its
+/// control points used on the other curve's duration, against H = [0 0 0 | 1 1 0] (x, x′, x″
+/// at both ends). Criterion, declared: each curve meets every condition on its own duration and
+/// violates at least one on the other's.
+pub fn duration_coupling(fast: &Bernstein<Q>, slow: &Bernstein<Q>) -> Outcome {
+    let required = [[q(0), q(0), q(0)], [q(1), q(1), q(0)]];
+    let violations = |curve: &Bernstein<Q>| -> usize {
+        (0..3)
+            .map(|j| {
+                usize::from(curve.derivative_at_start(j) != required[0][j])
+                    + usize::from(curve.derivative_at_end(j) != required[1][j])
+            })
+            .sum()
+    };
+    let moved = |curve: &Bernstein<Q>, t1: i64| {
+        Bernstein::new(curve.control_points().to_vec(), q(0), q(t1)).ok()
+    };
+    let (Some(fast_on_two), Some(slow_on_one)) = (moved(fast, 2), moved(slow, 1)) else {
+        return Outcome::new(
+            "",
+            "rational",
+            Verdict::Failed,
+            "a curve could not be moved to the other duration",
+        );
+    };
+    let own = (violations(fast), violations(slow));
+    let swapped = (violations(&fast_on_two), violations(&slow_on_one));
+    let end = |c: &Bernstein<Q>| {
+        (0..3)
+            .map(|j| c.derivative_at_end(j).to_string())
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    Outcome::new(
+        format!(
+            "on its own duration each curve meets all 6 conditions ({} and {} violated); the duration-1 points on [0, 2] end with \
+             (x, x′, x″) = ({}), the duration-2 points on [0, 1] with ({}): {} and {} conditions violated",
+            own.0,
+            own.1,
+            end(&fast_on_two),
+            end(&slow_on_one),
+            swapped.0,
+            swapped.1
+        ),
+        "rational",
+        Verdict::holds(own == (0, 0) && swapped.0 > 0 && swapped.1 > 0),
+        "the exact Fig. 2 curves (hermite.fig2.control_points.*), their end derivatives by Eqs. 14–15 (Bernstein::derivative_at_start/end) \
+         on their own interval and with the control points kept and the interval exchanged",
+    )
+}
+
+/// Sec. 3.1: "First, note the triangular structure of the problem … These equations can be
+/// recursively solved". Exact, for m = 0…12 and T ∈ {1, 3/7, 5}: in the matrix of Eqs. 14–15
+/// the start row j involves only p₀…p_j, with a non-zero coefficient on p_j, and the end row j
+/// only p_{n−j}…p_n, non-zero on p_{n−j}; and the recursive solution (`HermiteData::solve`,
+/// Eqs. 16–17) equals Gaussian elimination on the whole matrix, for random rational data.
+pub fn triangular() -> Outcome {
+    use crate::algo::hermite::{transform_matrix, TransformKind};
+    let mut rng = super::super::sample::SplitMix64::new(31);
+    let (mut cases, mut failures) = (0usize, Vec::new());
+    for m in 0..=12usize {
+        let n = 2 * m + 1;
+        for t1 in [q(1), Q::new(3.into(), 7.into()), q(5)] {
+            cases += 1;
+            let a = transform_matrix(m, &q(0), &t1, TransformKind::Transform);
+            let zero = q(0);
+            let shaped = (0..=m).all(|j| {
+                (0..=n).all(|k| {
+                    (k <= j || a[(j, k)] == zero) && (k >= n - j || a[(m + 1 + j, k)] == zero)
+                }) && a[(j, j)] != zero
+                    && a[(m + 1 + j, n - j)] != zero
+            });
+            let (start, end) = (rng.rationals(m + 1), rng.rationals(m + 1));
+            let recursive = HermiteData::new(start.clone(), end.clone(), q(0), t1.clone())
+                .and_then(|d| d.solve())
+                .map(|c| c.control_points().to_vec())
+                .ok();
+            let rhs: Vec<Q> = start.into_iter().chain(end).collect();
+            let eliminated = crate::numeric::linalg::solve(&a, &rhs).ok();
+            if !shaped || recursive.is_none() || recursive != eliminated {
+                failures.push(format!("m = {m}, T = {t1}"));
+            }
+        }
+    }
+    Outcome::new(
+        format!(
+            "{} of {cases} cases triangular with non-zero diagonal, and solved recursively (Eqs. 16–17) to the same control points as by elimination",
+            cases - failures.len()
+        ),
+        "rational",
+        Verdict::holds(failures.is_empty()),
+        format!(
+            "exact rationals; the matrix of Eqs. 14–15 for m = 0…12 on [0, T], T ∈ {{1, 3/7, 5}}: zero pattern and diagonal of both \
+             blocks; random rational data solved by the recursion and by Gaussian elimination on the full matrix, compared exactly. \
+             Failures: {failures:?}"
+        ),
+    )
+}
