@@ -542,3 +542,48 @@ fn centre_evidence() -> Result<(Outcome, Vec<Vec<String>>), String> {
 fn rational_text(q: &BigRational) -> String {
     q.to_string()
 }
+
+/// Sec. IV on Fig. 1: "the local support for B_k is zero when t = t_k which means that the BFBS
+/// will interpolate the local curve when t = t_k". Exact on Fig. 1's knots (BFBS, i = 2), from
+/// both sides of every interior knot: B_k(t_k) = 1 and every other B_j(t_k) = 0. What vanishes
+/// at t_k is B_{k±1}, not B_k; the sentence's conclusion (interpolation) is what B_k(t_k) = 1
+/// gives.
+pub fn support_at_knot() -> Outcome {
+    let knots = fig1_knots::<BigRational>(&());
+    let Ok(bfbs) = Bfbs::uniform(2, 5) else {
+        return Outcome::failed(
+            "rational",
+            "the BFBS of order 2 on five knots could not be built",
+        );
+    };
+    let (mut own_one, mut others_zero, mut cases) = (true, true, 0usize);
+    for k in 3..=5 {
+        let t = knots.at(k).clone();
+        for side in [Side::Left, Side::Right] {
+            let Some(d) = basis_derivatives(&knots, &bfbs, &t, 0, side) else {
+                return Outcome::failed("rational", format!("t_{k} lies outside the knots"));
+            };
+            cases += 1;
+            for (j, b) in d.iter().enumerate() {
+                if j + 2 == k {
+                    own_one &= b[0] == r(1, 1);
+                } else {
+                    others_zero &= b[0] == r(0, 1);
+                }
+            }
+        }
+    }
+    Outcome::new(
+        format!(
+            "at the interior knots t_3…t_5, from both sides ({cases} cases): B_k(t_k) = 1 {}, every other B_j(t_k) = 0 {}: B_k is the one basis function that does not vanish at t_k",
+            if own_one { "in every case" } else { "fails" },
+            if others_zero { "in every case" } else { "fails" }
+        ),
+        "rational",
+        if own_one && others_zero { Verdict::Typo } else { Verdict::Failed },
+        "the BFBS of Eq. (10) with i = 2 on Fig. 1's knots, every basis function evaluated exactly at the knot from the left and \
+         from the right. The printed \"B_k is zero when t = t_k\" holds for B_(k±1); with that index the sentence's own conclusion \
+         (the BFBS interpolates c_k at t_k) follows. One index, the reading the conclusion fixes, no number depending on it: \
+         clause 3",
+    )
+}

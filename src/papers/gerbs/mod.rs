@@ -41,6 +41,7 @@ pub const SPECS: &[ClaimSpec] = &[
     spec!("gerbs.eq14_18.derivatives", "Eqs. (14)–(18)", "the printed first and second derivatives of Φ and Θ"),
     spec!("gerbs.eq7_10.beta_kernel", "Eqs. (7)–(10)", "S_k of Eq. (8) normalizes the kernel Ψ_k of Eq. (9) in Eq. (7); Eq. (10) is Eq. (9) with i_k = 2"),
     spec!("gerbs.partition_of_unity", "Eqs. (3), (6)–(7)", "the basis functions sum to 1 on every knot interval"),
+    spec!("gerbs.sec4.support_at_knot", "Sec. IV, on Fig. 1", "the local support for B_k is zero when t = t_k, which means that the BFBS will interpolate the local curve when t = t_k"),
     spec!("gerbs.interpolates_at_knot", "Eqs. (3), (11)", "B_k(t_k) = 1, so the curve interpolates c_k at t_k"),
     spec!("gerbs.bfbs.smoothness", "Sec. II-B", "the BFBS is C^m with m = min i_k"),
     spec!("gerbs.erbs.smoothness", "Sec. II-A", "for α > 0 the ERBS basis is C^∞ (all one-sided derivatives vanish at the knots)"),
@@ -171,6 +172,7 @@ fn basis_checks(ledger: &mut Ledger) -> (Vec<basis::SmoothRow>, Vec<Vec<String>>
     let (partition, at_knot) = basis::partition();
     ledger.record("gerbs.partition_of_unity", partition);
     ledger.record("gerbs.interpolates_at_knot", at_knot);
+    ledger.record("gerbs.sec4.support_at_knot", basis::support_at_knot());
     let (bfbs, mut rows) = basis::bfbs_smoothness();
     ledger.record("gerbs.bfbs.smoothness", bfbs);
     let (erbs_smooth, fig2, sigma_range, erbs_rows) = basis::erbs_smoothness();
@@ -197,6 +199,7 @@ const AMENDMENTS: &[Amendment] = &[
     ("gerbs.sec3.knot_vector_words", None, "a strictly increasing knot vector … where t_1 = t_2 = 0", "the end knots repeat, so the vector is increasing, not strictly; the interior knots are simple", Minor, "the printed knots themselves are consistent (gerbs.sec3.knots)"),
     ("gerbs.eq1_25.index_range", None, "p(t) = Σ_{i=1}^n c_i(t)B_i(t), knots t_1…t_{n+2}", "the knots define B_2…B_{n+1}, Algorithm 2's range; B_1 would need t_0", Minor, "Algorithm 2, which a reader implements, uses the consistent range"),
     ("gerbs.alg1.returns_s", None, "Algorithm 1 returns m", "it must return (m, s): Algorithm 2 takes s, and without it every right turn bends the wrong way", Minor, "s is computed in Algorithm 1 and its use in Algorithm 2 is printed"),
+    ("gerbs.sec4.support_at_knot", None, "B_k is zero when t = t_k", "B_k(t_k) = 1; the basis functions that vanish at t_k are B_(k±1)", Minor, "one index; the sentence's conclusion (interpolation at t_k) is what B_k(t_k) = 1 gives"),
     ("gerbs.eq6.f_conditions", None, "F(t_{j−1}+) = F(t_{i_1}) = 0 and F(t_i+) = F(t_i) = 1", "indices i_1 and i that Eq. (6) does not define and a right-hand limit at the right end; the consistent reading F(t_{j−1}) = 0, F(t_j−) = F(t_j) = 1 holds for the BFBS", Minor, "the bases the paper uses satisfy the consistent reading; no number depends on it"),
     ("gerbs.erbs.parameter_range", None, "B_k ∈ C^∞ for α_k > 0, β_k > 0, γ_k > 0, 1 ≥ λ_k ≥ 0, σ_k ≥ 0", "a non-integer σ (the paper's own σ = 0.2) leaves B″ unbounded at the centre of each knot interval: C¹ only; σ ∈ ℕ₀ keeps C^∞", Material, "Figs. 2–4, 6 and 7 use σ = 0.2, and a reader taking the stated range gets unbounded curvature between the waypoints"),
     ("gerbs.sec2.second_order_bspline", None, "a second order B-spline is C¹ continuous", "C⁰ for C¹: a second-order B-spline (degree 1, the order whose interpolating property the paper invokes next) is C⁰ at simple knots; degree 2 is C¹ but does not interpolate", Minor, "one digit; the paper's own C^(d−r) rule gives C⁰, and the argument (ERBS raise the continuity without raising the degree) stands"),

@@ -188,7 +188,9 @@ pub fn section(ledger: &mut Ledger) -> Option<TableOne> {
     let corollary = corollary_two();
     ledger.record("marin.eq26.tilde", super::sentences::eq26_tilde(&corollary));
     ledger.record("marin.cor2.unique_minimizer", corollary);
-    ledger.record("marin.cor3.properties", corollary_three());
+    let three = corollary_three();
+    ledger.record("marin.cor3.d_index", super::sentences::d_index(&three));
+    ledger.record("marin.cor3.properties", three);
     Some(TableOne {
         t_star: t_hi,
         digits,

@@ -487,3 +487,28 @@ pub fn x_most_pronounced(proven: &Result<Vec<ProvenKnots>, String>) -> Outcome {
          enclosures. The sentence names both observations, so each is judged and clause 5 combines them",
     )
 }
+
+/// Corollary 3 (iii): "θ″(t_{i_k}) = −3 sgn(D_{i_k})(Σ_{j=1}^M ε_j √|D_j|)²" with "D_{i_k} =
+/// z_{i_k} − z_{i_{k−1}}, k = 1, …, M" (Eq. 13). D is defined only at the extreme indices i_k,
+/// so D_j for j ∉ {i_k} is undefined; the consistent reading is D_{i_j}. Checked under that
+/// reading by `corollary` (marin.cor3.properties, which sums over the M differences of
+/// consecutive extremes): where it holds, the reading is the paper's.
+pub fn d_index(corollary: &Outcome) -> Outcome {
+    let verdict = match corollary.verdict {
+        Verdict::Reproduced => Verdict::Typo,
+        Verdict::Failed => Verdict::Failed,
+        _ => Verdict::Discrepancy,
+    };
+    Outcome::new(
+        format!(
+            "with D_(i_j) (the differences of consecutive extremes, Eq. 13) the formula holds (marin.cor3.properties: {})",
+            corollary.reproduced
+        ),
+        corollary.scalar.clone(),
+        verdict,
+        "Eq. (13) defines D only at the extreme indices i_1 < … < i_M, so the printed Σ_(j=1)^M ε_j √|D_j| reads D at indices where it \
+         is undefined (for j not an extreme index) or at the wrong one; marin.cor3.properties checks (iii) with D_(i_j), in balls at \
+         256 bits on Table I and random case II and III data. A lost index level (D_j for D_(i_j)), with the one reading Eq. (13) \
+         fixes, on which no printed number depends: clause 3",
+    )
+}

@@ -135,6 +135,30 @@ pub const SPECS: &[ClaimSpec] = &[
         None
     ),
     spec!(
+        "phodcos.appc.form_reference",
+        "App. C",
+        "the extended Bernstein Bezier form in (9) is [Eq. (27)]",
+        None
+    ),
+    spec!(
+        "phodcos.alg1.step10_reference",
+        "Algorithm 1, step 10",
+        "return to the original pose by performing the inverse operation of step 1",
+        None
+    ),
+    spec!(
+        "phodcos.eq13a.upper_limit",
+        "Sec. 4B, Eq. (13a)",
+        "L(ξ) = ∫_{ξb}^{ξe} σ(ξ)dξ, ξb and ξe the starting and ending values",
+        None
+    ),
+    spec!(
+        "phodcos.thm4.parameter_map",
+        "App. B, Theorem 4",
+        "p̄_φ(1 − ξ) = p_{−φ}(ξ): the reversed data with the negated parameter vector give the reversed curve",
+        None
+    ),
+    spec!(
         "phodcos.sec6a.poles",
         "Sec. 6A",
         "the NRHO's high eccentricity brings it very close to the lunar north pole, while it deviates significantly when passing over the south pole",
@@ -317,7 +341,7 @@ pub const SPECS: &[ClaimSpec] = &[
     spec!(
         "phodcos.thm4.reversion",
         "Theorem 4, Fig. 3B",
-        "p̄_φ(1 − ξ) = p_{−φ}(ξ) for the reversed data",
+        "the reversed data give the reversed curve: p̄_φ*(1 − ξ) = p_φ*(ξ) for φ* = 0, and for any φ with −φ and the ends' parameters exchanged (the printed map entry by entry is phodcos.thm4.parameter_map)",
         None
     ),
     spec!(
@@ -460,7 +484,16 @@ pub fn verify() -> PaperOutput {
 /// Every check, in report order, each outcome recorded in `ledger`.
 fn checks(ledger: &mut Ledger) -> Results {
     let coefficients = preliminary_checks(ledger);
-    ledger.record("phodcos.eq27.bernstein_preimage", preliminaries::eq27());
+    let eq27 = preliminaries::eq27();
+    ledger.record(
+        "phodcos.appc.form_reference",
+        reference_typo(
+            &eq27,
+            "the form written out in App. C (Eq. 27) is the Bernstein form (10a); (9) is h = A i A*",
+            ("\"the extended Bernstein Bezier form in (9)\"", "(10a) for (9): one reference"),
+        ),
+    );
+    ledger.record("phodcos.eq27.bernstein_preimage", eq27);
     ledger.record(
         "phodcos.eq18.a4",
         found(
@@ -475,6 +508,14 @@ fn checks(ledger: &mut Ledger) -> Results {
         let failed = Outcome::failed(format!("ball:{}", theorems::BITS), e);
         (failed.clone(), failed)
     });
+    ledger.record(
+        "phodcos.alg1.step10_reference",
+        reference_typo(
+            &interp,
+            "step 1 is the function's header; the transformation step 10 undoes is step 2, and Algorithm 1 with that inverse interpolates (phodcos.alg1.interpolates)",
+            ("\"the inverse operation of step 1\"", "step 2 for step 1: an index offset"),
+        ),
+    );
     ledger.record("phodcos.alg1.interpolates", interp);
     ledger.record("phodcos.alg1.ph_condition", ph);
 
@@ -596,23 +637,11 @@ fn theorem_checks(
     Vec<theorems::GeometryRow>,
     Option<f64>,
 ) {
-    let [planar, rigid, reflect, reverse, printed] = theorems::theorems();
+    let [planar, rigid, reflect, reverse, printed, parameter_map] = theorems::theorems();
     ledger.record("phodcos.thm2.planarity", planar);
     ledger.record("phodcos.thm3.invariance", rigid);
     ledger.record("phodcos.thm3.reflection", reflect);
-    ledger.record("phodcos.thm4.reversion", reverse);
-    // Four signs are lost (v̄_b, v̄_e, j̄_b, j̄_e), on four quantities: several edits, not one
-    // garble (policy clause 3), so a discrepancy; phodcos.thm4.reversion holds with them.
-    ledger.record(
-        "phodcos.thm4.reversed_data_as_printed",
-        found(
-            printed,
-            "v̄_b = v_e, ā_b = a_e, … (no signs)",
-            "the odd derivatives of reversed data change sign; with the signs Theorem 4 holds",
-            Material,
-            "a reader reversing data by the printed rule gets a different curve",
-        ),
-    );
+    theorem4_records(ledger, [reverse, printed, parameter_map]);
 
     let jumps = [2usize, 8]
         .iter()
@@ -655,6 +684,14 @@ fn theorem_checks(
     );
     ledger.record("phodcos.eq13b.formula", theorems::curvature_formula());
     let (geo, length, geo_out) = theorems::geometry(proven);
+    ledger.record(
+        "phodcos.eq13a.upper_limit",
+        reference_typo(
+            &geo_out,
+            "with the upper limit ξ_e the right side is the constant total length (which phodcos.eq13.geometry computes); the function L(ξ) that Sec. 5F and Algorithm 2 return needs the upper limit ξ",
+            ("L(ξ) = ∫_(ξb)^(ξe) σ(ξ)dξ", "ξ for ξ_e in the upper limit: one symbol"),
+        ),
+    );
     ledger.record("phodcos.eq13.geometry", geo_out);
 
     (jumps, geo, length)
@@ -662,6 +699,33 @@ fn theorem_checks(
 
 /// A check that found the print contradicted, judged a typo by clause 3 (one swap with one
 /// consistent reading); a check that failed stays failed.
+/// A garbled reference or symbol that a claim's computation already fixes: `typo` (clause 3:
+/// one symbol, one consistent reading that the paper fixes, no number depending on it) when
+/// `base` holds under that reading, failed when it failed; `reading` says what is computed
+/// and which reading it fixes, `(paper, difference)` the finding.
+fn reference_typo(base: &Outcome, reading: &str, (paper, difference): (&str, &str)) -> Outcome {
+    let verdict = match base.verdict {
+        Verdict::Failed => Verdict::Failed,
+        _ => Verdict::Typo,
+    };
+    let outcome = Outcome::new(
+        format!("{reading}: {}", base.reproduced),
+        base.scalar.clone(),
+        verdict,
+        format!(
+            "the printed reference or symbol against what the paper computes with it: {reading}. One symbol, one consistent reading \
+             that the paper fixes, no printed number depending on it: clause 3"
+        ),
+    );
+    found(
+        outcome,
+        paper,
+        difference,
+        Minor,
+        "the computation the paper describes uses the consistent reading",
+    )
+}
+
 fn typo_if_discrepancy(outcome: Outcome) -> Outcome {
     if outcome.verdict == Verdict::Discrepancy {
         outcome.with_verdict(Verdict::Typo)
@@ -724,6 +788,34 @@ fn counting_checks(ledger: &mut Ledger) {
             "Algorithm 1 needs γ′ … γ⁗ at the segment ends: C⁴, as Sec. 2 states",
             Minor,
             "Sec. 2 and Algorithm 1's inputs state what is needed; no number depends on it",
+        ),
+    );
+}
+
+/// Theorem 4: the reversion with the ends' parameters exchanged, the printed map entry by
+/// entry, and the reversed data as printed.
+fn theorem4_records(ledger: &mut Ledger, [reverse, printed, parameter_map]: [Outcome; 3]) {
+    ledger.record(
+        "phodcos.thm4.parameter_map",
+        found(
+            parameter_map,
+            "p̄_φ(1 − ξ) = p_{−φ}(ξ)",
+            "the map is φ ↦ −φ with the two ends' parameters exchanged (θ₀ ↔ θ₈, τ_k ↔ τ_{8−k}); entry by entry it fails",
+            Minor,
+            "the paper uses the theorem for φ* = 0, where the exchange changes nothing",
+        ),
+    );
+    ledger.record("phodcos.thm4.reversion", reverse);
+    // Four signs are lost (v̄_b, v̄_e, j̄_b, j̄_e), on four quantities: several edits, not one
+    // garble (policy clause 3), so a discrepancy; phodcos.thm4.reversion holds with them.
+    ledger.record(
+        "phodcos.thm4.reversed_data_as_printed",
+        found(
+            printed,
+            "v̄_b = v_e, ā_b = a_e, … (no signs)",
+            "the odd derivatives of reversed data change sign; with the signs Theorem 4 holds",
+            Material,
+            "a reader reversing data by the printed rule gets a different curve",
         ),
     );
 }
