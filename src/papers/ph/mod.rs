@@ -171,6 +171,12 @@ pub const SPECS: &[ClaimSpec] = &[
         None
     ),
     spec!(
+        "phodcos.sec5b.constraint_counts",
+        "Sec. 5B, footnote 3; Sec. 5C",
+        "30 scalar constraints per interval; imposing p₀ leaves 27 free conditions; the interpolants form a 9 parameter family",
+        None
+    ),
+    spec!(
         "phodcos.sec5b.order7_unknowns",
         "Sec. 5B",
         "a preimage of order 7 (4 · 7 = 28 > 27) accounts for sufficient degrees of freedom",
@@ -770,6 +776,10 @@ fn nrho_checks(ledger: &mut Ledger) -> (nrho::Nrho, [String; 4]) {
 
 /// Sec. 5B's count of unknowns and Sec. 3's smoothness class, both counted on Algorithm 1.
 fn counting_checks(ledger: &mut Ledger) {
+    ledger.record(
+        "phodcos.sec5b.constraint_counts",
+        preliminaries::constraint_counts(),
+    );
     ledger.record(
         "phodcos.sec5b.order7_unknowns",
         found(

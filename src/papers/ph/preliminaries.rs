@@ -628,3 +628,37 @@ pub fn unit_direction() -> Outcome {
         ),
     )
 }
+
+/// Sec. 5B, footnote 3 and Sec. 5C: "30 scalar constraints per interval" (2 ends · 3
+/// coordinates · 5 orders, position to snap), "imposing the starting position p₀ … reduces the
+/// amount of free conditions to 27", and the interpolants "relate to a 9 parameter family φ".
+/// Counted on Algorithm 1 itself: the scalars of its C⁴ input (`HermiteData`: p_b, p_e and the
+/// derivative vectors at both ends), less p₀; the coefficients of its output's preimage; the
+/// free parameters it takes.
+pub fn constraint_counts() -> Outcome {
+    let mut rng = SplitMix64::new(0x5b30);
+    let data = into::<Ball>(&random_data(&mut rng), &BITS);
+    let free: FreeParameters<Ball> = FreeParameters::zero(data.order(), &BITS);
+    let curve = match interpolate(&data, &free) {
+        Ok(c) => c,
+        Err(e) => return Outcome::failed("rational", format!("Algorithm 1: {e}")),
+    };
+    let constraints = 3 * (2 + data.start.len() + data.end.len());
+    let after_p0 = constraints - 3;
+    let parameters = 3 + free.tau_start.len() + free.tau_end.len();
+    let family = 4 * curve.preimage.len() - after_p0;
+    let holds = (constraints, after_p0, parameters, family) == (30, 27, 9, 9);
+    Outcome::new(
+        format!(
+            "{constraints} scalar conditions per segment ({} derivative orders at each end, with the positions), {after_p0} after \
+             p₀; {} preimage unknowns leave a {family}-parameter family, and Algorithm 1 takes {parameters} free parameters",
+            data.order(),
+            4 * curve.preimage.len()
+        ),
+        "rational",
+        Verdict::holds(holds),
+        "counted on Algorithm 1's input and output for a random C⁴ data set (φ* = 0), against the printed 30, 27 and 9: the data's \
+         scalars (two points and 2 × 4 derivative vectors in R³), less the three of p₀ that integration fixes; four unknowns per \
+         quaternion coefficient of the degree-8 preimage; θ₀, θ₄, θ₈ and the six τ_k",
+    )
+}
