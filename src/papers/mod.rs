@@ -36,6 +36,17 @@ pub fn found(
     outcome.finding((paper, &computed, difference), severity, reason)
 }
 
+/// The verdict of a printed garble whose one consistent reading another claim checks (policy
+/// clause 3): `typo` when that check (`reading`) holds, `failed` when it could not be
+/// computed, `discrepancy` when the reading itself fails.
+pub fn typo_if_reading_holds(reading: &Outcome) -> Verdict {
+    match reading.verdict {
+        Verdict::Reproduced => Verdict::Typo,
+        Verdict::Failed => Verdict::Failed,
+        _ => Verdict::Discrepancy,
+    }
+}
+
 /// A paper's output from its report `body`, `claims` and `figures`: the heading (title, id,
 /// claim prefix, how to regenerate it) and the coverage section (from its map) around the
 /// body, shared by the five renderers.

@@ -393,11 +393,7 @@ pub fn extremum_index() -> Outcome {
 /// the extreme ones among them — lies within its proven bound of Eqs. 16–17, whose knots at
 /// the extremes are t̂ (Eq. 16).
 pub fn eq26_tilde(corollary: &Outcome) -> Outcome {
-    let verdict = match corollary.verdict {
-        Verdict::Reproduced => Verdict::Typo,
-        Verdict::Failed => Verdict::Failed,
-        _ => Verdict::Discrepancy,
-    };
+    let verdict = crate::papers::typo_if_reading_holds(corollary);
     Outcome::new(
         format!(
             "t̃_(i_k) = t̂_(i_k) for every minimizer t̃ (marin.cor2.unique_minimizer: {}); the printed t̂_(i_k) = t*_(i_k) is Eq. (16)",
@@ -494,11 +490,7 @@ pub fn x_most_pronounced(proven: &Result<Vec<ProvenKnots>, String>) -> Outcome {
 /// reading by `corollary` (marin.cor3.properties, which sums over the M differences of
 /// consecutive extremes): where it holds, the reading is the paper's.
 pub fn d_index(corollary: &Outcome) -> Outcome {
-    let verdict = match corollary.verdict {
-        Verdict::Reproduced => Verdict::Typo,
-        Verdict::Failed => Verdict::Failed,
-        _ => Verdict::Discrepancy,
-    };
+    let verdict = crate::papers::typo_if_reading_holds(corollary);
     Outcome::new(
         format!(
             "with D_(i_j) (the differences of consecutive extremes, Eq. 13) the formula holds (marin.cor3.properties: {})",

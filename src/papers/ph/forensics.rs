@@ -44,8 +44,6 @@ use std::collections::HashMap;
 pub const FAMILY_SAMPLES: std::ops::RangeInclusive<usize> = 2..=200;
 /// Rows screened in f64 (Table 1 indices 0…6: N = 1…64).
 pub const SCREENED: usize = 7;
-/// Bits of the ball evaluations.
-const BITS: u32 = super::table1::BITS;
 
 /// One member of the family of sampled maxima declared before computing (policy clause 6):
 /// the maximum of ‖γ − p‖ over the grid it names, every point a double as numpy forms it.
@@ -162,12 +160,12 @@ impl Screen {
         (x.clone(), x)
     }
 
-    /// The units of each cell of row `i` under member `m` (error, then ratio where there is one).
-    fn cells(&self, i: usize, m: usize) -> Vec<f64> {
+    /// The units of each cell of row `i` under member `m` (error, then ratio where there is one);
+    /// an error when a printed cell does not parse.
+    fn cells(&self, i: usize, m: usize) -> Result<Vec<f64>, String> {
         let prev = (i > 0).then(|| self.bounds(i - 1, m));
         cell_units(i, prev.as_ref(), &self.bounds(i, m))
             .map(|u| u.into_iter().map(farthest).collect())
-            .unwrap_or_default()
     }
 }
 
@@ -212,11 +210,14 @@ impl Ranking {
         };
         let mut members: Vec<(usize, usize, usize)> = (0..screen.family.len())
             .map(|m| {
-                let units: Vec<f64> = (0..SCREENED).flat_map(|i| screen.cells(i, m)).collect();
+                let mut units = Vec::new();
+                for i in 0..SCREENED {
+                    units.extend(screen.cells(i, m)?);
+                }
                 let (half, one) = count(&units);
-                (m, half, one)
+                Ok((m, half, one))
             })
-            .collect();
+            .collect::<Result<_, String>>()?;
         members.sort_by_key(|&(m, half, one)| (std::cmp::Reverse((half, one)), m));
         let mut truth_units = Vec::new();
         for i in 0..SCREENED {
@@ -351,8 +352,9 @@ impl Balls {
         // The screened rows' conversions are cheap and kept whole; beyond them, one segment.
         let part = (i >= SCREENED).then_some(k);
         let d = self.conversion(segments, part)?.distances(&exact);
-        Ok(d.first()
-            .map_or_else(|| Float::with_val(BITS, 0), |d| d.lower()))
+        d.first()
+            .map(|d| d.lower())
+            .ok_or_else(|| format!("no distance at t = {t} with {segments} segments"))
     }
 }
 
@@ -379,7 +381,7 @@ struct Context<'a> {
 pub fn judge(
     rows: &[Row],
     enclosures: &[Option<&ErrorEnclosure>],
-) -> (Vec<Outcome>, Option<BestMember>) {
+) -> (Vec<Outcome>, Result<BestMember, String>) {
     let scalar = format!("ball:{}", super::proven::BITS);
     let missing = enclosures.iter().position(Option::is_none);
     let prepared = match missing {
@@ -403,7 +405,7 @@ pub fn judge(
             let failed = rows
                 .iter()
                 .map(|_| Outcome::failed(scalar.clone(), e.clone()));
-            return (failed.collect(), None);
+            return (failed.collect(), Err(e));
         }
     };
     let argmax = rows
@@ -425,14 +427,17 @@ pub fn judge(
         })
         .collect();
     let best = ranking.best();
-    let maxima: Result<Vec<Bounds>, String> = (0..SCREENED.min(rows.len()))
-        .map(|r| balls.member_max(&screen, best, r))
-        .collect();
-    let summary = maxima.ok().map(|maxima| BestMember {
-        name: screen.family[best].name(),
-        maxima,
-        members_giving: (0..SCREENED).map(|i| row_counts(i, &context)).collect(),
-    });
+    let summary = (|| {
+        Ok(BestMember {
+            name: screen.family[best].name(),
+            maxima: (0..SCREENED.min(rows.len()))
+                .map(|r| balls.member_max(&screen, best, r))
+                .collect::<Result<_, String>>()?,
+            members_giving: (0..SCREENED)
+                .map(|i| row_counts(i, &context))
+                .collect::<Result<_, String>>()?,
+        })
+    })();
     (outcomes, summary)
 }
 
@@ -461,7 +466,7 @@ fn judge_row(i: usize, cx: &Context, balls: &mut Balls) -> Result<(Verdict, Stri
     evidence.push(' ');
     evidence.push_str(&cx.ranking.sentence(cx.screen));
     if i < SCREENED {
-        let (half, one) = row_counts(i, cx);
+        let (half, one) = row_counts(i, cx)?;
         evidence.push_str(&format!(
             " In the screen, {half} of {} members give every cell of this row within ½ unit and {one} within one.",
             cx.screen.family.len()
@@ -522,14 +527,14 @@ fn truth_sentence(i: usize, cx: &Context, units: &[Units]) -> String {
 }
 
 /// How many members the screen finds giving every cell of row `i` within ½ and within one unit.
-fn row_counts(i: usize, cx: &Context) -> (usize, usize) {
+fn row_counts(i: usize, cx: &Context) -> Result<(usize, usize), String> {
     let all: Vec<f64> = (0..cx.screen.family.len())
-        .map(|m| cx.screen.cells(i, m).into_iter().fold(0.0, f64::max))
-        .collect();
-    (
+        .map(|m| Ok(cx.screen.cells(i, m)?.into_iter().fold(0.0, f64::max)))
+        .collect::<Result<_, String>>()?;
+    Ok((
         all.iter().filter(|&&u| u <= 0.5).count(),
         all.iter().filter(|&&u| u <= 1.0).count(),
-    )
+    ))
 }
 
 /// The first member, in the table's ranking, that gives every cell of row `i` within one unit,

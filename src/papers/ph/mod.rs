@@ -707,13 +707,10 @@ fn theorem_checks(
 /// consistent reading); a check that failed stays failed.
 /// A garbled reference or symbol that a claim's computation already fixes: `typo` (clause 3:
 /// one symbol, one consistent reading that the paper fixes, no number depending on it) when
-/// `base` holds under that reading, failed when it failed; `reading` says what is computed
+/// `base` holds under that reading ([`crate::papers::typo_if_reading_holds`]); `reading` says what is computed
 /// and which reading it fixes, `(paper, difference)` the finding.
 fn reference_typo(base: &Outcome, reading: &str, (paper, difference): (&str, &str)) -> Outcome {
-    let verdict = match base.verdict {
-        Verdict::Failed => Verdict::Failed,
-        _ => Verdict::Typo,
-    };
+    let verdict = crate::papers::typo_if_reading_holds(base);
     let outcome = Outcome::new(
         format!("{reading}: {}", base.reproduced),
         base.scalar.clone(),

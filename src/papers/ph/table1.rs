@@ -542,8 +542,8 @@ pub struct Section {
     pub paper_grid: Vec<(Float, Float)>,
     /// The verdict of each printed row.
     pub verdicts: Vec<Verdict>,
-    /// The metric family's best member on the coarse rows (`None` if the forensics failed).
-    pub best_member: Option<super::forensics::BestMember>,
+    /// The metric family's best member on the coarse rows, or why the forensics failed.
+    pub best_member: Result<super::forensics::BestMember, String>,
     /// Theorem 1 for φ ≠ 0.
     pub other: OtherOrders,
     /// Proven enclosures of every row's error.
@@ -623,7 +623,7 @@ fn record_rows(
     ledger: &mut Ledger,
     rows: &[Row],
     proven: &[super::proven::ProvenRow],
-) -> (Vec<Verdict>, Option<super::forensics::BestMember>) {
+) -> (Vec<Verdict>, Result<super::forensics::BestMember, String>) {
     let enclosures: Vec<Option<&ErrorEnclosure>> =
         proven.iter().map(|p| p.enclosure.as_ref()).collect();
     let (outcomes, best) = super::forensics::judge(rows, &enclosures);
