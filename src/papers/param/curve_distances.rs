@@ -204,3 +204,40 @@ pub fn percent(numerator: &Ball, denominator: &Ball) -> Ball {
     let bits = numerator.mid().prec();
     Ball::from_i64(100, &bits) * numerator / denominator
 }
+
+/// Proven enclosures of the smallest and the largest speed ‖θ′(t)‖ over t ∈ [0, 1] of the
+/// curve whose components are `splines` (all on the same knots): the search runs on the
+/// squared speed Σ θ_j′², in the mean-value form with slope 2 Σ θ_j′ θ_j″, and the square
+/// root, being increasing, carries both enclosures over.
+///
+/// # Errors
+/// No component, or the search's error.
+pub fn speed_range(splines: &[NaturalCubicSpline<Ball>]) -> Result<(Ball, Ball), String> {
+    let first = splines.first().ok_or("a curve with no component")?;
+    let bits = first.knots()[0].mid().prec();
+    let (start, end) = unit(bits);
+    let zero = Ball::zero_in(&bits);
+    let two = Ball::from_i64(2, &bits);
+    let squared_speed = |x: &Ball| -> Result<Ball, String> {
+        let m = midpoint(x);
+        let (mut at_mid, mut slope) = (zero.clone(), zero.clone());
+        for s in splines {
+            let (mid, over) = (s.enclose_over(&m), s.enclose_over(x));
+            at_mid += &(mid[1].clone() * &mid[1]);
+            slope += &(two.clone() * &over[1] * &over[2]);
+        }
+        Ok(mean_value(&at_mid, &slope, x))
+    };
+    let scale: f64 = splines.iter().map(|s| scale(s, 1).powi(2)).sum();
+    let (min, max) = proven_range(squared_speed, &start, &end, &options(1e-9 * scale, bits))
+        .map_err(|e| e.to_string())?;
+    // The squared speed is never negative: a box reaching below 0 is only overestimated.
+    let root = |b: Ball| {
+        if b.lower() < 0 {
+            Ball::from_bounds(&Float::with_val(bits, 0), &b.upper()).sqrt()
+        } else {
+            b.sqrt()
+        }
+    };
+    Ok((root(min.ball()), root(max.ball())))
+}

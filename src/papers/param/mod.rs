@@ -15,6 +15,7 @@ mod one_d;
 mod overshoot;
 mod plane;
 mod proven_splines;
+mod remarks;
 mod render;
 mod robot;
 mod sentences;
@@ -55,7 +56,13 @@ pub const SPECS: &[ClaimSpec] = &[
     ClaimSpec { id: "marin.abstract.objective_weights", location: "Abstract", statement: "parametrizations are chosen by minimizing Σ_l ∫(d²θ^l/dt²)² dt (the weights 1/α_l² not written)", published: None },
     ClaimSpec { id: "marin.eq30.always_improves", location: "Sec. 3, after Eq. 30; Sec. 4", statement: "gradient projection from chord length always results in an improved parametrization, provided π_B(∇G|h⁽⁰⁾) ≠ 0", published: None },
     ClaimSpec { id: "marin.fig34.x_most_pronounced", location: "Sec. 3, example 1", statement: "these observations (smaller third-derivative jumps, oscillations more centred about zero) are most pronounced when the plot of d²x/dt² from Fig. 3 is compared to the one in Fig. 4", published: None },
-    ClaimSpec { id: "marin.sec2.oscillations_centred", location: "Sec. 2 bullet (iii); Sec. 3", statement: "with the minimizing parametrization, oscillations in the second derivative are more centred about zero", published: None },
+    ClaimSpec { id: "marin.sec2.oscillations_centred", location: "Sec. 2, after Corollary 3, bullet (iii)", statement: "for higher-dimensional data, oscillations in the second derivative tend to be more centered about zero with the minimizing parametrization", published: None },
+    ClaimSpec { id: "marin.table2.oscillations_centred", location: "Sec. 3, example 1 (Table II, Figs. 3–5)", statement: "with the minimizing parametrizations, oscillations in the second derivative are more centred about zero than with chord length", published: None },
+    ClaimSpec { id: "marin.sec1.chord_constant_speed", location: "Sec. 1, after Eq. (5)", statement: "when used in applications of robot trajectory design, [chord length] merely ensures that approximate constant speed is maintained", published: None },
+    ClaimSpec { id: "marin.sec2.cor3_fails_k2", location: "Sec. 2, after Corollary 3", statement: "when higher dimensional data is parametrized by solving (2), the associated natural cubic spline interpolants of the data components do not satisfy precisely the properties listed in Corollary 3", published: None },
+    ClaimSpec { id: "marin.table7.ap_lowest", location: "Sec. 3, example 3 (Table VII)", statement: "the minimizing parametrization can reduce significantly component function accelerations compared to those obtained with the other two parametrizations", published: None },
+    ClaimSpec { id: "marin.sec1.closer_to_polygon", location: "Sec. 1 (i)", statement: "we anticipate that parametrizations which minimize G will also provide interpolating curves θ(t) which are closer to the interpolating polygon", published: None },
+    ClaimSpec { id: "marin.sec3.align_extrema", location: "Sec. 3, example 3", statement: "the minimizing parametrization tends to align local extrema in the data with local extrema in the cubic spline interpolant of the data", published: None },
     ClaimSpec { id: "marin.cor3.d_index", location: "Corollary 3 (iii)", statement: "θ″(t_{i_k}) = −3 sgn(D_{i_k})(Σ_{j=1}^M ε_j √|D_j|)², with D_{i_k} = z_{i_k} − z_{i_{k−1}} (Eq. 13)", published: None },
     ClaimSpec { id: "marin.eq26.tilde", location: "Sec. 2, proof of Corollary 2, Eq. (26), first line", statement: "the immediate implication of (25) and case II uniqueness is that t̂_{i_k} = t*_{i_k}, k = 0, …, M", published: None },
     ClaimSpec { id: "marin.eq13.extremum_index", location: "Sec. 2, case III, before Eq. (13)", statement: "identify all indices 1 ≤ i_1 < … < i_{M−1} ≤ N−1 for which Δ_{i_{k+1}}/Δ_{i_k} < 0", published: None },
@@ -140,9 +147,24 @@ pub fn verify() -> PaperOutput {
     ledger.record("marin.case3.observations", sentences::case3_observations());
     ledger.record("marin.eq13.extremum_index", sentences::extremum_index());
     ledger.record(
-        "marin.sec2.oscillations_centred",
-        sentences::oscillations_centred(&plane.proven),
+        "marin.table2.oscillations_centred",
+        sentences::table2_oscillations_centred(&plane.proven),
     );
+    ledger.record(
+        "marin.sec2.oscillations_centred",
+        sentences::oscillations_centred(
+            &plane.proven,
+            [Some(&robot.chord_knots), robot.approx_knots.as_ref()],
+        ),
+    );
+    ledger.record(
+        "marin.sec1.chord_constant_speed",
+        remarks::chord_constant_speed(&plane.proven, &robot.chord_knots),
+    );
+    ledger.record("marin.sec2.cor3_fails_k2", remarks::cor3_fails_k2(&plane.proven));
+    ledger.record("marin.table7.ap_lowest", remarks::ap_lowest(&robot.from_printed));
+    ledger.record("marin.sec3.align_extrema", remarks::align_extrema());
+    ledger.record("marin.sec1.closer_to_polygon", remarks::closer_to_polygon(&plane.proven));
     ledger.record(
         "marin.fig34.x_most_pronounced",
         sentences::x_most_pronounced(&plane.proven),
@@ -203,7 +225,11 @@ const AMENDMENTS: &[Amendment] = &[
     ("marin.eq26.tilde", None, "t̂_{i_k} = t*_{i_k} as the implication of (25)", "the printed line is Eq. (16), a definition; the step needs t̃_{i_k} = t̂_{i_k}, which holds", Minor, "one symbol in a proof; the corollary itself is checked by marin.cor2.unique_minimizer"),
     ("marin.eq13.extremum_index", None, "indices for which Δ_{i_{k+1}}/Δ_{i_k} < 0", "the condition relates chosen indices to each other and admits many index sets; Δ_{i_k+1}/Δ_{i_k} < 0 (the case's heading, Corollary 3 (ii)) selects the interior extremes", Minor, "one misplaced subscript; the heading and Corollary 3 fix the reading"),
     ("marin.abstract.objective_weights", None, "Σ_l ∫(d²θ^l/dt²)² dt", "the weights 1/α_l² of Eq. 31 are lost; they change the robot's parametrization (see the reproduced value)", Minor, "Eq. 31, which the paper computes with, carries them"),
-    ("marin.sec2.oscillations_centred", None, "oscillations in θ″ more centred about zero", "not under the declared measure for every component (see the reproduced value)", Minor, "a qualitative remark; the paper gives no measure"),
+    ("marin.sec2.oscillations_centred", None, "oscillations in θ″ tend to be more centred about zero", "more centred on Table II, less centred on the robot data (see the reproduced value)", Minor, "a qualitative remark; the paper gives no measure"),
+    ("marin.table2.oscillations_centred", None, "oscillations in θ″ more centred about zero", "not under the declared measure for every component (see the reproduced value)", Minor, "a qualitative remark; the paper gives no measure"),
+    ("marin.sec1.chord_constant_speed", None, "approximately constant speed", "within ±25 % of the chord speed on Table II, not on the robot data (see the reproduced value)", Minor, "a remark on the baseline parametrization; no result of the paper depends on it"),
+    ("marin.sec1.closer_to_polygon", None, "minimizers' curves closer to the interpolating polygon", "on Table II, the paper's only printed plane data, both minimizers' curves are farther from the polygon (see the reproduced value)", Minor, "a hedged anticipation; the paper's results do not rest on it"),
+    ("marin.sec3.align_extrema", None, "t^AP tends to align spline extrema with the data's", "holds on axis #3 (Fig. 9), not over the six axes, where t^WC leaves fewer unaligned extrema (see the reproduced value)", Minor, FIG9),
     // Provenance (clause 1): the corner data are ours.
     ("marin.fig6.corner", Some(Verdict::Illustrated), "oscillations near a widely spaced corner (Fig. 6)", "on corner data of our own: the paper prints none", Minor, "an illustration on invented data"),
 ];

@@ -82,7 +82,7 @@ fn column<const K: usize>(table: &[[&str; K]], c: usize) -> Vec<BigRational> {
 }
 
 /// The printed Table VI column `c` as proven (exact) knots.
-fn printed_knots(name: &'static str, c: usize) -> Result<ProvenKnots, String> {
+pub(super) fn printed_knots(name: &'static str, c: usize) -> Result<ProvenKnots, String> {
     ProvenKnots::exact(name, &column(&TABLE6, c))
 }
 

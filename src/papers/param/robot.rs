@@ -62,7 +62,7 @@ fn mids(knots: &[Ball]) -> Vec<Float> {
 }
 
 /// The Table IV axes as exact rationals.
-fn axes() -> Vec<Vec<BigRational>> {
+pub(super) fn axes() -> Vec<Vec<BigRational>> {
     let th = points::<BigRational, 6>(&TABLE4, &());
     (0..6)
         .map(|j| th.iter().map(|r| r[j].clone()).collect())
@@ -127,6 +127,8 @@ pub fn two_digit_units(x: &BigRational, printed: &str) -> BigRational {
 
 /// Tables VI and VII computed.
 pub struct RobotSection {
+    /// t^CL proven (balls at 256 bits).
+    pub chord_knots: ProvenKnots,
     /// t^CL: 6-D chord length at 256 bits.
     pub chord: Vec<Float>,
     /// t^WC: work-centre chord length at 256 bits.
@@ -202,6 +204,7 @@ pub fn section(ledger: &mut Ledger) -> RobotSection {
         }
     };
     RobotSection {
+        chord_knots,
         chord,
         work_centre,
         approx,
