@@ -281,7 +281,7 @@ fn parameter_range(growth: Option<(bool, String)>) -> Outcome {
 /// its centre makes the proven integrals converge only like the piece width^1.4, so each
 /// further bit costs many pieces (measured: building the basis takes 25 s at 128 bits and
 /// 47 s at 256, against about a second at 64).
-const KINKED_BITS: u32 = 64;
+pub(super) const KINKED_BITS: u32 = 64;
 
 /// The decay of every derivative at the knots for the two parameter sets with α > 0, proven
 /// upper bounds in balls (256 bits for σ = 1, [`KINKED_BITS`] for σ = 0.2).

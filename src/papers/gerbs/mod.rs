@@ -63,11 +63,14 @@ pub const SPECS: &[ClaimSpec] = &[
     spec!("gerbs.sec3.knot_vector_words", "Sec. III, before Algorithm 1", "the knot vector is strictly increasing with interior multiplicity of zero, where t_1 = t_2 = 0 and t_{n+1} = t_{n+2} = 1"),
     spec!("gerbs.alg2.interpolates", "Sec. III, Algorithm 2", "the GERBS path interpolates every waypoint"),
     spec!("gerbs.alg2.tangent", "Eqs. (19)–(22), Algorithm 1", "the local arcs give the path the tangent m_i (travel direction) at each waypoint, for left and right turns"),
-    spec!("gerbs.alg2.curvature_continuous", "Sec. III", "the path is curvature continuous (BFBS i = 2: C²; ERBS: C^∞)"),
+    spec!("gerbs.alg2.curvature_continuous", "Sec. II-B; Sec. III", "for the case when i_k = 2 a curvature continuous path can be constructed (BFBS i = 2: C²; checked also on the ERBS with α = σ = 1, where the path is C^∞)"),
     spec!("gerbs.sec4.order_smoothness", "Sec. IV, on Fig. 1", "by reducing the order of the beta function a smoother path is generated, while the local support remains the same"),
     spec!("gerbs.fig6.bfbs_vs_erbs", "Figs. 5–6", "BFBS and ERBS paths compared; the BFBS turns are tighter"),
     spec!("gerbs.fig7.dubins", "Fig. 7", "the ERBS path follows the Dubins path closely but keeps curvature continuous"),
-    spec!("gerbs.locality", "Sec. II", "moving one waypoint changes the path only on its neighbouring knot intervals"),
+    spec!("gerbs.locality", "Sec. II-A", "changing the position of a local curve has only local effect on the entire curve p(t)"),
+    spec!("gerbs.sec2.waypoint_edit", "Sec. II-A; Sec. II-B", "changes to the location of a waypoint do not require complete reevaluation of the entire path; changing the position of a waypoint only requires recomputation of the connected path segments"),
+    spec!("gerbs.abstract.midpoints", "Abstract", "a global smooth path which also interpolates the midpoint of the curves"),
+    spec!("gerbs.sec3.erbs_path_smooth", "Sec. II-A; Sec. III; Abstract; Sec. V", "if the internal knots are simple, p(t) is C^∞ smooth when Expo-Rational basis functions are used, hence curvature continuous"),
 ];
 
 /// The paper: its specs and its checks.
@@ -128,7 +131,11 @@ pub fn verify() -> PaperOutput {
     ledger.record("gerbs.fig6.bfbs_vs_erbs", cmp);
     let (dubins, legs) = paths::against_dubins(&erbs_points);
     ledger.record("gerbs.fig7.dubins", dubins);
-    ledger.record("gerbs.locality", paths::locality());
+    let (locality, waypoint_edit) = paths::locality();
+    ledger.record("gerbs.locality", locality);
+    ledger.record("gerbs.sec2.waypoint_edit", waypoint_edit);
+    ledger.record("gerbs.abstract.midpoints", paths::abstract_midpoints());
+    ledger.record("gerbs.sec3.erbs_path_smooth", paths::erbs_path_smooth());
     let results = Results {
         smoothness,
         centre,
@@ -191,11 +198,14 @@ fn basis_checks(ledger: &mut Ledger) -> (Vec<basis::SmoothRow>, Vec<Vec<String>>
 /// parameters α = σ = 1 stand for the α = 0, σ = 0.2 of Figs. 2–3, with which the basis is only
 /// C⁰, gerbs.fig2.parameters).
 const AMENDMENTS: &[Amendment] = &[
+    ("gerbs.sec3.erbs_path_smooth", None, "the ERBS path is C^∞, hence curvature continuous", "with the paper's σ = 0.2 the curvature is unbounded at every interval's centre (see the reproduced value): the path is C¹ only", Material, "curvature continuity of the ERBS path is the paper's conclusion, and its own parameters (Figs. 2–4, 6, 7) break it"),
+    ("gerbs.sec2.waypoint_edit", None, "moving a waypoint recomputes only the connected segments", "with Algorithm 1's tangents re-run, three local curves change and on five waypoints the whole path; with the tangents kept, only the moved curve's two intervals", Minor, "the blending step is local (gerbs.locality); the sentence omits that Algorithm 1 couples neighbouring tangents"),
+    ("gerbs.abstract.midpoints", None, "interpolates the midpoint of the curves", "the arcs' midpoints (the waypoints) are interpolated; the end lines are met at their ends, not their midpoints (see the reproduced value)", Minor, "the abstract's wording; Sec. III states where the path meets each curve"),
     ("gerbs.fig2.parameters", None, "α = 0, σ = 0.2 give a C^∞ ERBS", "with α = 0 the basis is only C⁰ at every knot, and σ = 0.2 leaves a derivative unbounded at each centre", Material, "the paper's smoothness conclusion for its own parameters fails"),
     ("gerbs.eq4.centre", Some(Verdict::Typo), "|t − (1−λ_k)t_k + λ_k t_{k+1}|", "the parentheses around (1−λ)t_k + λt_{k+1} are lost: as printed the centre leaves the interval", Material, "Eq. (4) is the kernel a reader implements; as printed it gives an asymmetric basis"),
     ("gerbs.alg2.tangent", None, "the arcs run with the tangent m_i", "Eqs. (21)–(22) sweep every arc clockwise: left turns run backwards", Material, "a reader implementing Eqs. (21)–(22) gets a path that reverses at every left turn"),
-    ("gerbs.sec4.order_smoothness", None, "a lower beta order gives a smoother path", "the path is C^i: a higher order gives a smoother path", Material, "the sentence reverses the design rule a reader would follow"),
-    ("gerbs.sec2.derivatives_vanish", None, "all derivatives of c_k B_k vanish at t_{k±1}", "true for the ERBS; for the BFBS path (i_k = 2) only through order 2, the third is c_k·B_k‴ ≠ 0", Minor, "curvature continuity needs order 2 only, which holds"),
+    ("gerbs.sec4.order_smoothness", None, "a lower beta order gives a smoother path", "the path is C^i: a higher order gives a smoother path", Minor, "the rule a reader implements, Sec. II-B's C^m with m = min i_k, is printed correctly, and the paths use i_k = 2; no conclusion rests on the sentence (clause 7)"),
+    ("gerbs.sec2.derivatives_vanish", None, "all derivatives of c_k B_k vanish at t_{k±1} (ERBS, 1 ≥ λ_k ≥ 0)", "at λ = 0, an end of the stated range, the rising basis function leaves its knot with slope 1/S_j ≠ 0 (see the reproduced value); inside the range (0 < λ < 1) it holds", Minor, "the paper's examples use λ = 0.5, where it holds; the root is the stated parameter range (gerbs.erbs.parameter_range)"),
     ("gerbs.sec3.knot_vector_words", None, "a strictly increasing knot vector … where t_1 = t_2 = 0", "the end knots repeat, so the vector is increasing, not strictly; the interior knots are simple", Minor, "the printed knots themselves are consistent (gerbs.sec3.knots)"),
     ("gerbs.eq1_25.index_range", None, "p(t) = Σ_{i=1}^n c_i(t)B_i(t), knots t_1…t_{n+2}", "the knots define B_2…B_{n+1}, Algorithm 2's range; B_1 would need t_0", Minor, "Algorithm 2, which a reader implements, uses the consistent range"),
     ("gerbs.alg1.returns_s", None, "Algorithm 1 returns m", "it must return (m, s): Algorithm 2 takes s, and without it every right turn bends the wrong way", Minor, "s is computed in Algorithm 1 and its use in Algorithm 2 is printed"),
