@@ -9,7 +9,7 @@ use super::proven::{interval_text, proven_at};
 use super::table1::{paper_grid, BallConversion, BITS, PAPER_GRID_PER_SEGMENT};
 use crate::curve::enclosure::ErrorEnclosure;
 use crate::scalar::ball::Ball;
-use crate::scalar::Field;
+use crate::scalar::{BigRational, Field, Float};
 use rayon::prelude::*;
 
 /// The tolerances tried, declared before computing: three decades of Table 1's range.
@@ -29,6 +29,8 @@ pub struct LoopRun {
     pub segments: usize,
     /// The grid error that stopped the loop.
     pub grid_error: f64,
+    /// The same, enclosed.
+    pub grid_enclosure: Ball,
     /// The proven true error of the returned path.
     pub returned: Option<ErrorEnclosure>,
 }
@@ -96,6 +98,7 @@ pub fn runs() -> Result<Vec<LoopRun>, String> {
                 tolerance,
                 segments,
                 grid_error: grid_error.mid().to_f64(),
+                grid_enclosure: grid_error.clone(),
                 returned: proven_at(segments, TARGET),
             })
         })
@@ -148,6 +151,111 @@ pub fn outcome(runs: &[LoopRun]) -> Outcome {
              error ≥ ε, and a grid maximum is at most the true one), so it is not a test. The loop never tries \
              one segment and leaves n_s one above the segments of the path it returns (step 12 runs after the test), neither of \
              which changes the path returned"
+        ),
+    )
+}
+
+/// The shortest decimal strictly between `low` and `high` (low < high), found by rounding
+/// their midpoint to 1, 2, … significant digits, with its digit count; `None` when none up to
+/// 30 digits is inside.
+fn shortest_decimal_between(low: &Float, high: &Float) -> Option<(BigRational, u32)> {
+    let mid = (low.clone() + high) / 2u32;
+    let mid = BigRational::from_float(mid.to_f64())?;
+    let exponent = mid.to_f64().abs().log10().floor() as i32;
+    (1..=30).find_map(|digits: i32| {
+        let scale = num_bigint::BigInt::from(10).pow((digits - 1 - exponent).unsigned_abs());
+        let unit = if digits - 1 - exponent >= 0 {
+            BigRational::new(1.into(), scale)
+        } else {
+            BigRational::from_integer(scale)
+        };
+        let rounded = (mid.clone() / &unit).round() * &unit;
+        let inside = rounded > BigRational::from_float(low.to_f64_round(rug::float::Round::Up)).unwrap_or_default()
+            && rounded < BigRational::from_float(high.to_f64_round(rug::float::Round::Down)).unwrap_or_default();
+        inside.then_some((rounded, digits.unsigned_abs()))
+    })
+}
+
+/// Abstract, Sec. 1 (third property) and Sec. 7: "it is guaranteed that the obtained
+/// coordinate system matches the given curve within a desired tolerance". Two readings of
+/// Algorithm 2's conversion error: (1) E of Eq. (2) or any upper bound of it — the loop exits
+/// only when that error is below ε, so the guarantee holds; (2) the authors' sampled maximum,
+/// a lower bound of E — then any ε between the grid error and the true error of the path the
+/// loop stops at is a tolerance the returned path does not meet. The counterexample is built
+/// from the ε = 10⁻³ run: every count before its n_s had grid error ≥ 10⁻³ > ε′, so the loop
+/// with ε′ stops at the same n_s.
+pub fn tolerance_guarantee(runs: &[LoopRun]) -> Outcome {
+    let scalar = format!("ball:{BITS} (grid), ball:{} (enclosures)", super::proven::BITS);
+    let Some(run) = runs.first() else {
+        return Outcome::failed(scalar, "Algorithm 2's loop did not run (phodcos.alg2.loop)");
+    };
+    let Some(true_error) = &run.returned else {
+        return Outcome::failed(scalar, "no enclosure of the returned path's error");
+    };
+    let grid_upper = run.grid_enclosure.upper();
+    if grid_upper >= true_error.lower {
+        return Outcome::new(
+            format!("n_s = {}: the grid error is not proven below the true error", run.segments),
+            scalar,
+            Verdict::Failed,
+            "the counterexample of reading 2 needs a grid error proven below the returned path's true error",
+        );
+    }
+    let Some((epsilon, digits)) = shortest_decimal_between(&grid_upper, &true_error.lower) else {
+        return Outcome::failed(scalar, "no decimal between the grid error and the true error");
+    };
+    let eps_text = crate::report::number::sig(epsilon.to_f64(), digits);
+    Outcome::new(
+        format!(
+            "ε′ = {eps_text}: the printed loop stops at n_s = {} (grid e = {} < ε′; every smaller count had grid e ≥ 10⁻³ > ε′) and returns a path with E ∈ {} > ε′",
+            run.segments,
+            crate::report::number::ball(&run.grid_enclosure, 8),
+            interval_text(true_error)
+        ),
+        scalar,
+        Verdict::Undetermined,
+        format!(
+            "two readings of the conversion error that Algorithm 2's loop compares with ε (clause 5). (1) E of Eq. (2), or a proven \
+             upper bound of it (phodcos.table1.proven): the loop returns only when it is below ε, and Theorem 1 makes the loop \
+             end, so the guarantee holds. (2) The error as the authors' code measures it, the largest distance over \
+             {PAPER_GRID_PER_SEGMENT}·n_s equally spaced ξ (phodcos.alg2.loop): a sampled maximum is a lower bound of E, and on curve \
+             (23) with n_s = {} it is proven below E; any tolerance between them (ε′, the shortest decimal strictly between the \
+             grid error's upper bound and E's lower bound, both proven in balls) stops the loop at a path that misses ε′, so the \
+             guarantee fails. One reading holds: undetermined",
+            run.segments
+        ),
+    )
+}
+
+/// Sec. 1 (second property), Sec. 2 and Sec. 7: the method "operates using closed-form
+/// analytical expressions, avoiding numerical or iterative processes". Per segment,
+/// Algorithm 1 is a fixed sequence of closed-form steps (phodcos.alg1.interpolates); the whole
+/// method, Algorithm 2, is a loop whose passes this counts.
+pub fn closed_form(runs: &[LoopRun]) -> Outcome {
+    let scalar = format!("ball:{BITS}");
+    if runs.len() != TOLERANCES.len() {
+        return Outcome::failed(scalar, "Algorithm 2's loop did not run (phodcos.alg2.loop)");
+    }
+    // Passes: conversions with n_s = 2, 3, …, segments.
+    let passes: Vec<String> = runs
+        .iter()
+        .map(|r| format!("ε = {:.0e}: {} passes", r.tolerance, r.segments.saturating_sub(1)))
+        .collect();
+    let iterates = runs.iter().any(|r| r.segments > 2);
+    Outcome::new(
+        format!(
+            "Algorithm 1 (one segment): closed form, no iteration; Algorithm 2 (the whole conversion) on curve (23): {}",
+            passes.join(", ")
+        ),
+        scalar,
+        if iterates { Verdict::Undetermined } else { Verdict::Reproduced },
+        format!(
+            "two readings (clause 5). (1) Each segment: Algorithm 1's steps are closed-form expressions of the Hermite data and the \
+             free parameters (Lemma 2's quaternion square roots, Eqs. 16–18), with no loop to convergence; it interpolates \
+             (phodcos.alg1.interpolates), so the reading holds. (2) The method as a whole: Algorithm 2 is a while-loop that \
+             converts with n_s = 2, 3, … segments until the conversion error, a numerical maximum over {PAPER_GRID_PER_SEGMENT}·n_s \
+             points, falls below ε; the passes are counted on the runs of phodcos.alg2.loop (the tolerances declared there), each \
+             loop test decided on proven enclosures: more than one pass means iteration, and the reading fails. No timing is checked"
         ),
     )
 }

@@ -110,7 +110,6 @@ pub struct Nrho {
     /// Proven upper bounds of the largest jumps of A…A″, R…R″, ω…ω″ at the joints of the
     /// roll-corrected rotating-frame conversion, or why they could not be computed.
     pub jumps_rotating: Result<Vec<f64>, String>,
-    pub spline: PeriodicSpline,
 }
 
 fn rational(x: f64) -> BigRational {
@@ -191,7 +190,6 @@ pub fn compute() -> Nrho {
         closure,
         velocity_misfit,
         jumps_rotating,
-        spline,
     }
 }
 
@@ -231,6 +229,12 @@ fn peaks(values: &[f64]) -> usize {
 
 /// Sidereal and synodic months in days.
 const MONTHS: (f64, f64) = (27.321662, 29.530589);
+
+/// The same months as decimals, read exactly.
+const MONTHS_TEXT: (&str, &str) = ("27.321662", "29.530589");
+
+/// The time unit in seconds, as an integer (exact arithmetic).
+const TU_S_INT: i64 = 382981;
 
 /// Fig. 4 D/E, "four highly nonlinear transitions per orbital period … clearly reflected in
 /// the parametric speed σ and the angular velocity ω": transitions counted in σ and ‖ω‖ of
@@ -274,7 +278,7 @@ pub fn transitions(n: &Nrho) -> Outcome {
     )
 }
 
-pub fn outcomes(n: &Nrho) -> [Outcome; 3] {
+pub fn outcomes(n: &Nrho) -> [Outcome; 2] {
     let er = n.error_rotating.certified();
     let ei = n.error_inertial.certified();
     let km = |c: &crate::scalar::certify::Certified| c.approx * LU_KM;
@@ -308,43 +312,113 @@ pub fn outcomes(n: &Nrho) -> [Outcome; 3] {
         ),
         Err(e) => Outcome::failed("ball:256", e),
     };
-    let days = n.period * TU_S / 86400.0;
-    let (sidereal, synodic) = MONTHS;
-    // Perilune passes per revolution: peaks of the spline's own speed over one period.
-    let sigma: Vec<f64> = (0..SEGMENTS * 8)
-        .map(|i| {
-            let t = n.period * i as f64 / (SEGMENTS * 8) as f64;
-            let d = Curve::<f64>::jet(&n.spline, &t, 1);
-            (d[1][0].powi(2) + d[1][1].powi(2) + d[1][2].powi(2)).sqrt()
-        })
-        .collect();
-    let passes = peaks(&sigma);
-    let per_synodic = passes as f64 * synodic / days;
-    let per_sidereal = passes as f64 * sidereal / days;
-    let res = Outcome::new(
-        format!("period {:.4} TU = {days:.3} d, {passes} perilune pass(es) per revolution: {per_synodic:.2} per synodic month, {per_sidereal:.2} per sidereal month", n.period),
-        "f64",
-        // "About four passes per lunar orbit" holds; "9:2 resonance" does not for the cited
-        // catalogue orbit: one sentence, one part contradicted (a discrepancy, minor).
-        if per_synodic.round() == 4.0 && per_sidereal.round() == 4.0 {
-            Verdict::Discrepancy
-        } else {
-            Verdict::Failed
-        },
-        "passes counted as the peaks of the spline's speed above half its maximum; criterion: about four per lunar orbit (rounds to 4 for both the synodic and the sidereal month): holds. The 9:2 resonance does not: a 9:2 NRHO has a period of 2/9 synodic month = 6.56 d and 4.5 passes per synodic month, while the catalogue orbit the paper's footnote cites (ID 95, the data) has the period printed here.",
-    );
     let conv = substituted(conv, "the NRHO conversion error, with no number printed");
     let cont = substituted(
         cont,
         "all parametric functions of the NRHO conversion at least C²",
     );
-    let computed = res.reproduced.clone();
-    let res = res.finding(
-        ("about four perilune passes per lunar orbit (9:2 resonance)", &computed, "about four passes holds; the cited orbit is not the 9:2 NRHO (6.56 d, 4.5 passes per synodic month)"),
-        crate::ledger::Severity::Minor,
-        "the orbit's figures and the method do not depend on the resonance's name",
+    [conv, cont]
+}
+
+/// Sec. 6A: "This occurs approximately four times for each lunar orbit, consistent with the
+/// 9:2 orbital resonance", counted on the data rows exactly: the perilune passes are the
+/// cyclic local minima of the squared distance to the Moon over the rows of one period, the
+/// period is the data's last time. Returns (about four passes, the 9:2 resonance).
+pub fn resonance() -> [Outcome; 2] {
+    let scalar = "rational";
+    let orbit = load();
+    let exact = |x: f64| BigRational::from_float(x);
+    let q = |s: &str| crate::scalar::parse::parse_rational(s).map_err(|e| e.to_string());
+    let computed = (|| -> Result<_, String> {
+        let (mu, one) = (exact(MU).ok_or("μ")?, BigRational::from_integer(1.into()));
+        let n = orbit.times.len().checked_sub(1).ok_or("the orbit's data have no rows")?;
+        let period = exact(orbit.times[n]).ok_or("the period is not finite")?;
+        // Rows 0 … n − 1: the last row repeats the first one period later.
+        let distances = orbit.states[..n]
+            .iter()
+            .map(|s| {
+                let r = [exact(s[0])? - &(one.clone() - &mu), exact(s[1])?, exact(s[2])?];
+                Some(r.iter().fold(BigRational::default(), |a, x| a + &(x.clone() * x)))
+            })
+            .collect::<Option<Vec<_>>>()
+            .ok_or("a data row is not finite")?;
+        let m = distances.len();
+        let passes = (0..m)
+            .filter(|&i| distances[i] < distances[(i + m - 1) % m] && distances[i] <= distances[(i + 1) % m])
+            .count();
+        let days = period.clone() * &BigRational::from_integer(TU_S_INT.into()) / &BigRational::from_integer(86400.into());
+        let (sidereal, synodic) = (q(MONTHS_TEXT.0)?, q(MONTHS_TEXT.1)?);
+        let count = BigRational::from_integer((passes as i64).into());
+        let per_synodic = count.clone() * &synodic / &days;
+        let per_sidereal = count * &sidereal / &days;
+        Ok((period, days, passes, per_synodic, per_sidereal, synodic))
+    })();
+    let (period, days, passes, per_synodic, per_sidereal, synodic) = match computed {
+        Ok(c) => c,
+        Err(e) => return [Outcome::failed(scalar, &e), Outcome::failed(scalar, e)],
+    };
+    let rounds_to_four = |x: &BigRational| {
+        let (lo, hi) = (BigRational::new(7.into(), 2.into()), BigRational::new(9.into(), 2.into()));
+        *x >= lo && *x < hi
+    };
+    let four = rounds_to_four(&per_synodic) && rounds_to_four(&per_sidereal);
+    let f = |x: &BigRational, d: u32| crate::report::number::sig(x.to_f64(), d);
+    let counted = format!(
+        "period {} TU = {} d, {passes} perilune pass(es) per revolution: {} per synodic month, {} per sidereal month",
+        f(&period, 8),
+        f(&days, 5),
+        f(&per_synodic, 4),
+        f(&per_sidereal, 4)
     );
-    [conv, cont, res]
+    let about_four = Outcome::new(
+        counted.clone(),
+        scalar,
+        Verdict::holds(four),
+        format!(
+            "the {} rows of the data (data/nrho_l2_halo.csv, the catalogue orbit of footnote 7, one period), every double read \
+             exactly; a perilune pass is a cyclic local minimum of the squared distance to the Moon at (1 − μ, 0, 0) over the rows of \
+             one period, compared exactly; days = period·{TU_S_INT} s/86400; months {} d (sidereal) and {} d (synodic). Criterion, \
+             declared: 'approximately four' holds when the passes per month round to 4 for both months. The 9:2 resonance the \
+             sentence adds is phodcos.sec6a.nine_two_resonance",
+            orbit.states.len(),
+            MONTHS_TEXT.0,
+            MONTHS_TEXT.1
+        ),
+    );
+    // p:q holds when the period is within 1 % of q/p synodic months (Reading 1), or the passes
+    // per synodic month within 1 % of p/q (Reading 2).
+    let nine_two_period = BigRational::new(2.into(), 9.into()) * &synodic;
+    let within_one_percent = |x: &BigRational, target: &BigRational| {
+        let deviation = (x.clone() - target).abs();
+        deviation * BigRational::from_integer(100.into()) <= target.clone()
+    };
+    let reading_1 = within_one_percent(&days, &nine_two_period);
+    let reading_2 = within_one_percent(&per_synodic, &BigRational::new(9.into(), 2.into()));
+    let percent = |x: &BigRational, t: &BigRational| f(&((x.clone() / t - BigRational::from_integer(1.into())) * BigRational::from_integer(100.into())), 3);
+    let fewer = f(
+        &((BigRational::from_integer(1.into()) - per_synodic.clone() / BigRational::new(9.into(), 2.into()))
+            * BigRational::from_integer(100.into())),
+        3,
+    );
+    let nine_two = Outcome::new(
+        format!(
+            "{counted}; a 9:2 orbit has 2/9 synodic month = {} d and 4.5 passes per synodic month: the period is {} % longer, the passes {} % fewer",
+            f(&nine_two_period, 5),
+            percent(&days, &nine_two_period),
+            fewer
+        ),
+        scalar,
+        match (reading_1, reading_2) {
+            (true, true) => Verdict::Reproduced,
+            (false, false) => Verdict::Discrepancy,
+            _ => Verdict::Undetermined,
+        },
+        "the same exact count (phodcos.sec6a.resonance). A p:q resonance (p NRHO revolutions per q synodic months, the Gateway \
+         NRHO's 9:2) holds, declared before computing, when |T·p/(q·T_syn) − 1| ≤ 1 %. Two readings (clause 5): (1) the plotted \
+         orbit is the 9:2 orbit: its period against 2/9 synodic month; (2) the observed count is what 9:2 gives: the passes per \
+         synodic month against 4.5. Conditional on the data file being the catalogue orbit the paper names (footnote 7, ID 95)",
+    );
+    [about_four, nine_two]
 }
 
 /// An illustration's finding: what the paper states, what was substituted.

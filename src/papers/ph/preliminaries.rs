@@ -662,3 +662,102 @@ pub fn constraint_counts() -> Outcome {
          quaternion coefficient of the degree-8 preimage; θ₀, θ₄, θ₈ and the six τ_k",
     )
 }
+
+/// A random rational quaternion (entries k/10, |k| ≤ 20).
+fn random_quat(rng: &mut SplitMix64) -> Quat<BigRational> {
+    let mut c = || BigRational::new(rng.int(-20, 20).into(), 10.into());
+    Quat::new(c(), c(), c(), c())
+}
+
+/// Sec. 5B: "increasing the order to 8 guarantees the existence of a solution for any
+/// interpolation data". The hodograph p′ = A i A* of the degree-8 preimage has Bernstein
+/// coefficients h_0 = A_0 ⋆ A_0 and h_1 = A_0 ⋆ A_1 at the start, so v_b is a multiple of h_0
+/// and a_b of h_1 − h_0: with |h_0| = |A_0|², v_b = 0 forces A_0 = 0, then h_1 = 0 and a_b = 0. Checked exactly on random quaternions, and the
+/// library's Algorithm 1 on data with v_b = 0, a_b ≠ 0.
+pub fn existence_any_data() -> Outcome {
+    let scalar = "rational";
+    let mut rng = SplitMix64::new(0x5b08);
+    let zero = Quat::<BigRational>::zero(&());
+    let norm2 = |v: &[BigRational; 3]| v.iter().fold(BigRational::default(), |a, x| a + &(x.clone() * x));
+    let mut identity_holds = true;
+    let mut second_vanishes = true;
+    for _ in 0..20 {
+        let (a0, a1) = (random_quat(&mut rng), random_quat(&mut rng));
+        // |A ⋆ A| = |A|²: the squared norms agree exactly.
+        let n = a0.norm2();
+        identity_holds &= norm2(&a0.star_square()) == n.clone() * &n;
+        // With A_0 = 0: h_0 = 0 ⋆ 0 and h_1 = 0 ⋆ A_1 vanish for every A_1.
+        second_vanishes &= norm2(&zero.star_square()) == BigRational::default()
+            && norm2(&zero.star(&a1)) == BigRational::default();
+    }
+    let mut data = random_data(&mut rng);
+    data.start[0] = [BigRational::default(), BigRational::default(), BigRational::default()];
+    data.start[1] = [BigRational::from_integer(1.into()), BigRational::default(), BigRational::default()];
+    let refusal = match interpolate(&into::<Ball>(&data, &BITS), &FreeParameters::zero(4, &BITS)) {
+        Ok(_) => "returned a curve".to_string(),
+        Err(e) => e.to_string(),
+    };
+    Outcome::new(
+        format!(
+            "|A ⋆ A| = |A|² on 20 random quaternions: {identity_holds}; with A_0 = 0, h_0 = h_1 = 0 for 20 random A_1: {second_vanishes}; \
+             Algorithm 1 on data with v_b = 0, a_b = (1, 0, 0): {refusal}"
+        ),
+        scalar,
+        if identity_holds && second_vanishes { Verdict::Undetermined } else { Verdict::Failed },
+        "two readings (clause 5). (1) Regular data, v_b ≠ 0 and v_e ≠ 0 (and v_b + v_e ≠ 0, Definition 3): every step of \
+         Algorithm 1 is solvable and the interpolant meets all ten vectors (phodcos.alg1.interpolates, 40 data sets): holds. \
+         (2) Literally any C⁴ data: v_b is a multiple of h_0 = A_0 ⋆ A_0, |h_0| = |A_0|², so v_b = 0 forces A_0 = 0; then h_1 = A_0 ⋆ A_1 = 0 and \
+         p″(0), a multiple of h_1 − h_0, is 0: data with v_b = 0 and a_b ≠ 0 have no PH interpolant of this form, whatever the \
+         order, and the library's Algorithm 1 refuses them. Exact rational arithmetic; fails. One reading holds",
+    )
+}
+
+/// Sec. 5A, Eq. (14): "C² in all parametric functions is equivalent to C³ in the preimage …
+/// {σ, R, ω} ∈ C² ⇒ A ∈ C³ ⇒ p ∈ C⁴". The converse of A ∈ C³ ⇒ {σ, R, ω} ∈ C², on the
+/// preimage A(ξ) = f(ξ)A₀ with f = 1 for ξ ≤ ½ and f = 1 + c(ξ − ½)³ after: R and ω are those
+/// of the constant A₀ (a scalar factor changes neither), σ = f²|A₀|² is C², and A‴ jumps by
+/// 6cA₀. One-sided Taylor coefficients at ½, exactly.
+pub fn continuity_chain() -> Outcome {
+    let scalar = "rational";
+    let q = |n: i64| BigRational::from_integer(n.into());
+    let (c, a0) = (q(1), Quat::new(q(1), q(2), q(0), q(1)));
+    // Taylor coefficients at x = ξ − ½ up to x⁶: left f = 1, right f = 1 + c x³.
+    let left_f = vec![q(1), q(0), q(0), q(0), q(0), q(0), q(0)];
+    let mut right_f = left_f.clone();
+    right_f[3] = c.clone();
+    let square = |f: &[BigRational]| -> Vec<BigRational> {
+        (0..f.len())
+            .map(|k| (0..=k).fold(q(0), |a, i| a + &(f[i].clone() * &f[k - i])))
+            .collect()
+    };
+    let sigma = |f: &[BigRational]| -> Vec<BigRational> {
+        square(f).into_iter().map(|x| x * &a0.norm2()).collect()
+    };
+    // The k-th derivative is k!·coefficient; a jump of order k is the difference of the two.
+    let factorial = |k: usize| (1..=k as i64).fold(q(1), |a, i| a * &q(i));
+    let jumps = |l: &[BigRational], r: &[BigRational]| -> Vec<BigRational> {
+        (0..4).map(|k| (r[k].clone() - &l[k]) * &factorial(k)).collect()
+    };
+    let sigma_jumps = jumps(&sigma(&left_f), &sigma(&right_f));
+    let f_jumps = jumps(&left_f, &right_f);
+    let a_jump3: Vec<BigRational> = a0.components().iter().map(|x| x.clone() * &f_jumps[3]).collect();
+    let sigma_c2 = sigma_jumps[..3].iter().all(|x| *x == q(0));
+    let a_not_c3 = a_jump3.iter().any(|x| *x != q(0));
+    let text = |v: &[BigRational]| v.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(", ");
+    Outcome::new(
+        format!(
+            "A = f·A₀, A₀ = (1, 2, 0, 1), f = 1 + (ξ − ½)₊³: jumps of σ, σ′, σ″, σ‴ at ½: {}; R and ω those of the constant A₀ \
+             (no jump); A‴ jumps by ({}): {{σ, R, ω}} ∈ C² but A ∉ C³",
+            text(&sigma_jumps),
+            text(&a_jump3)
+        ),
+        scalar,
+        if sigma_c2 && a_not_c3 { Verdict::Undetermined } else { Verdict::Failed },
+        "two readings (clause 5). (1) The sufficient direction the method uses, A ∈ C³ ⇒ {σ, R, ω} ∈ C² and p ∈ C⁴: holds \
+         (phodcos.sec5e.continuity, proven on the conversion with the roll correction). (2) As printed, an equivalence and a \
+         chain of implications from {σ, R, ω}: fails twice — the preimage here (exact one-sided Taylor coefficients at ½; a \
+         scalar factor leaves the unit quaternion A/|A|, hence R and ω, unchanged) has σ, R, ω ∈ C² and A‴ jumping; and p ∈ C⁴ \
+         does not give A ∈ C³: without the roll correction the conversion's p is unchanged while A jumps at the joints \
+         (phodcos.sec5e.continuity). One reading holds",
+    )
+}
