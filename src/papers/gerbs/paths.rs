@@ -855,7 +855,7 @@ pub fn abstract_midpoints() -> Outcome {
         .collect();
     Outcome::new(
         format!(
-            "|p(t_k) − c_k(1/2)| at each local curve's knot: interior arcs ≤ {}; {}",
+            "|p(t_k) − c_k(1/2)| at each local curve's knot: interior arcs {}; {}",
             upper(arcs_bound.abs_upper()),
             listing.join(", ")
         ),

@@ -5,7 +5,9 @@
 use super::super::{Outcome, Verdict};
 use crate::algo::hermite::HermiteData;
 use crate::numeric::poly::differences::{anti_difference, backward_anti_difference};
+use crate::numeric::maximum::{mean_value, midpoint, proven_range, SearchOptions};
 use crate::numeric::poly::{binomial, Bernstein};
+use crate::scalar::ball::Ball;
 use crate::scalar::{BigRational, Field};
 
 type Q = BigRational;
@@ -128,37 +130,53 @@ pub fn order_count() -> Outcome {
     )
 }
 
-/// The extremes of x″ over [0, T] of an exact curve, sampled at 1001 points in rationals.
-fn acceleration_range(c: &Bernstein<Q>) -> (Q, Q) {
-    let a = c.nth_derivative(2);
-    let (t0, t1) = (a.t0().clone(), a.t1().clone());
-    (0..=1000)
-        .map(|i| a.eval(&(t0.clone() + (t1.clone() - &t0) * Q::new(i.into(), 1000.into()))))
-        .fold((q(0), q(0)), |(lo, hi), v| {
-            (
-                if v < lo { v.clone() } else { lo },
-                if v > hi { v } else { hi },
-            )
-        })
+/// Precision of the proven acceleration ranges (bits).
+const RANGE_BITS: u32 = 128;
+
+/// Proven enclosures of min and max of x″ over [t0, t1] of an exact curve: the curve's
+/// control points as exact balls, branch and bound with the mean-value form
+/// x″(m) + x‴(X)(X − m) (de Casteljau's evaluation over a box encloses the polynomial there).
+fn acceleration_range(c: &Bernstein<Q>) -> Result<(Ball, Ball), String> {
+    let to_balls = |b: &Bernstein<Q>| {
+        let points = b.control_points().iter().map(|q| Ball::from_rational(q, &RANGE_BITS)).collect();
+        let (t0, t1) = (Ball::from_rational(b.t0(), &RANGE_BITS), Ball::from_rational(b.t1(), &RANGE_BITS));
+        Bernstein::new(points, t0, t1).map_err(|e| e.to_string())
+    };
+    let (second, third) = (to_balls(&c.nth_derivative(2))?, to_balls(&c.nth_derivative(3))?);
+    let f = |x: &Ball| Ok(mean_value(&second.eval(&midpoint(x)), &third.eval(x), x));
+    let (start, end) = (second.t0().mid().clone(), second.t1().mid().clone());
+    let options = SearchOptions { tolerance: 1e-15, bits: RANGE_BITS, ..SearchOptions::default() };
+    let (min, max) = proven_range(f, &start, &end, &options).map_err(|e| e.to_string())?;
+    Ok((min.ball(), max.ball()))
 }
 
 /// Fig. 2: "the lower duration curve must have … larger acceleration (and deceleration)".
 pub fn shorter_accelerates_more(fast: &Bernstein<Q>, slow: &Bernstein<Q>) -> Outcome {
-    let ((f_lo, f_hi), (s_lo, s_hi)) = (acceleration_range(fast), acceleration_range(slow));
-    let holds = f_hi > s_hi && f_lo < s_lo;
-    let f = |x: &Q| x.to_f64();
+    let scalar = format!("rational, ball:{RANGE_BITS}");
+    let ranges = acceleration_range(fast).and_then(|f| Ok((f, acceleration_range(slow)?)));
+    let ((f_lo, f_hi), (s_lo, s_hi)) = match ranges {
+        Ok(r) => r,
+        Err(e) => return Outcome::failed(scalar, e),
+    };
+    let (larger, deeper) = (s_hi.decide_lt(&f_hi), f_lo.decide_lt(&s_lo));
+    let verdict = match (larger, deeper) {
+        (Some(a), Some(b)) => Verdict::holds(a && b),
+        _ => Verdict::Failed,
+    };
+    let b = |x: &Ball| crate::report::number::ball(x, 9);
     Outcome::new(
         format!(
             "duration 1: x″ from {} to {}; duration 2: from {} to {}",
-            f(&f_lo),
-            f(&f_hi),
-            f(&s_lo),
-            f(&s_hi)
+            b(&f_lo),
+            b(&f_hi),
+            b(&s_lo),
+            b(&s_hi)
         ),
-        "rational",
-        if holds { Verdict::Reproduced } else { Verdict::Discrepancy },
-        "the exact Fig. 2 curves (H = [0 0 0 | 1 1 0]); x″ evaluated exactly at 1001 equally spaced times of each interval; criterion: the \
-         shorter curve's largest acceleration is larger and its largest deceleration (most negative x″) more negative",
+        scalar,
+        verdict,
+        "the exact Fig. 2 curves (H = [0 0 0 | 1 1 0]); the extremes of x″ over each whole interval enclosed by ball branch and \
+         bound (nothing sampled); criterion: the shorter curve's largest acceleration is larger and its largest deceleration \
+         (most negative x″) more negative, each comparison decided on disjoint enclosures",
     )
 }
 
