@@ -255,7 +255,10 @@ pub fn algorithm2() -> (Outcome, Outcome, Outcome, Vec<Vec<String>>) {
                 let speed = min_speed(&bfbs_path::<Ball>(&HI, conv), HI);
                 kappa_ok &= speed.is_some();
                 speeds.push(speed.map_or("not bounded away from 0".into(), |v| {
-                    format!("≥ {}", crate::report::number::bound(v, 4, rug::float::Round::Down))
+                    format!(
+                        "≥ {}",
+                        crate::report::number::bound(v, 4, rug::float::Round::Down)
+                    )
                 }));
             }
             table.push(algorithm2_row(kind, name, &data));

@@ -187,9 +187,11 @@ pub fn derivatives_vanish() -> Outcome {
         let bits = 128u32;
         let knots = fig1_knots::<Ball>(&bits);
         let r = |n: i64, d: i64| Ball::from_ratio(n, d, &bits);
-        let params = ErbsParams::new(r(1, 1), r(1, 1), r(1, 1), r(0, 1), r(1, 1)).map_err(|e| e.to_string())?;
+        let params = ErbsParams::new(r(1, 1), r(1, 1), r(1, 1), r(0, 1), r(1, 1))
+            .map_err(|e| e.to_string())?;
         // Only the kernel Ψ_j is used: the normalizer is what this check encloses itself.
-        let erbs = Erbs::with_normalizers(&knots, vec![params], CentreReading::Cited, |_, _| r(1, 1));
+        let erbs =
+            Erbs::with_normalizers(&knots, vec![params], CentreReading::Cited, |_, _| r(1, 1));
         let j = 3; // [t_3, t_4] = [1/4, 1/2]: the interval on which B_4 rises
         let h = knots.at(j + 1).clone() - knots.at(j);
         const PIECES: i64 = 4000;
@@ -252,10 +254,15 @@ fn bfbs_flat_orders() -> Result<usize, String> {
                 continue;
             };
             // A basis function whose support ends (or starts) here: value 0, not the zero series.
-            for b in d.iter().filter(|b| b[0] == zero && b.iter().any(|x| *x != zero)) {
+            for b in d
+                .iter()
+                .filter(|b| b[0] == zero && b.iter().any(|x| *x != zero))
+            {
                 let flat = b.iter().take_while(|x| **x == zero).count() - 1;
                 if flat != 2 {
-                    return Err(format!("a BFBS basis function is flat through order {flat} at a support end"));
+                    return Err(format!(
+                        "a BFBS basis function is flat through order {flat} at a support end"
+                    ));
                 }
                 checks += 1;
             }

@@ -4,8 +4,8 @@
 
 use super::super::{Outcome, Verdict};
 use crate::algo::hermite::HermiteData;
-use crate::numeric::poly::differences::{anti_difference, backward_anti_difference};
 use crate::numeric::maximum::{mean_value, midpoint, proven_range, SearchOptions};
+use crate::numeric::poly::differences::{anti_difference, backward_anti_difference};
 use crate::numeric::poly::{binomial, Bernstein};
 use crate::scalar::ball::Ball;
 use crate::scalar::{BigRational, Field};
@@ -138,14 +138,28 @@ const RANGE_BITS: u32 = 128;
 /// x″(m) + x‴(X)(X − m) (de Casteljau's evaluation over a box encloses the polynomial there).
 fn acceleration_range(c: &Bernstein<Q>) -> Result<(Ball, Ball), String> {
     let to_balls = |b: &Bernstein<Q>| {
-        let points = b.control_points().iter().map(|q| Ball::from_rational(q, &RANGE_BITS)).collect();
-        let (t0, t1) = (Ball::from_rational(b.t0(), &RANGE_BITS), Ball::from_rational(b.t1(), &RANGE_BITS));
+        let points = b
+            .control_points()
+            .iter()
+            .map(|q| Ball::from_rational(q, &RANGE_BITS))
+            .collect();
+        let (t0, t1) = (
+            Ball::from_rational(b.t0(), &RANGE_BITS),
+            Ball::from_rational(b.t1(), &RANGE_BITS),
+        );
         Bernstein::new(points, t0, t1).map_err(|e| e.to_string())
     };
-    let (second, third) = (to_balls(&c.nth_derivative(2))?, to_balls(&c.nth_derivative(3))?);
+    let (second, third) = (
+        to_balls(&c.nth_derivative(2))?,
+        to_balls(&c.nth_derivative(3))?,
+    );
     let f = |x: &Ball| Ok(mean_value(&second.eval(&midpoint(x)), &third.eval(x), x));
     let (start, end) = (second.t0().mid().clone(), second.t1().mid().clone());
-    let options = SearchOptions { tolerance: 1e-15, bits: RANGE_BITS, ..SearchOptions::default() };
+    let options = SearchOptions {
+        tolerance: 1e-15,
+        bits: RANGE_BITS,
+        ..SearchOptions::default()
+    };
     let (min, max) = proven_range(f, &start, &end, &options).map_err(|e| e.to_string())?;
     Ok((min.ball(), max.ball()))
 }

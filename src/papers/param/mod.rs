@@ -146,25 +146,7 @@ pub fn verify() -> PaperOutput {
     ledger.record("marin.eq30.always_improves", sentences::always_improves());
     ledger.record("marin.case3.observations", sentences::case3_observations());
     ledger.record("marin.eq13.extremum_index", sentences::extremum_index());
-    ledger.record(
-        "marin.table2.oscillations_centred",
-        sentences::table2_oscillations_centred(&plane.proven),
-    );
-    ledger.record(
-        "marin.sec2.oscillations_centred",
-        sentences::oscillations_centred(
-            &plane.proven,
-            [Some(&robot.chord_knots), robot.approx_knots.as_ref()],
-        ),
-    );
-    ledger.record(
-        "marin.sec1.chord_constant_speed",
-        remarks::chord_constant_speed(&plane.proven, &robot.chord_knots),
-    );
-    ledger.record("marin.sec2.cor3_fails_k2", remarks::cor3_fails_k2(&plane.proven));
-    ledger.record("marin.table7.ap_lowest", remarks::ap_lowest(&robot.from_printed));
-    ledger.record("marin.sec3.align_extrema", remarks::align_extrema());
-    ledger.record("marin.sec1.closer_to_polygon", remarks::closer_to_polygon(&plane.proven));
+    remark_checks(&mut ledger, &plane, &robot);
     ledger.record(
         "marin.fig34.x_most_pronounced",
         sentences::x_most_pronounced(&plane.proven),
@@ -194,6 +176,39 @@ pub fn verify() -> PaperOutput {
     };
     policy(&mut ledger);
     render::report(&results, ledger.finish())
+}
+
+/// The remarks judged on both examples (Table II and the robot): centring, constant speed,
+/// Corollary 3 for K > 1, Table VII's reductions, aligned extrema, closeness to the polygon.
+fn remark_checks(ledger: &mut Ledger, plane: &plane::PlaneSection, robot: &robot::RobotSection) {
+    ledger.record(
+        "marin.table2.oscillations_centred",
+        sentences::table2_oscillations_centred(&plane.proven),
+    );
+    ledger.record(
+        "marin.sec2.oscillations_centred",
+        sentences::oscillations_centred(
+            &plane.proven,
+            [Some(&robot.chord_knots), robot.approx_knots.as_ref()],
+        ),
+    );
+    ledger.record(
+        "marin.sec1.chord_constant_speed",
+        remarks::chord_constant_speed(&plane.proven, &robot.chord_knots),
+    );
+    ledger.record(
+        "marin.sec2.cor3_fails_k2",
+        remarks::cor3_fails_k2(&plane.proven),
+    );
+    ledger.record(
+        "marin.table7.ap_lowest",
+        remarks::ap_lowest(&robot.from_printed),
+    );
+    ledger.record("marin.sec3.align_extrema", remarks::align_extrema());
+    ledger.record(
+        "marin.sec1.closer_to_polygon",
+        remarks::closer_to_polygon(&plane.proven),
+    );
 }
 
 // The findings of paper 004, all minor: (claim, new verdict if the policy changes it, what

@@ -467,7 +467,9 @@ fn nearly_verdict(percents: &[Ball]) -> Verdict {
 }
 
 /// The x and y splines of Table II on the three proven parametrizations (t^CL, t^EX, t^AP).
-pub(super) fn plane_splines(proven: &Result<Vec<ProvenKnots>, String>) -> Result<[PlaneCurve; 3], String> {
+pub(super) fn plane_splines(
+    proven: &Result<Vec<ProvenKnots>, String>,
+) -> Result<[PlaneCurve; 3], String> {
     let knots = proven.as_ref().map_err(Clone::clone)?;
     let data = components::<Ball>(&proven_splines::BITS);
     let curves: Vec<PlaneCurve> = knots

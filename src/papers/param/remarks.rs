@@ -40,7 +40,10 @@ fn chord_total(components: &[Vec<Ball>]) -> Ball {
 }
 
 /// (min, max) of ‖θ′(t)‖ / L over [0, 1] for the natural spline of `data` on chord `knots`.
-fn relative_speed_range(knots: &ProvenKnots, data: &[Vec<BigRational>]) -> Result<(Ball, Ball), String> {
+fn relative_speed_range(
+    knots: &ProvenKnots,
+    data: &[Vec<BigRational>],
+) -> Result<(Ball, Ball), String> {
     let components: Vec<Vec<Ball>> = data.iter().map(|z| balls(z)).collect();
     let splines = components
         .iter()
@@ -53,11 +56,16 @@ fn relative_speed_range(knots: &ProvenKnots, data: &[Vec<BigRational>]) -> Resul
 
 /// Sec. 1: "it merely ensures that approximate constant speed is maintained", on the
 /// chord-length splines of Table II and of the robot data (Table IV).
-pub fn chord_constant_speed(plane: &Result<Vec<ProvenKnots>, String>, robot_chord: &ProvenKnots) -> Outcome {
+pub fn chord_constant_speed(
+    plane: &Result<Vec<ProvenKnots>, String>,
+    robot_chord: &ProvenKnots,
+) -> Outcome {
     let scalar = "ball:256";
     let computed = decided(|| {
         let plane = plane.as_ref().map_err(Clone::clone)?;
-        let plane_chord = plane.first().ok_or("no chord-length parametrization of Table II")?;
+        let plane_chord = plane
+            .first()
+            .ok_or("no chord-length parametrization of Table II")?;
         let examples = [
             ("Table II", plane_chord, components::<BigRational>(&())),
             ("robot (Table IV)", robot_chord, axes()),
@@ -128,7 +136,9 @@ pub fn cor3_fails_k2(plane: &Result<Vec<ProvenKnots>, String>) -> Outcome {
         Ok(_) => return Outcome::failed(scalar, "no minimizing parametrization of Table II"),
         Err(e) => return Outcome::failed(scalar, e),
     };
-    let fails = rows.iter().all(|(_, over, _, jumping)| *over > 0 || *jumping > 0);
+    let fails = rows
+        .iter()
+        .all(|(_, over, _, jumping)| *over > 0 || *jumping > 0);
     let listing: Vec<String> = rows
         .iter()
         .map(|(name, over, jumps, _)| {
@@ -159,7 +169,12 @@ pub fn ap_lowest(from_printed: &[Vec<BigRational>]) -> Outcome {
     let scalar = "rational";
     let [cl, wc, ap] = match from_printed {
         [cl, wc, ap] if [cl, wc, ap].iter().all(|c| c.len() == 6) => [cl, wc, ap],
-        _ => return Outcome::failed(scalar, "Table VII could not be computed (marin.table7.max_acceleration)"),
+        _ => {
+            return Outcome::failed(
+                scalar,
+                "Table VII could not be computed (marin.table7.max_acceleration)",
+            )
+        }
     };
     let two = BigRational::from_integer(2.into());
     let below_both = (0..6).filter(|&j| ap[j] < cl[j] && ap[j] < wc[j]).count();
@@ -168,7 +183,14 @@ pub fn ap_lowest(from_printed: &[Vec<BigRational>]) -> Outcome {
         .count();
     let ratio = |a: &BigRational, b: &BigRational| sig((a.clone() / b).to_f64(), 3);
     let ratios: Vec<String> = (0..6)
-        .map(|j| format!("axis {}: {}× / {}×", j + 1, ratio(&cl[j], &ap[j]), ratio(&wc[j], &ap[j])))
+        .map(|j| {
+            format!(
+                "axis {}: {}× / {}×",
+                j + 1,
+                ratio(&cl[j], &ap[j]),
+                ratio(&wc[j], &ap[j])
+            )
+        })
         .collect();
     Outcome::new(
         format!(
@@ -215,13 +237,16 @@ pub fn align_extrema() -> Outcome {
         Err(e) => return Outcome::failed(scalar, e),
     };
     let totals: Vec<usize> = excess.iter().map(|e| e.iter().sum()).collect();
-    let illustration = excess[2][FIG9_AXIS] == 0 && excess[0][FIG9_AXIS] > 0 && excess[1][FIG9_AXIS] > 0;
+    let illustration =
+        excess[2][FIG9_AXIS] == 0 && excess[0][FIG9_AXIS] > 0 && excess[1][FIG9_AXIS] > 0;
     let all_axes = totals[2] < totals[0] && totals[2] < totals[1];
     let listing: Vec<String> = NAMES
         .iter()
         .zip(&excess)
         .zip(&totals)
-        .map(|((name, e), total)| format!("{name}: {total} unaligned spline extrema (axes 1–6: {e:?})"))
+        .map(|((name, e), total)| {
+            format!("{name}: {total} unaligned spline extrema (axes 1–6: {e:?})")
+        })
         .collect();
     Outcome::new(
         listing.join("; "),
@@ -251,9 +276,16 @@ pub fn closer_to_polygon(plane: &Result<Vec<ProvenKnots>, String>) -> Outcome {
     let scalar = "ball:256";
     let computed = (|| {
         let curves = plane_splines(plane)?;
-        let names: Vec<&'static str> = plane.as_ref().map_err(Clone::clone)?.iter().map(|k| k.name).collect();
+        let names: Vec<&'static str> = plane
+            .as_ref()
+            .map_err(Clone::clone)?
+            .iter()
+            .map(|k| k.name)
+            .collect();
         let z = components::<Ball>(&BITS);
-        let vertices: Vec<[Ball; 2]> = (0..z[0].len()).map(|i| [z[0][i].clone(), z[1][i].clone()]).collect();
+        let vertices: Vec<[Ball; 2]> = (0..z[0].len())
+            .map(|i| [z[0][i].clone(), z[1][i].clone()])
+            .collect();
         let distances = curves
             .iter()
             .map(|c| max_distance_from_polygon(c, &vertices).map(|m| m.ball()))

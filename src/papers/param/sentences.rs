@@ -192,7 +192,11 @@ struct Centring {
 fn centring(knots: &[&ProvenKnots], data: &[Vec<Ball>]) -> Result<Centring, String> {
     let measures = knots
         .iter()
-        .map(|k| data.iter().map(|z| off_centre(k, z)).collect::<Result<Vec<_>, _>>())
+        .map(|k| {
+            data.iter()
+                .map(|z| off_centre(k, z))
+                .collect::<Result<Vec<_>, _>>()
+        })
         .collect::<Result<Vec<_>, String>>()?;
     let Some((chord, minimizers)) = measures.split_first() else {
         return Err("no chord-length spline".into());
@@ -205,7 +209,12 @@ fn centring(knots: &[&ProvenKnots], data: &[Vec<Ball>]) -> Result<Centring, Stri
         }
     }
     let total = data.len() * minimizers.len();
-    Ok(Centring { measures, better, worse, total })
+    Ok(Centring {
+        measures,
+        better,
+        worse,
+        total,
+    })
 }
 
 /// The verdict of one example: all more centred, reproduced; all less, discrepancy; else
@@ -246,7 +255,10 @@ pub fn table2_oscillations_centred(proven: &Result<Vec<ProvenKnots>, String>) ->
     let scalar = "ball:256";
     let computed = decided(|| {
         let proven: Vec<&ProvenKnots> = proven.as_ref().map_err(Clone::clone)?.iter().collect();
-        let data: Vec<Vec<Ball>> = components::<BigRational>(&()).iter().map(|z| balls(z)).collect();
+        let data: Vec<Vec<Ball>> = components::<BigRational>(&())
+            .iter()
+            .map(|z| balls(z))
+            .collect();
         Ok((centring(&proven, &data)?, proven))
     });
     let (c, knots) = match computed {
@@ -280,9 +292,15 @@ pub fn oscillations_centred(
             .iter()
             .map(|k| k.ok_or("our robot t^AP was not proven (marin.table6.approx)"))
             .collect::<Result<_, _>>()?;
-        let plane_data: Vec<Vec<Ball>> = components::<BigRational>(&()).iter().map(|z| balls(z)).collect();
+        let plane_data: Vec<Vec<Ball>> = components::<BigRational>(&())
+            .iter()
+            .map(|z| balls(z))
+            .collect();
         let robot_data: Vec<Vec<Ball>> = robot_axes().iter().map(|z| balls(z)).collect();
-        let examples = [centring(&plane, &plane_data)?, centring(&robot, &robot_data)?];
+        let examples = [
+            centring(&plane, &plane_data)?,
+            centring(&robot, &robot_data)?,
+        ];
         Ok((examples, plane, robot))
     });
     let ([table2, arm], plane, robot) = match computed {

@@ -170,8 +170,11 @@ fn shortest_decimal_between(low: &Float, high: &Float) -> Option<(BigRational, u
             BigRational::from_integer(scale)
         };
         let rounded = (mid.clone() / &unit).round() * &unit;
-        let inside = rounded > BigRational::from_float(low.to_f64_round(rug::float::Round::Up)).unwrap_or_default()
-            && rounded < BigRational::from_float(high.to_f64_round(rug::float::Round::Down)).unwrap_or_default();
+        let inside = rounded
+            > BigRational::from_float(low.to_f64_round(rug::float::Round::Up)).unwrap_or_default()
+            && rounded
+                < BigRational::from_float(high.to_f64_round(rug::float::Round::Down))
+                    .unwrap_or_default();
         inside.then_some((rounded, digits.unsigned_abs()))
     })
 }
@@ -185,7 +188,10 @@ fn shortest_decimal_between(low: &Float, high: &Float) -> Option<(BigRational, u
 /// from the ε = 10⁻³ run: every count before its n_s had grid error ≥ 10⁻³ > ε′, so the loop
 /// with ε′ stops at the same n_s.
 pub fn tolerance_guarantee(runs: &[LoopRun]) -> Outcome {
-    let scalar = format!("ball:{BITS} (grid), ball:{} (enclosures)", super::proven::BITS);
+    let scalar = format!(
+        "ball:{BITS} (grid), ball:{} (enclosures)",
+        super::proven::BITS
+    );
     let Some(run) = runs.first() else {
         return Outcome::failed(scalar, "Algorithm 2's loop did not run (phodcos.alg2.loop)");
     };
@@ -202,7 +208,10 @@ pub fn tolerance_guarantee(runs: &[LoopRun]) -> Outcome {
         );
     }
     let Some((epsilon, digits)) = shortest_decimal_between(&grid_upper, &true_error.lower) else {
-        return Outcome::failed(scalar, "no decimal between the grid error and the true error");
+        return Outcome::failed(
+            scalar,
+            "no decimal between the grid error and the true error",
+        );
     };
     let eps_text = crate::report::number::sig(epsilon.to_f64(), digits);
     Outcome::new(
@@ -239,7 +248,13 @@ pub fn closed_form(runs: &[LoopRun]) -> Outcome {
     // Passes: conversions with n_s = 2, 3, …, segments.
     let passes: Vec<String> = runs
         .iter()
-        .map(|r| format!("ε = {:.0e}: {} passes", r.tolerance, r.segments.saturating_sub(1)))
+        .map(|r| {
+            format!(
+                "ε = {:.0e}: {} passes",
+                r.tolerance,
+                r.segments.saturating_sub(1)
+            )
+        })
         .collect();
     let iterates = runs.iter().any(|r| r.segments > 2);
     Outcome::new(

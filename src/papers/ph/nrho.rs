@@ -331,22 +331,36 @@ pub fn resonance() -> [Outcome; 2] {
     let q = |s: &str| crate::scalar::parse::parse_rational(s).map_err(|e| e.to_string());
     let computed = (|| -> Result<_, String> {
         let (mu, one) = (exact(MU).ok_or("μ")?, BigRational::from_integer(1.into()));
-        let n = orbit.times.len().checked_sub(1).ok_or("the orbit's data have no rows")?;
+        let n = orbit
+            .times
+            .len()
+            .checked_sub(1)
+            .ok_or("the orbit's data have no rows")?;
         let period = exact(orbit.times[n]).ok_or("the period is not finite")?;
         // Rows 0 … n − 1: the last row repeats the first one period later.
         let distances = orbit.states[..n]
             .iter()
             .map(|s| {
-                let r = [exact(s[0])? - &(one.clone() - &mu), exact(s[1])?, exact(s[2])?];
-                Some(r.iter().fold(BigRational::default(), |a, x| a + &(x.clone() * x)))
+                let r = [
+                    exact(s[0])? - &(one.clone() - &mu),
+                    exact(s[1])?,
+                    exact(s[2])?,
+                ];
+                Some(
+                    r.iter()
+                        .fold(BigRational::default(), |a, x| a + &(x.clone() * x)),
+                )
             })
             .collect::<Option<Vec<_>>>()
             .ok_or("a data row is not finite")?;
         let m = distances.len();
         let passes = (0..m)
-            .filter(|&i| distances[i] < distances[(i + m - 1) % m] && distances[i] <= distances[(i + 1) % m])
+            .filter(|&i| {
+                distances[i] < distances[(i + m - 1) % m] && distances[i] <= distances[(i + 1) % m]
+            })
             .count();
-        let days = period.clone() * &BigRational::from_integer(TU_S_INT.into()) / &BigRational::from_integer(86400.into());
+        let days = period.clone() * &BigRational::from_integer(TU_S_INT.into())
+            / &BigRational::from_integer(86400.into());
         let (sidereal, synodic) = (q(MONTHS_TEXT.0)?, q(MONTHS_TEXT.1)?);
         let count = BigRational::from_integer((passes as i64).into());
         let per_synodic = count.clone() * &synodic / &days;
@@ -358,7 +372,10 @@ pub fn resonance() -> [Outcome; 2] {
         Err(e) => return [Outcome::failed(scalar, &e), Outcome::failed(scalar, e)],
     };
     let rounds_to_four = |x: &BigRational| {
-        let (lo, hi) = (BigRational::new(7.into(), 2.into()), BigRational::new(9.into(), 2.into()));
+        let (lo, hi) = (
+            BigRational::new(7.into(), 2.into()),
+            BigRational::new(9.into(), 2.into()),
+        );
         *x >= lo && *x < hi
     };
     let four = rounds_to_four(&per_synodic) && rounds_to_four(&per_sidereal);
@@ -394,9 +411,16 @@ pub fn resonance() -> [Outcome; 2] {
     };
     let reading_1 = within_one_percent(&days, &nine_two_period);
     let reading_2 = within_one_percent(&per_synodic, &BigRational::new(9.into(), 2.into()));
-    let percent = |x: &BigRational, t: &BigRational| f(&((x.clone() / t - BigRational::from_integer(1.into())) * BigRational::from_integer(100.into())), 3);
+    let percent = |x: &BigRational, t: &BigRational| {
+        f(
+            &((x.clone() / t - BigRational::from_integer(1.into()))
+                * BigRational::from_integer(100.into())),
+            3,
+        )
+    };
     let fewer = f(
-        &((BigRational::from_integer(1.into()) - per_synodic.clone() / BigRational::new(9.into(), 2.into()))
+        &((BigRational::from_integer(1.into())
+            - per_synodic.clone() / BigRational::new(9.into(), 2.into()))
             * BigRational::from_integer(100.into())),
         3,
     );

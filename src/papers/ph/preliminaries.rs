@@ -678,7 +678,10 @@ pub fn existence_any_data() -> Outcome {
     let scalar = "rational";
     let mut rng = SplitMix64::new(0x5b08);
     let zero = Quat::<BigRational>::zero(&());
-    let norm2 = |v: &[BigRational; 3]| v.iter().fold(BigRational::default(), |a, x| a + &(x.clone() * x));
+    let norm2 = |v: &[BigRational; 3]| {
+        v.iter()
+            .fold(BigRational::default(), |a, x| a + &(x.clone() * x))
+    };
     let mut identity_holds = true;
     let mut second_vanishes = true;
     for _ in 0..20 {
@@ -691,8 +694,16 @@ pub fn existence_any_data() -> Outcome {
             && norm2(&zero.star(&a1)) == BigRational::default();
     }
     let mut data = random_data(&mut rng);
-    data.start[0] = [BigRational::default(), BigRational::default(), BigRational::default()];
-    data.start[1] = [BigRational::from_integer(1.into()), BigRational::default(), BigRational::default()];
+    data.start[0] = [
+        BigRational::default(),
+        BigRational::default(),
+        BigRational::default(),
+    ];
+    data.start[1] = [
+        BigRational::from_integer(1.into()),
+        BigRational::default(),
+        BigRational::default(),
+    ];
     let refusal = match interpolate(&into::<Ball>(&data, &BITS), &FreeParameters::zero(4, &BITS)) {
         Ok(_) => "returned a curve".to_string(),
         Err(e) => e.to_string(),
@@ -736,14 +747,25 @@ pub fn continuity_chain() -> Outcome {
     // The k-th derivative is k!·coefficient; a jump of order k is the difference of the two.
     let factorial = |k: usize| (1..=k as i64).fold(q(1), |a, i| a * &q(i));
     let jumps = |l: &[BigRational], r: &[BigRational]| -> Vec<BigRational> {
-        (0..4).map(|k| (r[k].clone() - &l[k]) * &factorial(k)).collect()
+        (0..4)
+            .map(|k| (r[k].clone() - &l[k]) * &factorial(k))
+            .collect()
     };
     let sigma_jumps = jumps(&sigma(&left_f), &sigma(&right_f));
     let f_jumps = jumps(&left_f, &right_f);
-    let a_jump3: Vec<BigRational> = a0.components().iter().map(|x| x.clone() * &f_jumps[3]).collect();
+    let a_jump3: Vec<BigRational> = a0
+        .components()
+        .iter()
+        .map(|x| x.clone() * &f_jumps[3])
+        .collect();
     let sigma_c2 = sigma_jumps[..3].iter().all(|x| *x == q(0));
     let a_not_c3 = a_jump3.iter().any(|x| *x != q(0));
-    let text = |v: &[BigRational]| v.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(", ");
+    let text = |v: &[BigRational]| {
+        v.iter()
+            .map(|x| x.to_string())
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
     Outcome::new(
         format!(
             "A = f·A₀, A₀ = (1, 2, 0, 1), f = 1 + (ξ − ½)₊³: jumps of σ, σ′, σ″, σ‴ at ½: {}; R and ω those of the constant A₀ \
