@@ -116,7 +116,7 @@ fn error_search(c: &mut Criterion) {
                 false,
             )
             .expect("converts");
-            proven_error(&cb, &pw, 1e-6, 1_000_000)
+            proven_error(&cb, &pw, 1e-6, 1_000_000).expect("a positive target")
         })
     });
     g.finish();

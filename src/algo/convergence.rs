@@ -102,6 +102,10 @@ pub enum Method {
 /// proven enclosure's Taylor models cover.
 pub const MAX_HERMITE_DERIVATIVES: usize = (crate::curve::enclosure::ORDER - 1) / 2;
 
+/// The precisions a study accepts (bits): MPFR's floor, and a ceiling that keeps a study of
+/// nine levels, proven, within minutes (its cost grows about as bits²).
+pub const STUDY_BITS: (u32, u32) = (16, 4096);
+
 /// How smooth the curve is, which caps the order any method can show on it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Smoothness {
@@ -342,6 +346,9 @@ pub enum StudyError {
     /// b ≤ a.
     #[error("need a < b")]
     Interval,
+    /// A precision outside [`STUDY_BITS`].
+    #[error("{0}")]
+    Bits(String),
     /// The curve is not regular on the interval.
     #[error(transparent)]
     Irregular(#[from] Irregular),
@@ -521,6 +528,8 @@ pub fn check_levels(levels: &[u32]) -> Result<(), StudyError> {
 ///
 /// # Errors
 /// [`StudyError::Interval`] unless a < b; [`StudyError::Levels`] as [`check_levels`];
+/// [`StudyError::Bits`] for a precision outside [`STUDY_BITS`]; [`StudyError::Method`] for
+/// [`Method::Hermite`] above [`MAX_HERMITE_DERIVATIVES`];
 /// [`StudyError::Irregular`] when the regularity check fails (except `BeyondBallRange` without
 /// a proof); [`StudyError::Failed`] when a level's MPFR conversion (at `bits` or `2·bits`) or,
 /// with a proof, its ball conversion fails. A failing f64 conversion is not an error.
@@ -534,7 +543,21 @@ pub fn study<C: StudyCurve + ?Sized>(
         return Err(StudyError::Interval);
     }
     check_levels(&options.levels)?;
+    let (low, high) = STUDY_BITS;
+    if !(low..=high).contains(&options.bits) {
+        return Err(StudyError::Bits(format!(
+            "bits: the precision must lie in {low}…{high}, got {}",
+            options.bits
+        )));
+    }
     let method = options.method;
+    if let Method::Hermite(m) = method {
+        if m > MAX_HERMITE_DERIVATIVES {
+            return Err(StudyError::Method(format!(
+                "method: hermite:{m} has more than {MAX_HERMITE_DERIVATIVES} derivatives per joint"
+            )));
+        }
+    }
     let regularity = match curve.regularity((a, b), method.derivatives(), options.bits) {
         // Balls cannot enclose such values; without a proof MPFR carries them, and a
         // non-finite jet still stops the conversion at its joint.
@@ -622,7 +645,8 @@ fn level<C: StudyCurve + ?Sized>(
         let pw = method
             .fit(&*c, (&a, &b), segments)
             .map_err(failed("ball conversion"))?;
-        let e = proven_error(&*c, &pw, TARGET_WIDTH, MAX_BOXES);
+        let e = proven_error(&*c, &pw, TARGET_WIDTH, MAX_BOXES)
+            .map_err(|e| failed("proven error")(e.to_string()))?;
         Some((e.lower, e.upper))
     } else {
         None

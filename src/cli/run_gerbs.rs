@@ -633,15 +633,16 @@ impl PathJob {
         waypoints: &[[T; 2]],
         ctx: &T::Ctx,
         length: Option<T>,
-    ) -> Out<T> {
-        let samples = path.sample(self.samples);
+    ) -> Result<Out<T>, RunError> {
+        let samples = path.sample(self.samples).map_err(gerbs_error)?;
         let n = self.waypoints.len();
         let at_knots: Vec<_> = (0..n)
             .map(|i| {
                 // The knot t_{i+2} of waypoint i + 1 (from the inside at the ends).
                 path.at_knot(i + 2, if i + 1 == n { Side::Left } else { Side::Right })
             })
-            .collect();
+            .collect::<Result<_, _>>()
+            .map_err(gerbs_error)?;
         // Mathematical zeros print as 0 (noise_level): coordinates next to the largest
         // waypoint coordinate, tangents next to the largest tangent, curvature next to 1/R.
         // Each is also marked as a possible zero with its scale, so a value below the
@@ -677,7 +678,7 @@ impl PathJob {
                 ])
             })
             .collect();
-        Out::object(vec![
+        Ok(Out::object(vec![
             (
                 "t",
                 Out::nums(samples.iter().map(|p| p.t.clone()).collect()),
@@ -712,7 +713,7 @@ impl PathJob {
                         .collect(),
                 ),
             ),
-        ])
+        ]))
     }
 }
 
@@ -738,22 +739,22 @@ impl RealJob for PathJob {
         match &self.params {
             BasisParams::Bfbs(i) => {
                 let bfbs = Bfbs::new(i.clone()).map_err(gerbs_error)?;
-                Ok(self.out(
+                self.out(
                     &GerbsPath::new(&spec, bfbs).map_err(gerbs_error)?,
                     &spec.waypoints,
                     ctx,
                     None,
-                ))
+                )
             }
             BasisParams::Erbs { sets, centre } => {
                 let knots = Knots::uniform(spec.waypoints.len(), ctx).map_err(gerbs_error)?;
                 let erbs = BasisParams::erbs(sets, *centre, &knots, ctx)?;
-                Ok(self.out(
+                self.out(
                     &GerbsPath::new(&spec, erbs).map_err(gerbs_error)?,
                     &spec.waypoints,
                     ctx,
                     None,
-                ))
+                )
             }
         }
     }
@@ -797,14 +798,14 @@ impl PathJob {
                 let path = GerbsPath::new(spec, Bfbs::new(i.clone()).map_err(gerbs_error)?)
                     .map_err(gerbs_error)?;
                 let length = path.proven_length(options).map_err(gerbs_error)?;
-                Ok(self.out(&path, &spec.waypoints, &bits, Some(length)))
+                self.out(&path, &spec.waypoints, &bits, Some(length))
             }
             BasisParams::Erbs { sets, centre } => {
                 let knots = Knots::uniform(spec.waypoints.len(), &bits).map_err(gerbs_error)?;
                 let erbs = BasisParams::proven_erbs(sets, *centre, &knots, bits)?;
                 let path = GerbsPath::new(spec, erbs).map_err(gerbs_error)?;
                 let length = path.proven_length(options).map_err(gerbs_error)?;
-                Ok(self.out(&path, &spec.waypoints, &bits, Some(length)))
+                self.out(&path, &spec.waypoints, &bits, Some(length))
             }
         }
     }

@@ -337,7 +337,8 @@ impl PhodcosJob {
         // alone: it is searched on the conversion before the roll, whose balls the chained
         // rotations do not widen; the printed preimages are that conversion rolled.
         let mut pw = convert(&c, &a, &b, n, 4, &free, false).map_err(ph_error)?;
-        let e = proven_error_until(&c, &pw, 1e-6, 4_000_000, Some(budget::search_deadline()));
+        let e = proven_error_until(&c, &pw, 1e-6, 4_000_000, Some(budget::search_deadline()))
+            .map_err(|e| RunError::Internal(e.to_string()))?;
         pw.align_roll();
         Ok(Out::object(vec![
             ("segments", Out::Int(n as i64)),
@@ -514,7 +515,8 @@ impl ProvenJob for ConvergenceJob {
             check_finite(&c, &a, &b, segments)?;
             // The error depends on positions only, which the roll correction leaves alone.
             let pw = convert(&c, &a, &b, segments, 4, &free, false).map_err(ph_error)?;
-            let e = proven_error_until(&c, &pw, 1e-6, 4_000_000, Some(budget::search_deadline()));
+            let e = proven_error_until(&c, &pw, 1e-6, 4_000_000, Some(budget::search_deadline()))
+                .map_err(|e| RunError::Internal(e.to_string()))?;
             Ok(Out::MaybeZero(
                 Ball::from_bounds(&e.lower, &e.upper),
                 Ball::zero_in(&bits),

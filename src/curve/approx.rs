@@ -148,6 +148,7 @@ impl<T: Real> ParamCurve<T, 3> for PiecewiseBernstein<T> {
         (self.a.clone(), self.b.clone())
     }
     fn derivatives(&self, t: &T, order: usize) -> Result<Vec<[T; 3]>, CurveError> {
+        crate::curve::parametric::check_order(order)?;
         pieces_derivatives(self, t, order)
     }
     fn breakpoints(&self) -> Vec<T> {

@@ -41,6 +41,9 @@ impl<T: Field, const D: usize> BezierCurve<T, D> {
         if !(t0.is_finite() && t1.is_finite() && t0 < t1) {
             return Err(BernsteinError::Interval);
         }
+        if let Some(i) = points.iter().position(|p| !p.iter().all(Field::is_finite)) {
+            return Err(BernsteinError::NotFinite(i));
+        }
         Ok(BezierCurve { points, t0, t1 })
     }
 
@@ -61,6 +64,7 @@ impl<T: Field, const D: usize> ParamCurve<T, D> for BezierCurve<T, D> {
     }
 
     fn derivatives(&self, t: &T, order: usize) -> Result<Vec<[T; D]>, CurveError> {
+        crate::curve::parametric::check_order(order)?;
         check_domain(t, (&self.t0, &self.t1))?;
         let duration = self.t1.clone() - &self.t0;
         let xi = (t.clone() - &self.t0) / &duration;

@@ -545,16 +545,31 @@ fn first_boxes(models: &[Model], bits: u32) -> (BinaryHeap<Candidate>, (f64, usi
 /// let curve = ExprCurve::parse("[cos(t), sin(t), t]").unwrap().compile::<Ball>(&128);
 /// let (a, b) = (Ball::from_i64(0, &128), Ball::from_i64(1, &128));
 /// let spline = fit(&curve, &a, &b, &FitOptions { segments: 2, ..FitOptions::default() }).unwrap();
-/// let e = proven_error(&curve, &spline, 1e-6, 100_000);
+/// let e = proven_error(&curve, &spline, 1e-6, 100_000).unwrap();
 /// assert!(e.lower <= e.upper && e.upper < 1e-6);
 /// ```
+///
+/// # Errors
+/// [`EnclosureError::Target`] unless `target` is a positive finite number;
+/// [`EnclosureError::MaxBoxes`] for `max_boxes` = 0.
 pub fn proven_error<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
     curve: &C,
     pw: &P,
     target: f64,
     max_boxes: usize,
-) -> ErrorEnclosure {
+) -> Result<ErrorEnclosure, EnclosureError> {
     proven_error_until(curve, pw, target, max_boxes, None)
+}
+
+/// Why a proven error search cannot start.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum EnclosureError {
+    /// A relative width that is not a positive finite number.
+    #[error("target: the relative width must be a positive finite number, got {0}")]
+    Target(f64),
+    /// No box to evaluate.
+    #[error("max_boxes: the search needs at least one box")]
+    MaxBoxes,
 }
 
 /// Whether the deadline (if any) has passed.
@@ -565,14 +580,23 @@ fn passed(deadline: Option<Instant>) -> bool {
 /// [`proven_error`] that also stops refining at `deadline`: the bounds found by then are
 /// returned, still proven (a piece left unsplit keeps its whole remainder in both bounds),
 /// only wider than `target`; the caller reads the width achieved from the result.
+///
+/// # Errors
+/// As [`proven_error`].
 pub fn proven_error_until<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
     curve: &C,
     pw: &P,
     target: f64,
     max_boxes: usize,
     deadline: Option<Instant>,
-) -> ErrorEnclosure {
-    ErrorModels::build(curve, pw, target, deadline).enclose(target, max_boxes, deadline)
+) -> Result<ErrorEnclosure, EnclosureError> {
+    if !(target.is_finite() && target > 0.0) {
+        return Err(EnclosureError::Target(target));
+    }
+    if max_boxes == 0 {
+        return Err(EnclosureError::MaxBoxes);
+    }
+    Ok(ErrorModels::build(curve, pw, target, deadline).enclose(target, max_boxes, deadline))
 }
 
 /// The Taylor models of the error d = γ − p over every segment, each piece's remainder below

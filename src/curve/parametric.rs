@@ -72,6 +72,14 @@ pub enum CurveError {
         /// The parameter asked for.
         t: f64,
     },
+    /// More derivatives asked for than [`MAX_DERIVATIVE_ORDER`].
+    #[error("order: {order} derivatives asked for, at most {max}")]
+    Order {
+        /// The order asked for.
+        order: usize,
+        /// [`MAX_DERIVATIVE_ORDER`].
+        max: usize,
+    },
     /// The frame is not defined at this parameter (zero speed).
     #[error("t: the frame is not defined at t = {t} ({reason})")]
     Frame {
@@ -91,7 +99,8 @@ pub trait ParamCurve<T: Field, const D: usize> {
     /// point the piece that starts there is used (the end of the domain: the last piece).
     ///
     /// # Errors
-    /// [`CurveError::OutsideDomain`] for t outside [`ParamCurve::domain`] or NaN.
+    /// [`CurveError::OutsideDomain`] for t outside [`ParamCurve::domain`] or NaN;
+    /// [`CurveError::Order`] for an order above [`MAX_DERIVATIVE_ORDER`].
     fn derivatives(&self, t: &T, order: usize) -> Result<Vec<[T; D]>, CurveError>;
 
     /// γ(t).
@@ -117,6 +126,25 @@ pub trait ParamCurve<T: Field, const D: usize> {
     fn breakpoints(&self) -> Vec<T> {
         Vec::new()
     }
+}
+
+/// The highest derivative order [`ParamCurve::derivatives`] computes: every curve of the
+/// library is made of polynomial pieces or Taylor series, and an order beyond this is a
+/// mistake whose result (a vector of order + 1 points) would only exhaust memory.
+pub const MAX_DERIVATIVE_ORDER: usize = 64;
+
+/// `Ok` for an order up to [`MAX_DERIVATIVE_ORDER`].
+///
+/// # Errors
+/// [`CurveError::Order`] above it.
+pub fn check_order(order: usize) -> Result<(), CurveError> {
+    if order > MAX_DERIVATIVE_ORDER {
+        return Err(CurveError::Order {
+            order,
+            max: MAX_DERIVATIVE_ORDER,
+        });
+    }
+    Ok(())
 }
 
 /// `Ok` when t₀ ≤ t ≤ t₁ (false for NaN), else [`CurveError::OutsideDomain`].
@@ -191,6 +219,7 @@ impl<C: Curve<T>, T: Real> ParamCurve<T, 3> for CurveOn<C, T> {
         self.domain.clone()
     }
     fn derivatives(&self, t: &T, order: usize) -> Result<Vec<[T; 3]>, CurveError> {
+        crate::curve::parametric::check_order(order)?;
         check_domain(t, (&self.domain.0, &self.domain.1))?;
         let jet = self.curve.jet(t, order);
         if jet.iter().flatten().any(|x| !x.is_finite()) {

@@ -63,9 +63,23 @@ pub enum SplineError {
     /// The periodic interpolation system is singular.
     #[error("the interpolation system is singular")]
     Singular,
-    /// An even degree was asked for; periodic interpolation here needs an odd degree.
+    /// An even degree was asked for; interpolation here needs an odd degree.
     #[error("the degree must be odd")]
     EvenDegree,
+    /// A time or a point that is NaN or infinite (the row).
+    #[error("row {0} is not finite")]
+    NotFinite(usize),
+}
+
+/// The first row whose time or point is not finite.
+fn first_not_finite(times: &[f64], points: &[[f64; 3]]) -> Option<usize> {
+    let row_ok = |i: usize| {
+        times[i].is_finite()
+            && points
+                .get(i)
+                .is_none_or(|p| p.iter().all(|x| x.is_finite()))
+    };
+    (0..times.len()).find(|&i| !row_ok(i))
 }
 
 impl PeriodicSpline {
@@ -82,6 +96,10 @@ impl PeriodicSpline {
         let n = times.len();
         if n < degree + 2 || points.len() != n {
             return Err(SplineError::TooFewPoints(degree + 2));
+        }
+        if let Some(i) = first_not_finite(times, points).or((!period_end.is_finite()).then_some(n))
+        {
+            return Err(SplineError::NotFinite(i));
         }
         for i in 1..n {
             if times[i] <= times[i - 1] {
@@ -451,14 +469,26 @@ pub struct ClampedSpline {
 
 impl ClampedSpline {
     /// Interpolate points x_i at strictly increasing times t_i.
+    ///
+    /// # Errors
+    /// [`SplineError::EvenDegree`] for an even degree; [`SplineError::TooFewPoints`] for fewer
+    /// than p + 1 points or one point per time missing; [`SplineError::NotFinite`] for a NaN
+    /// or infinite time or coordinate; [`SplineError::NotIncreasing`] for times that do not
+    /// increase strictly; [`SplineError::Singular`] if the collocation system is.
     pub fn interpolate(
         degree: usize,
         times: &[f64],
         points: &[[f64; 3]],
     ) -> Result<Self, SplineError> {
+        if degree % 2 == 0 {
+            return Err(SplineError::EvenDegree);
+        }
         let n = times.len();
         if n < degree + 1 || points.len() != n {
             return Err(SplineError::TooFewPoints(degree + 1));
+        }
+        if let Some(i) = first_not_finite(times, points) {
+            return Err(SplineError::NotFinite(i));
         }
         if let Some(i) = (1..n).find(|&i| times[i] <= times[i - 1]) {
             return Err(SplineError::NotIncreasing(i));

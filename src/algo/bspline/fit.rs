@@ -487,6 +487,7 @@ impl<T: Field> ParamCurve<T, 1> for SplineFit<T> {
         self.domain.clone()
     }
     fn derivatives(&self, t: &T, order: usize) -> Result<Vec<[T; 1]>, CurveError> {
+        crate::curve::parametric::check_order(order)?;
         check_domain(t, (&self.domain.0, &self.domain.1))?;
         Ok((0..=order)
             .map(|d| [self.space.eval_derivative(&self.tau, t, d)])

@@ -25,8 +25,9 @@ use crate::scalar::{powi, Field};
 /// intervals (t_1, t_2) and (t_{n+1}, t_{n+2}), when not empty, reuse the nearest exponent.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Bfbs {
-    /// The exponents (a, b, …) of the BFBS integrand, one per factor.
-    pub exponents: Vec<u32>,
+    /// The exponents (a, b, …) of the BFBS integrand, one per factor (private: only
+    /// [`Bfbs::new`] makes a BFBS, so every exponent is in range).
+    exponents: Vec<u32>,
 }
 
 /// The largest exponent accepted (keeps C(N, r) inside the binomial table).
@@ -52,6 +53,11 @@ impl Bfbs {
             });
         }
         Ok(Bfbs { exponents })
+    }
+
+    /// The exponents, one per basis function.
+    pub fn exponents(&self) -> &[u32] {
+        &self.exponents
     }
 
     /// The same exponent i for n basis functions (i = 2: the curvature-continuous case).

@@ -151,6 +151,8 @@ pub enum CentreReading {
 /// An ERBS basis: parameters per knot interval (a single set is used for all).
 #[derive(Clone, Debug)]
 pub struct Erbs<T> {
+    /// The knots the normalizers were computed on.
+    knots: Vec<T>,
     params: Vec<ErbsParams<T>>,
     reading: CentreReading,
     /// S_j per interval j (paper numbering, index j − 1), zero for empty intervals.
@@ -191,6 +193,7 @@ impl<T: Real> Erbs<T> {
     ) -> Self {
         let intervals = knots.as_slice().len() - 1;
         let mut erbs = Erbs {
+            knots: knots.as_slice().to_vec(),
             params,
             reading,
             scale: Vec::new(),
@@ -344,6 +347,10 @@ impl<T: Real> Erbs<T> {
 }
 
 impl<T: Real> Blend<T> for Erbs<T> {
+    fn built_on(&self) -> Option<&[T]> {
+        Some(&self.knots)
+    }
+
     fn break_points(&self, knots: &Knots<T>, j: usize) -> Vec<T> {
         match self.params(j).even_power() {
             Some(_) => Vec::new(),

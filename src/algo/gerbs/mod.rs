@@ -297,6 +297,13 @@ pub trait Blend<T: Field> {
     fn basis_count(&self) -> Option<usize> {
         None
     }
+
+    /// The knots the blend was built on, when it depends on them (an ERBS keeps one
+    /// normalizer per knot interval); `None`, the default, for a blend that fits any knot
+    /// vector. A path refuses a blend built on other knots.
+    fn built_on(&self) -> Option<&[T]> {
+        None
+    }
 }
 
 /// The series of B_2 … B_{n+1} at t to `order`, from the side `side` at a knot; every basis

@@ -168,7 +168,8 @@ pub fn tangents<T: Real>(w: &[[T; 2]]) -> Result<Tangents<T>, GerbsError> {
 ///
 /// # Errors
 /// [`GerbsError::Waypoints`] as [`check_waypoints`]; [`GerbsError::Parameter`] (`turns`)
-/// unless `s` has one entry per waypoint (the signs' values are not checked).
+/// unless `s` has one entry per waypoint, each +1 or −1; [`GerbsError::Waypoints`] when the
+/// directions between waypoints overflow.
 pub fn tangents_with_turns<T: Real>(w: &[[T; 2]], s: Vec<i32>) -> Result<Tangents<T>, GerbsError> {
     check_waypoints(w)?;
     let n = w.len();
@@ -181,12 +182,27 @@ pub fn tangents_with_turns<T: Real>(w: &[[T; 2]], s: Vec<i32>) -> Result<Tangent
             ),
         });
     }
+    if let Some(i) = s.iter().position(|&x| x != 1 && x != -1) {
+        return Err(GerbsError::Parameter {
+            field: "turns",
+            message: format!(
+                "turn sign {} of waypoint {} is not +1 (left) or -1 (right)",
+                s[i],
+                i + 1
+            ),
+        });
+    }
     let mut m = vec![direction(&w[0], &w[1])];
     for i in 1..n - 1 {
         let (a, b) = (direction(&w[i - 1], &w[i]), direction(&w[i], &w[i + 1]));
         m.push(unit([a[0].clone() + &b[0], a[1].clone() + &b[1]]));
     }
     m.push(direction(&w[n - 2], &w[n - 1]));
+    if m.iter().flatten().any(|x| !x.is_finite()) {
+        return Err(GerbsError::Waypoints(
+            "the directions between waypoints are not finite (coordinates too large or too close to represent their differences)".into(),
+        ));
+    }
     Ok(Tangents { m, s })
 }
 
@@ -346,6 +362,47 @@ fn checked_line_length<T: Real>(spec: &PathSpec<T>) -> Result<T, GerbsError> {
     }
 }
 
+/// Whether the local curves fit between the waypoints: each reaches less than half-way to
+/// its neighbouring waypoints — an arc spans the chord 2R·sin(|θ_o|/2) from W_i to each of its
+/// ends, an end line has length l (an end arc counts as an arc). Beyond that, neighbouring
+/// local curves overlap and the blend of Algorithm 2 no longer follows the waypoints' polygon.
+/// Decided in `T` (for balls: refused unless provably inside).
+fn check_fit<T: Real>(spec: &PathSpec<T>, length: &T) -> Result<(), GerbsError> {
+    let w = &spec.waypoints;
+    let n = w.len();
+    let ctx = spec.radius.ctx();
+    let two = T::from_i64(2, &ctx);
+    let chord = two.clone() * &spec.radius * &(spec.theta_o.clone().abs() / &two).sin();
+    let lines = spec.end_curves == EndCurves::Lines;
+    for i in 0..n {
+        let end_line = lines && (i == 0 || i == n - 1);
+        let reach = if end_line { length } else { &chord };
+        let field = if end_line && spec.line_length.is_some() {
+            "line_length"
+        } else {
+            "radius"
+        };
+        for j in [i.wrapping_sub(1), i + 1] {
+            let Some(other) = w.get(j) else { continue };
+            let (dx, dy) = (other[0].clone() - &w[i][0], other[1].clone() - &w[i][1]);
+            let half = (dx.clone() * &dx + &(dy.clone() * &dy)).sqrt() / &two;
+            if reach.decide_lt(&half) != Some(true) {
+                return Err(GerbsError::Parameter {
+                    field,
+                    message: format!(
+                        "does not fit: the local curve at waypoint {} reaches {} of the {} to waypoint {} (it must stay below half)",
+                        i + 1,
+                        reach.to_f64(),
+                        (half.clone() * &two).to_f64(),
+                        j + 1
+                    ),
+                });
+            }
+        }
+    }
+    Ok(())
+}
+
 /// The local curves c_1 … c_n of Algorithm 2 (lines or arcs at the ends, [`EndCurves`]; arcs inside), with the
 /// tangents of Algorithm 1 (or the given ones).
 ///
@@ -378,6 +435,7 @@ pub fn local_curves<T: Real>(
         });
     }
     let length = checked_line_length(spec)?;
+    check_fit(spec, &length)?;
     let ctx = spec.radius.ctx();
     let pi = T::pi(&ctx);
     let half_pi = pi / &T::from_i64(2, &ctx);
@@ -439,6 +497,29 @@ pub struct PathPoint<T> {
     pub curvature_rate: T,
 }
 
+/// The most points [`GerbsPath::sample`] returns in one call.
+pub const MAX_SAMPLES: usize = 10_000_000;
+
+/// The point as computed, or an error naming `t` where a derivative or the curvature is not
+/// finite (zero speed, or the kernel centre of an ERBS with a fractional σ, where p″ and κ are
+/// unbounded).
+fn finite_point<T: Field>(p: PathPoint<T>) -> Result<PathPoint<T>, GerbsError> {
+    let values = p.point.iter().chain(&p.d1).chain(&p.d2);
+    let finite = values
+        .chain([&p.curvature, &p.curvature_rate])
+        .all(Field::is_finite);
+    if finite {
+        Ok(p)
+    } else {
+        Err(GerbsError::Parameter {
+            field: "t",
+            message: "the path's derivatives or curvature are not finite there (zero speed, or the centre of an \
+                      ERBS kernel with a fractional sigma, where they are unbounded)"
+                .into(),
+        })
+    }
+}
+
 /// The blended path p(t) = Σ c_{k−1}(t) B_k(t) (Eq. 25, Algorithm 2), a planar curve of
 /// t ∈ [t_1, t_{n+2}] ([0, 1] for the knots of [`GerbsPath::new`]): it implements
 /// [`ParamCurve`] (points are `[T; 2]`) and [`ParamCurveArclen`].
@@ -482,6 +563,21 @@ fn check_parts<T: Field, B: Blend<T>>(
             "{} knots for {n} local curves: need n + 2",
             knots.as_slice().len()
         )));
+    }
+    if let Some(built) = blend.built_on() {
+        let path = knots.as_slice();
+        let differ =
+            |(a, b): (&T, &T)| a.decide_lt(b) == Some(true) || b.decide_lt(a) == Some(true);
+        if built.len() != path.len() || built.iter().zip(path).any(differ) {
+            return Err(GerbsError::Parameter {
+                field: "blend",
+                message: format!(
+                    "the basis was built on {} other knots than the path's {}: build it on the path's knots",
+                    built.len(),
+                    path.len()
+                ),
+            });
+        }
     }
     match blend.basis_count() {
         Some(count) if count != n => Err(GerbsError::Parameter {
@@ -622,7 +718,7 @@ impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
     /// defined on its knots only.
     pub fn at(&self, t: &T, side: Side) -> Result<PathPoint<T>, GerbsError> {
         match self.knots.interval(t, side) {
-            Some(j) => Ok(self.at_on(t, j)),
+            Some(j) => self.at_on(t, j),
             None => Err(GerbsError::Parameter {
                 field: "t",
                 message: "outside the knot vector's range (or not a number)".into(),
@@ -630,10 +726,22 @@ impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
         }
     }
 
-    /// Point, derivatives and curvature at knot t_k (1-based), from the side `side`: the
-    /// knot interval is decided on the index, not on a comparison of values.
-    pub fn at_knot(&self, k: usize, side: Side) -> PathPoint<T> {
-        let t = self.knots.at(k).clone();
+    /// Point, derivatives and curvature at knot t_k (1-based, k = 1 … n + 2), from the side
+    /// `side`: the knot interval is decided on the index, not on a comparison of values.
+    ///
+    /// # Errors
+    /// [`GerbsError::Parameter`] (field `k`) for k = 0 or k > n + 2, and (field `t`) where the
+    /// path's derivatives or curvature are not finite there.
+    pub fn at_knot(&self, k: usize, side: Side) -> Result<PathPoint<T>, GerbsError> {
+        let Some(t) = self.knots.get(k).cloned() else {
+            return Err(GerbsError::Parameter {
+                field: "k",
+                message: format!(
+                    "knot {k} does not exist: the knots are numbered 1 to {}",
+                    self.knots.as_slice().len()
+                ),
+            });
+        };
         let last = self.knots.as_slice().len();
         // The non-empty interval that ends (from the left) or starts (from the right) at t_k.
         let nonempty = |j: usize| self.knots.at(j) < self.knots.at(j + 1);
@@ -653,15 +761,45 @@ impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
                     Side::Left if j < k => at.before_end = T::zero_in(&t.ctx()),
                     _ => {}
                 }
-                self.point_from(&t, self.series_located(&at, 3))
+                finite_point(self.point_from(&t, self.series_located(&at, 3)))
             }
-            None => self.point_from(&t, self.series(&t, 3, side)),
+            None => finite_point(self.point_from(&t, self.series(&t, 3, side))),
         }
     }
 
-    /// Point, derivatives and curvature at t on knot interval j (1-based).
-    pub fn at_on(&self, t: &T, j: usize) -> PathPoint<T> {
-        self.point_from(t, self.series_on(t, j, 3))
+    /// Point, derivatives and curvature at t on knot interval j (1-based), chosen by the
+    /// caller (for a t rounded from an exact value whose interval is known).
+    ///
+    /// # Errors
+    /// [`GerbsError::Parameter`]: field `j` unless (t_j, t_{j+1}) is a non-empty knot
+    /// interval; field `t` for a t that is not finite or lies outside [t_j, t_{j+1}] (for
+    /// balls: provably outside), or where the derivatives or curvature are not finite.
+    pub fn at_on(&self, t: &T, j: usize) -> Result<PathPoint<T>, GerbsError> {
+        let knots = self.knots.as_slice();
+        let (Some(a), Some(b)) = (self.knots.get(j), self.knots.get(j + 1)) else {
+            return Err(GerbsError::Parameter {
+                field: "j",
+                message: format!(
+                    "interval {j} does not exist: the intervals are numbered 1 to {}",
+                    knots.len() - 1
+                ),
+            });
+        };
+        if a.decide_lt(b) != Some(true) {
+            return Err(GerbsError::Parameter {
+                field: "j",
+                message: format!("interval {j} is empty (t_{j} = t_{})", j + 1),
+            });
+        }
+        // Provably outside only (decided without counting an undecided comparison): a ball
+        // that touches the interval is evaluated there.
+        if !t.is_finite() || t.decide_lt(a) == Some(true) || b.decide_lt(t) == Some(true) {
+            return Err(GerbsError::Parameter {
+                field: "t",
+                message: format!("not finite or outside knot interval {j}"),
+            });
+        }
+        finite_point(self.point_from(t, self.series_on(t, j, 3)))
     }
 
     fn point_from(&self, t: &T, [x, y]: [Taylor<T>; 2]) -> PathPoint<T> {
@@ -686,7 +824,17 @@ impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
     /// interval of each sample is decided exactly in integers, j = ⌊i(n − 1)/(count − 1)⌋ + 2,
     /// so rounding i/(count − 1) onto a knot cannot switch sides; other knot vectors locate
     /// the rounded value.
-    pub fn sample(&self, count: usize) -> Vec<PathPoint<T>> {
+    ///
+    /// # Errors
+    /// [`GerbsError::Parameter`]: field `count` above [`MAX_SAMPLES`]; field `t` where a
+    /// sample's derivatives or curvature are not finite.
+    pub fn sample(&self, count: usize) -> Result<Vec<PathPoint<T>>, GerbsError> {
+        if count > MAX_SAMPLES {
+            return Err(GerbsError::Parameter {
+                field: "count",
+                message: format!("at most {MAX_SAMPLES} samples, got {count}"),
+            });
+        }
         let ctx = self.knots.at(1).ctx();
         let last = count.max(2) - 1;
         let n = self.curves.len();
@@ -707,7 +855,7 @@ impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
                     let side = if i == last { Side::Left } else { Side::Right };
                     match self.knots.interval(&t, side) {
                         Some(j) => self.at_on(&t, j),
-                        None => self.point_from(&t, self.series(&t, 3, side)),
+                        None => finite_point(self.point_from(&t, self.series(&t, 3, side))),
                     }
                 }
             })
@@ -1070,6 +1218,7 @@ impl<T: Real, B: Blend<T>> ParamCurve<T, 2> for GerbsPath<T, B> {
 
     /// From the right at an inner knot, from the left at the last one.
     fn derivatives(&self, t: &T, order: usize) -> Result<Vec<[T; 2]>, CurveError> {
+        crate::curve::parametric::check_order(order)?;
         let (start, end) = self.domain();
         check_domain(t, (&start, &end))?;
         let side = if *t == end { Side::Left } else { Side::Right };

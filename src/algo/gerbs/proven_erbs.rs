@@ -224,6 +224,10 @@ fn kernel_range(
 }
 
 impl Blend<Ball> for ProvenErbs {
+    fn built_on(&self) -> Option<&[Ball]> {
+        self.erbs.built_on()
+    }
+
     fn rising(&self, knots: &Knots<Ball>, j: usize, t: &Ball, order: usize) -> Taylor<Ball> {
         self.pair(knots, j, t, order).1
     }

@@ -63,6 +63,21 @@ pub enum HermiteError {
     /// Points of different dimensions.
     #[error("every point must have the same dimension d ≥ 1")]
     DimensionMismatch,
+    /// A piecewise interpolation asked for more segments than
+    /// [`piecewise::MAX_SEGMENTS`](crate::algo::hermite::piecewise::MAX_SEGMENTS).
+    #[error("segments: at most {max} segments, got {0}", max = crate::algo::hermite::piecewise::MAX_SEGMENTS)]
+    TooManySegments(usize),
+    /// More derivatives per joint than a piecewise interpolation supports.
+    #[error("m: at most {max} derivatives per joint, got {m}")]
+    TooManyDerivatives {
+        /// The derivatives asked for.
+        m: usize,
+        /// The most supported.
+        max: usize,
+    },
+    /// Data that are NaN or infinite, or control points that overflow (named).
+    #[error("{0} is not finite")]
+    NotFinite(String),
     /// A piecewise interpolation asked for no segment.
     #[error("segments: a piecewise interpolant needs at least one segment")]
     NoSegments,
@@ -121,6 +136,14 @@ impl<T: Field> HermiteData<T> {
         if self.t0.partial_cmp(&self.t1) != Some(std::cmp::Ordering::Less) {
             return Err(HermiteError::EmptyInterval);
         }
+        if !(self.t0.is_finite() && self.t1.is_finite()) {
+            return Err(HermiteError::NotFinite("the interval [t0, t1]".into()));
+        }
+        for (name, list) in [("start", &self.start), ("end", &self.end)] {
+            if let Some(j) = list.iter().position(|x| !x.is_finite()) {
+                return Err(HermiteError::NotFinite(format!("{name}[{j}]")));
+            }
+        }
         Ok(())
     }
 
@@ -174,6 +197,9 @@ impl<T: Field> HermiteData<T> {
             crate::numeric::poly::bernstein::BernsteinError::Empty => HermiteError::Empty,
             crate::numeric::poly::bernstein::BernsteinError::Interval => {
                 HermiteError::EmptyInterval
+            }
+            crate::numeric::poly::bernstein::BernsteinError::NotFinite(k) => {
+                HermiteError::NotFinite(format!("control point {k} (overflow)"))
             }
         })
     }
@@ -257,13 +283,26 @@ pub fn hermite_curve<T: Field, const D: usize>(
     if start.is_empty() || end.is_empty() {
         return Err(HermiteError::Empty);
     }
+    if !(t0.is_finite() && t1.is_finite()) {
+        return Err(HermiteError::NotFinite("the interval [t0, t1]".into()));
+    }
+    for (name, list) in [("start", start), ("end", end)] {
+        if let Some(j) = list.iter().position(|p| !p.iter().all(Field::is_finite)) {
+            return Err(HermiteError::NotFinite(format!("{name}[{j}]")));
+        }
+    }
     let rows = |v: &[[T; D]]| v.iter().map(|p| p.to_vec()).collect::<Vec<_>>();
     let polygon = solve_points(&rows(start), &rows(end), &t0, &t1)?;
     let points = polygon
         .into_iter()
         .map(|p| std::array::from_fn(|c| p[c].clone()))
         .collect();
-    BezierCurve::new(points, t0, t1).map_err(|_| HermiteError::EmptyInterval)
+    BezierCurve::new(points, t0, t1).map_err(|e| match e {
+        crate::numeric::poly::bernstein::BernsteinError::NotFinite(k) => {
+            HermiteError::NotFinite(format!("control point {k} (overflow)"))
+        }
+        _ => HermiteError::EmptyInterval,
+    })
 }
 
 /// The scales Tʲ(n−j)!/n!, j = 0…m, n = 2m+1, that turn derivatives into differences.

@@ -19,12 +19,20 @@ use crate::scalar::ball::carried;
 use crate::scalar::Real;
 use rayon::prelude::*;
 
+/// The most segments [`interpolate_curve`] builds.
+pub const MAX_SEGMENTS: usize = 1 << 19;
+
+/// The most derivatives per joint [`interpolate_curve`] matches (degree 2m + 1 ≤ 61).
+pub const MAX_JOINT_DERIVATIVES: usize = 30;
+
 /// The interpolant of `curve` on `segments` uniform pieces of [a, b] matching m derivatives
 /// at every joint (degree 2m + 1).
 ///
 /// # Errors
-/// [`HermiteError::NoSegments`] for `segments` = 0, [`HermiteError::EmptyInterval`] unless
-/// a < b, and the errors of [`solve_points`].
+/// [`HermiteError::NoSegments`] for `segments` = 0, [`HermiteError::TooManySegments`] above
+/// [`MAX_SEGMENTS`], [`HermiteError::TooManyDerivatives`] for m above
+/// [`MAX_JOINT_DERIVATIVES`], [`HermiteError::EmptyInterval`] unless a < b, and the errors of
+/// [`solve_points`].
 pub fn interpolate_curve<T: Real, C: Curve<T> + ?Sized>(
     curve: &C,
     (a, b): (&T, &T),
@@ -33,6 +41,15 @@ pub fn interpolate_curve<T: Real, C: Curve<T> + ?Sized>(
 ) -> Result<PiecewiseBernstein<T>, HermiteError> {
     if segments == 0 {
         return Err(HermiteError::NoSegments);
+    }
+    if segments > MAX_SEGMENTS {
+        return Err(HermiteError::TooManySegments(segments));
+    }
+    if m > MAX_JOINT_DERIVATIVES {
+        return Err(HermiteError::TooManyDerivatives {
+            m,
+            max: MAX_JOINT_DERIVATIVES,
+        });
     }
     if a.partial_cmp(b) != Some(std::cmp::Ordering::Less) {
         return Err(HermiteError::EmptyInterval);

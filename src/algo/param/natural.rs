@@ -41,6 +41,34 @@ pub enum SplineError {
         /// Index of the first knot not above its predecessor.
         index: usize,
     },
+    #[error("points: {count} points, at most {max} (the minimization's cost grows as the cube of the count)")]
+    /// More points than [`super::descent::MAX_PARAMETRIZE_POINTS`].
+    TooManyPoints {
+        /// The points given.
+        count: usize,
+        /// The most accepted.
+        max: usize,
+    },
+    #[error("points: point #{index} repeats the point before it (no parametrization gives it a spacing)")]
+    /// Two consecutive points that coincide.
+    RepeatedPoint {
+        /// Index of the repeat.
+        index: usize,
+    },
+    #[error("alpha: weight #{index} is not a positive finite number")]
+    /// A weight α_l that is zero, negative or not finite.
+    BadWeight {
+        /// Its index.
+        index: usize,
+    },
+    #[error("{field} #{index} is not finite")]
+    /// A knot or a value that is NaN or infinite.
+    NotFinite {
+        /// "knot" or "value".
+        field: &'static str,
+        /// Its index.
+        index: usize,
+    },
 }
 
 /// The natural cubic spline through (tᵢ, zᵢ).
@@ -78,6 +106,11 @@ impl<T: Field> NaturalCubicSpline<T> {
     /// than the one before.
     pub fn new(knots: Vec<T>, values: Vec<T>) -> Result<Self, SplineError> {
         check_lengths(&knots, &values)?;
+        for (field, list) in [("knot", &knots), ("value", &values)] {
+            if let Some(index) = list.iter().position(|x| !x.is_finite()) {
+                return Err(SplineError::NotFinite { field, index });
+            }
+        }
         if let Some(i) = (1..knots.len()).find(|&i| knots[i] <= knots[i - 1]) {
             return Err(SplineError::NotIncreasing { index: i });
         }
@@ -493,6 +526,7 @@ impl<T: Field> ParamCurve<T, 1> for NaturalCubicSpline<T> {
         )
     }
     fn derivatives(&self, t: &T, order: usize) -> Result<Vec<[T; 1]>, CurveError> {
+        crate::curve::parametric::check_order(order)?;
         Ok(self.jet(t, order)?.into_iter().map(|x| [x]).collect())
     }
     fn breakpoints(&self) -> Vec<T> {
@@ -558,6 +592,7 @@ impl<T: Field, const D: usize> ParamCurve<T, D> for NaturalSplineCurve<T, D> {
         self.components[0].domain()
     }
     fn derivatives(&self, t: &T, order: usize) -> Result<Vec<[T; D]>, CurveError> {
+        crate::curve::parametric::check_order(order)?;
         let jets = self
             .components
             .iter()

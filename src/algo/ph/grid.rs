@@ -72,7 +72,7 @@ fn located<T: Real>(pw: &PiecewisePh<T>, ts: &[T]) -> Vec<Located<T>> {
     ts.iter()
         .enumerate()
         .map(|(i, t)| {
-            let (k, xi) = pw.locate(t);
+            let (k, xi) = pw.locate_clamped(t);
             (i, k, xi)
         })
         .collect()
@@ -272,7 +272,7 @@ fn located_roughly(
             let k = u.floor().clamp(0.0, (n - 1) as f64);
             let xi = u - k;
             if xi <= slack || xi >= 1.0 - slack {
-                let (k, xi) = pw.locate(&Float::from_rational(&ts[i], &bits));
+                let (k, xi) = pw.locate_clamped(&Float::from_rational(&ts[i], &bits));
                 (i, k, xi.to_f64())
             } else {
                 (i, k as usize, xi)
@@ -300,7 +300,7 @@ fn screened_distances<C: Curve<Float>>(
         points
             .into_iter()
             .map(|(i, _, _)| {
-                let (k, xi) = pw.locate(&Float::from_rational(&ts[i], &bits));
+                let (k, xi) = pw.locate_clamped(&Float::from_rational(&ts[i], &bits));
                 (i, k, xi)
             })
             .collect()

@@ -166,6 +166,9 @@ pub enum PhHermiteError {
     /// A conversion asked for no segment.
     #[error("a conversion needs at least one segment")]
     NoSegments,
+    /// A conversion asked for more segments than [`super::piecewise::MAX_SEGMENTS`].
+    #[error("segments: at most {max} segments, got {0}", max = super::piecewise::MAX_SEGMENTS)]
+    TooManySegments(usize),
     /// A conversion interval [a, b] without a < b (reversed, empty or NaN).
     #[error("the interval [a, b] needs a < b")]
     Interval,

@@ -77,8 +77,18 @@ impl<T: Real> PiecewisePh<T> {
     pub fn knot(&self, k: usize) -> T {
         knot(&self.a, &self.b, self.segments.len(), k)
     }
-    /// The segment containing t and the local parameter ξ ∈ [0, 1] (clamped to [a, b]).
-    pub fn locate(&self, t: &T) -> (usize, T) {
+    /// The segment containing t ∈ [a, b] and the local parameter ξ ∈ [0, 1] (at a joint, the
+    /// segment that starts there; at b, the last one).
+    ///
+    /// # Errors
+    /// [`CurveError::OutsideDomain`] for t outside [a, b] or NaN.
+    pub fn locate(&self, t: &T) -> Result<(usize, T), CurveError> {
+        crate::curve::approx::locate_in_domain(self, t)
+    }
+
+    /// [`PiecewisePh::locate`] with t clamped to [a, b] (for grids whose points the caller
+    /// built inside it).
+    pub(crate) fn locate_clamped(&self, t: &T) -> (usize, T) {
         locate(self, t)
     }
 }
@@ -142,7 +152,8 @@ pub fn segment_data<T: Real, C: Curve<T> + ?Sized>(
 /// defaults; `convert` is the positional form the paper checks use.
 ///
 /// # Errors
-/// [`PhHermiteError::NoSegments`] for `segments` = 0, [`PhHermiteError::Shape`] unless
+/// [`PhHermiteError::NoSegments`] for `segments` = 0, [`PhHermiteError::TooManySegments`]
+/// above [`MAX_SEGMENTS`], [`PhHermiteError::Shape`] unless
 /// 1 ≤ m ≤ [`MAX_DERIVATIVES`], [`PhHermiteError::Interval`] unless
 /// a < b, [`PhHermiteError::NotFinite`] where the curve or its derivatives are not finite at
 /// a segment end (e.g. `sqrt(t − 10)` on [0, 1]), or the first segment's interpolation error.
@@ -157,6 +168,9 @@ pub fn convert<T: Real, C: Curve<T> + ?Sized>(
 ) -> Result<PiecewisePh<T>, PhHermiteError> {
     if segments == 0 {
         return Err(PhHermiteError::NoSegments);
+    }
+    if segments > MAX_SEGMENTS {
+        return Err(PhHermiteError::TooManySegments(segments));
     }
     if m == 0 || m > MAX_DERIVATIVES {
         return Err(PhHermiteError::Shape);
@@ -222,6 +236,10 @@ pub const MAX_DERIVATIVES: usize = 12;
 
 /// The most segments [`fit`] tries for a tolerance.
 pub const MAX_FIT_SEGMENTS: usize = 1 << 14;
+
+/// The most segments a conversion builds (64 times Table 1's largest row; each segment holds
+/// its preimage and control points, so far more would only exhaust memory).
+pub const MAX_SEGMENTS: usize = 1 << 19;
 
 /// The piecewise PH spline of `curve` on [a, b] (Algorithm 2), with the number of segments,
 /// the continuity and the free parameters of `options`.
@@ -304,6 +322,7 @@ impl<T: Real> ParamCurve<T, 3> for PiecewisePh<T> {
     }
 
     fn derivatives(&self, t: &T, order: usize) -> Result<Vec<[T; 3]>, CurveError> {
+        crate::curve::parametric::check_order(order)?;
         pieces_derivatives(self, t, order)
     }
 

@@ -23,6 +23,9 @@ pub enum BernsteinError {
     /// An interval without t₀ < t₁.
     #[error("the interval [t0, t1] needs t0 < t1")]
     Interval,
+    /// A control point that is not finite (NaN or ±∞), by its index.
+    #[error("control point {0} is not finite")]
+    NotFinite(usize),
 }
 
 /// A scalar polynomial of degree n = `control_points.len() − 1` on [t₀, t₁].

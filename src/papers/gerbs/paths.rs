@@ -7,7 +7,7 @@ use crate::algo::gerbs::dubins::{through_poses, DubinsPath};
 use crate::algo::gerbs::path::{
     local_curves, tangents, ArcConvention, GerbsPath, LocalCurve, PathPoint, PathSpec,
 };
-use crate::algo::gerbs::{Blend, Side};
+use crate::algo::gerbs::{Blend, GerbsError, Side};
 use crate::papers::{Outcome, Verdict};
 use crate::scalar::ball::Ball;
 use crate::scalar::certify::certify;
@@ -35,7 +35,10 @@ impl KnotData {
 /// [`KnotData`] of a path in balls: each waypoint's knot evaluated from the side that holds
 /// it (the knots are exact, so no side is guessed).
 #[allow(clippy::needless_range_loop)] // i indexes waypoints, tangents and knots together
-pub(super) fn knot_data<B: Blend<Ball>>(path: &GerbsPath<Ball, B>, bits: u32) -> KnotData {
+pub(super) fn knot_data<B: Blend<Ball>>(
+    path: &GerbsPath<Ball, B>,
+    bits: u32,
+) -> Result<KnotData, String> {
     let w = super::setup::waypoints::<Ball>(&bits);
     let n = w.len();
     let zero = Ball::zero_in(&bits);
@@ -43,8 +46,12 @@ pub(super) fn knot_data<B: Blend<Ball>>(path: &GerbsPath<Ball, B>, bits: u32) ->
         (zero.clone(), zero.clone(), zero.clone());
     let mut along = Vec::new();
     for i in 0..n {
-        let right = path.at_knot(i + 2, if i == n - 1 { Side::Left } else { Side::Right });
-        let left = path.at_knot(i + 2, if i == 0 { Side::Right } else { Side::Left });
+        let right = path
+            .at_knot(i + 2, if i == n - 1 { Side::Left } else { Side::Right })
+            .map_err(|e| e.to_string())?;
+        let left = path
+            .at_knot(i + 2, if i == 0 { Side::Right } else { Side::Left })
+            .map_err(|e| e.to_string())?;
         let sq = |x: Ball| x.clone() * &x;
         let d = sq(right.point[0].clone() - &w[i][0]) + &sq(right.point[1].clone() - &w[i][1]);
         interp_squared = interp_squared.max_with(&d);
@@ -58,12 +65,12 @@ pub(super) fn knot_data<B: Blend<Ball>>(path: &GerbsPath<Ball, B>, bits: u32) ->
             rate_jump = rate_jump.max_with(&rj);
         }
     }
-    KnotData {
+    Ok(KnotData {
         interp_squared,
         along,
         kappa_jump,
         rate_jump,
-    }
+    })
 }
 
 /// Boxes per knot interval for the proven lower bound of the speed (before bisection).
@@ -85,9 +92,15 @@ fn speed_lower<B: Blend<Ball>>(
     let half = Ball::from_ratio(1, 2, &bits);
     let mid = (lo.clone() + hi) * &half;
     let norm = |v: &[Ball; 2]| (v[0].clone() * &v[0] + &(v[1].clone() * &v[1])).sqrt();
-    let at_mid = norm(&path.at_on(&mid, j).d1);
-    let over = path.at_on(&Ball::from_bounds(&lo.lower(), &hi.upper()), j);
-    let bound = at_mid - &(norm(&over.d2) * &(hi.clone() - lo) * &half);
+    // The path's own series (the curvature over a wide box need not be finite, and is not
+    // needed): p′ at the midpoint, p″ over the box.
+    let derivative = |x: &Ball, k: usize| -> [Ball; 2] {
+        let [sx, sy] = path.series_on(x, j, 2);
+        [sx.derivatives()[k].clone(), sy.derivatives()[k].clone()]
+    };
+    let at_mid = norm(&derivative(&mid, 1));
+    let over = derivative(&Ball::from_bounds(&lo.lower(), &hi.upper()), 2);
+    let bound = at_mid - &(norm(&over) * &(hi.clone() - lo) * &half);
     let lower = bound.lower().to_f64_round(rug::float::Round::Down);
     if lower > 0.0 {
         return Some(lower);
@@ -222,10 +235,11 @@ pub fn algorithm2() -> (Outcome, Outcome, Outcome, Vec<Vec<String>>) {
     ] {
         for kind in ["BFBS", "ERBS"] {
             let data = match kind {
-                "BFBS" => Ok(knot_data(&bfbs_path::<Ball>(&HI, conv), HI)),
+                "BFBS" => knot_data(&bfbs_path::<Ball>(&HI, conv), HI),
                 _ => basis.clone().and_then(|b| {
                     let path = GerbsPath::new(&spec::<Ball>(&HI, conv), b);
-                    path.map(|p| knot_data(&p, HI)).map_err(|e| e.to_string())
+                    path.map_err(|e| e.to_string())
+                        .and_then(|p| knot_data(&p, HI))
                 }),
             };
             let data = match data {
@@ -349,7 +363,10 @@ pub fn bfbs_vs_erbs() -> (Outcome, Vec<PathPoint<f64>>, Vec<PathPoint<f64>>) {
     let conv = ArcConvention::TurnDirection;
     let bp = bfbs_path::<f64>(&(), conv);
     let ep = erbs_path::<f64>(&(), ErbsSet::Smooth, conv);
-    let (bs, es) = (bp.sample(801), ep.sample(801));
+    let (bs, es) = match (bp.sample(801), ep.sample(801)) {
+        (Ok(b), Ok(e)) => (b, e),
+        (Err(e), _) | (_, Err(e)) => return (Outcome::failed("f64", e), Vec::new(), Vec::new()),
+    };
     let dist = |a: &PathPoint<f64>, b: &PathPoint<f64>| {
         (a.point[0] - b.point[0]).hypot(a.point[1] - b.point[1])
     };
@@ -578,7 +595,12 @@ fn locality_proof() -> Result<(Outcome, Outcome), String> {
         .map_err(|e| e.to_string())?;
     // At t_4 = 1/2 only B_4 is non-zero (it is 1 there): the path moves with c_3.
     let half = Ball::from_rational(&BigRational::new(1.into(), 2.into()), &HI);
-    let (p, q) = (base.at_on(&half, 4).point, kept.at_on(&half, 4).point);
+    let at_half = |path: &GerbsPath<Ball, Bfbs>| {
+        path.at_on(&half, 4)
+            .map(|a| a.point)
+            .map_err(|e| e.to_string())
+    };
+    let (p, q) = (at_half(&base)?, at_half(&kept)?);
     let (dx, dy) = (p[0].clone() - &q[0], p[1].clone() - &q[1]);
     let moved_by = (dx.clone() * &dx + &(dy.clone() * &dy)).sqrt();
     let region = support_hull(&kept_changed, n).ok_or("moving W3 changed no local curve")?;
@@ -645,10 +667,12 @@ pub fn loop_range() -> Outcome {
         let dy = p[1].clone() - &Ball::from_i64(last[1], &HI);
         (dx.clone() * &dx + &(dy.clone() * &dy)).sqrt()
     };
-    let end = distance(&path.at_knot(n + 2, Side::Left).point);
     let near = Ball::from_rational(&BigRational::new(999.into(), 1000.into()), &HI);
     // Knot interval n (1-based) is [t_n, t_{n+1}] = [(n − 2)/(n − 1), 1].
-    let inside = distance(&path.at_on(&near, n).point);
+    let (end, inside) = match (path.at_knot(n + 2, Side::Left), path.at_on(&near, n)) {
+        (Ok(e), Ok(i)) => (distance(&e.point), distance(&i.point)),
+        (Err(e), _) | (_, Err(e)) => return Outcome::failed(scalar, e),
+    };
     let verdict = if end.abs_upper() < 1e-60 && inside.lower() > 0 {
         Verdict::Typo
     } else {
@@ -701,7 +725,10 @@ pub fn algorithm1_returns_s() -> Outcome {
     let wrong_way = |path: &GerbsPath<Ball, _>| -> Result<Vec<String>, String> {
         let mut wrong = Vec::new();
         for (i, turn) in s.iter().enumerate().take(s.len() - 1).skip(1) {
-            let kappa = path.at_knot(i + 2, Side::Right).curvature;
+            let kappa = path
+                .at_knot(i + 2, Side::Right)
+                .map_err(|e| e.to_string())?
+                .curvature;
             let left = sign(&kappa).ok_or_else(|| format!("the curvature's sign at W{}", i + 1))?;
             if left != (*turn > 0) {
                 wrong.push(format!("W{} (s = {turn:+})", i + 1));
@@ -745,10 +772,10 @@ pub fn end_curves() -> Outcome {
     let Some(arcs) = arcs else {
         return Outcome::failed(scalar, "the path with end arcs could not be built");
     };
-    let (il, ia) = (
-        knot_data(&lines, HI).interp_bound(),
-        knot_data(&arcs, HI).interp_squared.sqrt(),
-    );
+    let (il, ia) = match (knot_data(&lines, HI), knot_data(&arcs, HI)) {
+        (Ok(l), Ok(a)) => (l.interp_bound(), a.interp_squared.sqrt()),
+        (Err(e), _) | (_, Err(e)) => return Outcome::failed(scalar, e),
+    };
     // The chord from an arc's end to its middle: 2R sin(θ_o/2), θ_o = π/8.
     let chord = Ball::from_i64(2 * RADIUS, &HI) * &(Ball::pi(&HI) / &Ball::from_i64(16, &HI)).sin();
     let misses_by_chord = (ia.clone() - &chord).abs_upper() < 1e-60;
@@ -776,22 +803,26 @@ pub fn end_curves() -> Outcome {
 /// BFBS path (f64, 4001 samples: a sampled maximum, not certified).
 pub fn curvature_by_parameters() -> Outcome {
     let conv = ArcConvention::TurnDirection;
-    let peak = |s: Vec<PathPoint<f64>>| {
-        s.iter()
-            .map(|p| p.curvature.abs())
-            .filter(|k| k.is_finite())
-            .fold(0.0, f64::max)
+    // A path whose curvature is not finite at a sample (σ = 0.2 at an interval's centre)
+    // has no peak to report: its curvature is unbounded (gerbs.sec3.erbs_path_smooth).
+    let peak = |s: Result<Vec<PathPoint<f64>>, GerbsError>| match s {
+        Ok(s) => format!(
+            "{:.4e}",
+            s.iter().map(|p| p.curvature.abs()).fold(0.0, f64::max)
+        ),
+        Err(_) => "unbounded (not finite at an interval's centre, gerbs.sec3.erbs_path_smooth)"
+            .to_string(),
     };
     let mut rows = Vec::new();
     for set in [ErbsSet::Fig2Literal, ErbsSet::Fig2Alpha1, ErbsSet::Smooth] {
         rows.push(format!(
-            "ERBS {}: {:.4e}",
+            "ERBS {}: {}",
             set.label(),
             peak(erbs_path::<f64>(&(), set, conv).sample(4001))
         ));
     }
     rows.push(format!(
-        "BFBS i = 2: {:.4e}",
+        "BFBS i = 2: {}",
         peak(bfbs_path::<f64>(&(), conv).sample(4001))
     ));
     Outcome::new(
@@ -799,7 +830,8 @@ pub fn curvature_by_parameters() -> Outcome {
         "f64",
         Verdict::Illustrated,
         "the documented waypoints (setup::WAYPOINTS), R = 80, θ_o = π/8, arcs swept in the turn direction; each path sampled at \
-         4001 equally spaced t and the largest finite |κ| taken (with α = 0 the basis is only C⁰ at the knots, \
+         4001 equally spaced t and the largest |κ| taken; with σ = 0.2 the samples include the interval centres, where κ is \
+         not finite, and the peak is reported unbounded (with α = 0 the basis is also only C⁰ at the knots, \
          gerbs.fig2.parameters). The paper gives neither the waypoints of Figs. 2–3 nor what the curvature is reduced against: \
          clause 1",
     )
@@ -841,7 +873,10 @@ pub fn abstract_midpoints() -> Outcome {
     let mut lines = Vec::new();
     for (i, curve) in path.curves().iter().enumerate() {
         let side = if i == n - 1 { Side::Left } else { Side::Right };
-        let p = path.at_knot(i + 2, side).point;
+        let p = match path.at_knot(i + 2, side) {
+            Ok(at) => at.point,
+            Err(e) => return Outcome::failed(scalar, e),
+        };
         let m = curve_midpoint(curve, HI);
         let (dx, dy) = (p[0].clone() - &m[0], p[1].clone() - &m[1]);
         let distance = (dx.clone() * &dx + &(dy.clone() * &dy)).sqrt();
@@ -893,7 +928,7 @@ pub fn erbs_path_smooth() -> Outcome {
             .map(|&p| {
                 let delta = BigRational::new(1.into(), num_bigint::BigInt::from(10).pow(p));
                 let t = Ball::from_rational(&(centre.clone() + delta), &bits);
-                let at = path.at_on(&t, 3);
+                let at = path.at_on(&t, 3).map_err(|e| e.to_string())?;
                 let [x, y] = at.d2;
                 let second = (x.clone() * &x + &(y.clone() * &y)).sqrt();
                 Ok((p, second, at.curvature.abs()))

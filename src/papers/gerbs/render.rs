@@ -78,17 +78,23 @@ fn material_findings_on(claims: &[Claim], n: u32) -> String {
 /// The figures in file-name order.
 fn figures(r: &Results) -> Vec<(String, String)> {
     let (bfbs, erbs) = (&r.bfbs_points, &r.erbs_points);
+    // The smooth ERBS path is finite everywhere; were it not, figure 3 would be missing and
+    // the committed-figures test would say so.
     let printed =
         setup::erbs_path::<f64>(&(), ErbsSet::Smooth, ArcConvention::AsPrinted).sample(801);
     let mut figures = vec![
         (figure_name(1), figures::figure1()),
         (figure_name(2), figures::figure2()),
-        (figure_name(3), figures::figure3(erbs, &printed)),
+    ];
+    if let Ok(printed) = printed {
+        figures.push((figure_name(3), figures::figure3(erbs, &printed)));
+    }
+    figures.extend([
         (figure_name(4), figures::figure4(erbs)),
         (figure_name(5), figures::figure5(bfbs)),
         (figure_name(6), figures::figure6(bfbs, erbs)),
         (figure_name(7), figures::figure7(erbs, &r.legs)),
-    ];
+    ]);
     figures.sort_by(|a, b| a.0.cmp(&b.0));
     figures
 }
