@@ -310,3 +310,95 @@ fn marins_parametrization_refuses_bad_points_and_ignores_scale() {
         }
     }
 }
+
+#[test]
+fn fits_name_the_derivatives_and_refuse_overflow() {
+    use trajverify::algo::ph::piecewise::{fit, FitOptions};
+    use trajverify::curve::ExprCurve;
+    let helix = ExprCurve::parse("[cos(t), sin(t), t]")
+        .expect("a curve")
+        .compile::<f64>(&());
+    let options = FitOptions {
+        derivatives: 20,
+        ..FitOptions::default()
+    };
+    let e = message(no_panic("derivatives 20", || {
+        fit(&helix, &0.0, &1.0, &options)
+    }));
+    assert!(e.starts_with("derivatives:"), "{e}");
+    let huge = ExprCurve::parse("[1e200*cos(t), 1e200*sin(t), t]")
+        .expect("a curve")
+        .compile::<f64>(&());
+    let r = no_panic("1e200 curve", || {
+        fit(&huge, &0.0, &1.0, &FitOptions::default())
+    });
+    match r {
+        Ok(pw) => {
+            let p = pw.point(&0.5).expect("inside");
+            assert!(p.iter().all(|x| x.is_finite()), "Ok holding {p:?}");
+        }
+        Err(e) => assert!(
+            e.to_string().contains("overflow") || e.to_string().contains("not finite"),
+            "{e}"
+        ),
+    }
+    let pw = fit(&helix, &0.0, &1.0, &FitOptions::default()).expect("a fit");
+    let e = message(no_panic("knot(1000)", || pw.knot(1000)));
+    assert!(e.starts_with("k:"), "{e}");
+    assert_eq!(pw.knot(8).expect("the last knot"), 1.0);
+}
+
+#[test]
+fn curvature_at_zero_speed_and_inverse_arc_length_are_errors_not_nan() {
+    use trajverify::curve::bezier::BezierCurve;
+    use trajverify::curve::parametric::{curvature, ParamCurveArclen};
+    // A cubic with a cusp: γ′(1/2) = 0.
+    let cusp = BezierCurve::new(
+        vec![[0.0, 0.0], [1.0, 1.0], [0.0, 1.0], [1.0, 0.0]],
+        0.0,
+        1.0,
+    )
+    .expect("a cubic");
+    let r = no_panic("curvature at the cusp", || curvature(&cusp, &0.5));
+    match r {
+        Ok(k) => assert!(k.is_finite(), "Ok holding {k}"),
+        Err(e) => assert!(e.to_string().starts_with("t:"), "{e}"),
+    }
+    let line = BezierCurve::new(vec![[0.0, 0.0], [3.0, 4.0]], 0.0, 1.0).expect("a line");
+    for s in [f64::NAN, -1.0, 6.0] {
+        let e = message(no_panic("parameter_at_length", || {
+            line.parameter_at_length(&s, &1e-12)
+        }));
+        assert!(e.starts_with("s:"), "s = {s}: {e}");
+    }
+    let e = message(no_panic("tolerance 0", || {
+        line.parameter_at_length(&1.0, &0.0)
+    }));
+    assert!(e.starts_with("tolerance:"), "{e}");
+    let t = line.parameter_at_length(&2.5, &1e-12).expect("inside");
+    assert!((t - 0.5).abs() < 1e-12);
+}
+
+#[test]
+fn every_library_curve_can_be_fitted_through_the_adapter() {
+    use trajverify::algo::gerbs::erbs::ErbsParams;
+    use trajverify::algo::ph::piecewise::{conversion_error, fit, FitOptions, DEFAULT_SAMPLES};
+    use trajverify::curve::adapter::AsCurve;
+    use trajverify::curve::taylor::Taylor;
+    assert!(Taylor::<f64>::from_coeffs(vec![]).is_none());
+    let params = ErbsParams::<f64>::default();
+    assert_eq!((params.alpha, params.sigma, params.lambda), (1.0, 1.0, 0.5));
+    // The GERBS path (2-D, C² with the BFBS) fitted by a C² PH spline in z = 0.
+    let path = bfbs_path();
+    let adapted = AsCurve::new(&path);
+    let options = FitOptions {
+        segments: 16,
+        derivatives: 2,
+        ..FitOptions::default()
+    };
+    let pw = fit(&adapted, &0.0, &1.0, &options).expect("a fit of the path");
+    let e = conversion_error(&adapted, &pw, DEFAULT_SAMPLES).max;
+    assert!(e.is_finite() && e < 10.0, "E = {e}");
+    // Outside the path's domain the adapter's jet is NaN, which the conversion refuses.
+    assert!(fit(&adapted, &0.0, &2.0, &options).is_err());
+}

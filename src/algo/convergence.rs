@@ -261,6 +261,23 @@ pub trait StudyCurve: Sync {
     }
 }
 
+/// A curve written as a generic Rust function (`curve::function`): analytic by assumption,
+/// proven regular by the study.
+impl<F: crate::curve::function::CurveFn> StudyCurve for crate::curve::function::FnCurve<F> {
+    fn in_f64(&self) -> Box<dyn Curve<f64> + '_> {
+        Box::new(self)
+    }
+    fn in_mpfr(&self, _bits: u32) -> Box<dyn Curve<Float> + '_> {
+        Box::new(self)
+    }
+    fn in_ball(&self, _bits: u32) -> Box<dyn Curve<Ball> + '_> {
+        Box::new(self)
+    }
+    fn smoothness(&self) -> Smoothness {
+        Smoothness::Analytic
+    }
+}
+
 impl StudyCurve for ExprCurve {
     fn in_f64(&self) -> Box<dyn Curve<f64> + '_> {
         Box::new(self.compile::<f64>(&()))

@@ -34,7 +34,8 @@ pub trait BernsteinPieces<T: Real>: Sync {
         let (a, b) = self.interval();
         (b.clone() - a) / &T::from_i64(self.count() as i64, &a.ctx())
     }
-    /// The start t_k = a + (b − a)k/N of segment k.
+    /// The start t_k = a + (b − a)k/N of segment k (k = N gives b; a larger k continues the
+    /// same formula past b: callers pass k ≤ N).
     fn knot(&self, k: usize) -> T {
         let (a, b) = self.interval();
         knot(a, b, self.count(), k)
@@ -107,7 +108,7 @@ pub fn pieces_derivatives<T: Real, P: BernsteinPieces<T> + ?Sized>(
             *x *= &scale;
         }
     }
-    Ok(jet)
+    crate::curve::parametric::finite_jet(jet, t)
 }
 
 /// The joints t_1 … t_{N−1} ([`ParamCurve::breakpoints`]).

@@ -77,7 +77,7 @@ impl<T: Field, const D: usize> ParamCurve<T, D> for BezierCurve<T, D> {
                 *x *= &scale;
             }
         }
-        Ok(jet)
+        crate::curve::parametric::finite_jet(jet, t)
     }
 }
 

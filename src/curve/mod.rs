@@ -4,11 +4,13 @@
 //! between a curve and a piecewise Bernstein approximation of it, as a certified maximum
 //! ([`approx`]) or a proven enclosure ([`enclosure`]).
 
+pub mod adapter;
 pub mod approx;
 pub mod bezier;
 pub mod distance;
 pub mod enclosure;
 pub mod expr;
+pub mod function;
 pub mod integral;
 pub mod parametric;
 pub mod regularity;

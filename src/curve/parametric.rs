@@ -80,6 +80,29 @@ pub enum CurveError {
         /// [`MAX_DERIVATIVE_ORDER`].
         max: usize,
     },
+    /// An index outside its range (a knot or segment number).
+    #[error("{field}: {index} is outside 0…{max}")]
+    Index {
+        /// The argument.
+        field: &'static str,
+        /// The index asked for.
+        index: usize,
+        /// The largest index.
+        max: usize,
+    },
+    /// An arc length outside [0, length] (or NaN), or a bad tolerance, for the inverse arc
+    /// length.
+    #[error("{field}: {value} for a curve of length {length}: {message}")]
+    ArcLength {
+        /// `s` or `tolerance`.
+        field: &'static str,
+        /// The value asked for.
+        value: f64,
+        /// The curve's length.
+        length: f64,
+        /// What is wrong.
+        message: String,
+    },
     /// The frame is not defined at this parameter (zero speed).
     #[error("t: the frame is not defined at t = {t} ({reason})")]
     Frame {
@@ -132,6 +155,22 @@ pub trait ParamCurve<T: Field, const D: usize> {
 /// library is made of polynomial pieces or Taylor series, and an order beyond this is a
 /// mistake whose result (a vector of order + 1 points) would only exhaust memory.
 pub const MAX_DERIVATIVE_ORDER: usize = 64;
+
+/// The jet as computed, or [`CurveError::NotFinite`] at `t` when an entry is NaN or infinite
+/// (a derivative per unit of t that overflows on a tiny domain, 1/h^k).
+///
+/// # Errors
+/// As stated.
+pub fn finite_jet<T: Field, const D: usize>(
+    jet: Vec<[T; D]>,
+    t: &T,
+) -> Result<Vec<[T; D]>, CurveError> {
+    if jet.iter().flatten().all(Field::is_finite) {
+        Ok(jet)
+    } else {
+        Err(CurveError::NotFinite { t: t.to_f64() })
+    }
+}
 
 /// `Ok` for an order up to [`MAX_DERIVATIVE_ORDER`].
 ///
@@ -256,10 +295,11 @@ pub fn dot<T: Field, const D: usize>(u: &[T; D], v: &[T; D]) -> T {
 }
 
 /// The curvature κ(t) = √(|γ′|²|γ″|² − (γ′·γ″)²)/|γ′|³ (|γ′ × γ″|/|γ′|³ in 3-D, |x′y″ −
-/// y′x″|/|γ′|³ in the plane), unsigned; infinite or NaN where γ′ = 0.
+/// y′x″|/|γ′|³ in the plane), unsigned.
 ///
 /// # Errors
-/// As [`ParamCurve::derivatives`].
+/// As [`ParamCurve::derivatives`]; [`CurveError::Frame`] where the curvature is not finite
+/// (γ′ = 0, or a speed so small that |γ′|³ underflows).
 pub fn curvature<T: Real, const D: usize, C: ParamCurve<T, D> + ?Sized>(
     curve: &C,
     t: &T,
@@ -273,7 +313,14 @@ pub fn curvature<T: Real, const D: usize, C: ParamCurve<T, D> + ?Sized>(
     // Rounding can make the Gram determinant slightly negative for a straight piece.
     let zero = T::zero_in(&t.ctx());
     let area2 = if area2 < zero { zero } else { area2 };
-    Ok(area2.sqrt() / &(v2.clone() * &v2.sqrt()))
+    let kappa = area2.sqrt() / &(v2.clone() * &v2.sqrt());
+    if !kappa.is_finite() {
+        return Err(CurveError::Frame {
+            t: t.to_f64(),
+            reason: "zero speed: the curvature is not defined".into(),
+        });
+    }
+    Ok(kappa)
 }
 
 /// The arc length of a curve.
@@ -295,6 +342,91 @@ pub trait ParamCurveArclen<T: Real, const D: usize>: ParamCurve<T, D> {
     fn length(&self) -> Result<T, CurveError> {
         self.arc_length(&self.domain().1)
     }
+
+    /// The parameter t at which the arc length from the start is `s` (inverse arc length, for
+    /// constant-speed trajectories): safeguarded Newton on s(t) − s with the speed |γ′(t)| as
+    /// slope, inside a bisection bracket that always shrinks, until |s(t) − s| ≤ `tolerance`
+    /// (an absolute length) or the bracket is below the working precision; at most
+    /// [`INVERSE_ARC_LENGTH_STEPS`] steps. As exact as [`ParamCurveArclen::arc_length`] is: an
+    /// estimate for the default quadrature, not a proven parameter.
+    ///
+    /// # Errors
+    /// [`CurveError::ArcLength`] for an `s` outside [0, length] or NaN, or a `tolerance` that is
+    /// not positive and finite; the errors of [`ParamCurveArclen::arc_length`].
+    ///
+    /// # Examples
+    /// ```
+    /// use trajverify::curve::bezier::BezierCurve;
+    /// use trajverify::curve::parametric::ParamCurveArclen;
+    /// // A straight segment of length 5 run at non-uniform speed (control points bunched).
+    /// let line = BezierCurve::new(vec![[0.0, 0.0], [0.3, 0.4], [3.0, 4.0]], 0.0, 1.0).unwrap();
+    /// let t = line.parameter_at_length(&2.5, &1e-12).unwrap();
+    /// assert!((line.arc_length(&t).unwrap() - 2.5).abs() < 1e-10);
+    /// assert!(line.parameter_at_length(&6.0, &1e-12).is_err());
+    /// ```
+    fn parameter_at_length(&self, s: &T, tolerance: &T) -> Result<T, CurveError> {
+        inverse_arc_length(self, s, tolerance)
+    }
+}
+
+/// The most Newton-or-bisection steps of [`ParamCurveArclen::parameter_at_length`].
+pub const INVERSE_ARC_LENGTH_STEPS: usize = 200;
+
+/// The default of [`ParamCurveArclen::parameter_at_length`].
+///
+/// # Errors
+/// As [`ParamCurveArclen::parameter_at_length`].
+pub fn inverse_arc_length<T: Real, const D: usize, C: ParamCurveArclen<T, D> + ?Sized>(
+    curve: &C,
+    s: &T,
+    tolerance: &T,
+) -> Result<T, CurveError> {
+    let ctx = s.ctx();
+    let zero = T::zero_in(&ctx);
+    let total = curve.length()?;
+    if !(tolerance.is_finite() && *tolerance > zero) {
+        return Err(CurveError::ArcLength {
+            field: "tolerance",
+            value: tolerance.to_f64(),
+            length: total.to_f64(),
+            message: "the tolerance must be a positive finite number".into(),
+        });
+    }
+    if !(s.is_finite() && *s >= zero && *s <= total) {
+        return Err(CurveError::ArcLength {
+            field: "s",
+            value: s.to_f64(),
+            length: total.to_f64(),
+            message: "the arc length must lie in [0, length]".into(),
+        });
+    }
+    let (mut lo, mut hi) = curve.domain();
+    let two = T::from_i64(2, &ctx);
+    // The linear guess: exact for a curve at constant speed.
+    let mut t = lo.clone() + &((hi.clone() - &lo) * s / &total);
+    for _ in 0..INVERSE_ARC_LENGTH_STEPS {
+        let excess = curve.arc_length(&t)? - s;
+        if excess.abs() <= *tolerance {
+            return Ok(t);
+        }
+        if excess > zero {
+            hi = t.clone();
+        } else {
+            lo = t.clone();
+        }
+        let midpoint = (lo.clone() + &hi) / &two;
+        if !(lo < midpoint && midpoint < hi) {
+            return Ok(t); // the bracket is below the working precision
+        }
+        let speed = norm(&curve.derivative(&t, 1)?);
+        let newton = t.clone() - &(excess / &speed);
+        t = if speed > zero && newton.is_finite() && lo < newton && newton < hi {
+            newton
+        } else {
+            midpoint
+        };
+    }
+    Ok(t)
 }
 
 /// The levels of step halving of the default arc-length quadrature.

@@ -38,13 +38,10 @@ impl<T: Field> Taylor<T> {
         c.resize(order + 1, T::zero_in(&ctx));
         Taylor { c }
     }
-    /// Series with these normalized coefficients.
-    pub fn from_coeffs(c: Vec<T>) -> Self {
-        assert!(
-            !c.is_empty(),
-            "a Taylor series has at least one coefficient"
-        );
-        Taylor { c }
+    /// Series with these normalized coefficients; `None` for no coefficient (a series has at
+    /// least its value).
+    pub fn from_coeffs(c: Vec<T>) -> Option<Self> {
+        (!c.is_empty()).then_some(Taylor { c })
     }
     /// The series padded with zeros (or cut) to `order`: a constant result, such as an
     /// expression without t, as a series of the requested length.

@@ -31,6 +31,13 @@ use super::{Blend, GerbsError, Knots, Located};
 use crate::curve::taylor::Taylor;
 use crate::scalar::{powi, Field, Real};
 
+/// [`ErbsParams::smooth`] in f64.
+impl Default for ErbsParams<f64> {
+    fn default() -> Self {
+        ErbsParams::smooth(&())
+    }
+}
+
 /// The intrinsic parameters of one knot interval.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ErbsParams<T> {
@@ -47,6 +54,22 @@ pub struct ErbsParams<T> {
 }
 
 impl<T: Real> ErbsParams<T> {
+    /// The library's default set: α = β = γ = σ = 1, λ = 1/2 — the kernel centred in each
+    /// interval with a whole σ, so the basis is C^∞ everywhere (the paper's Fig. 2 set,
+    /// σ = 0.2, leaves the curvature unbounded at each interval's centre, and its α = 0 lies
+    /// outside Eq. (4)'s range; see paper 003's claims `gerbs.fig2.parameters`,
+    /// `gerbs.sec3.erbs_path_smooth`).
+    pub fn smooth(ctx: &T::Ctx) -> Self {
+        let one = T::one_in(ctx);
+        ErbsParams::unchecked(
+            one.clone(),
+            one.clone(),
+            one.clone(),
+            T::from_ratio(1, 2, ctx),
+            one,
+        )
+    }
+
     /// Parameters checked against the ranges of Eq. (4): α > 0, β > 0, γ > 0,
     /// 0 ≤ λ ≤ 1, σ ≥ 0.
     ///

@@ -598,9 +598,10 @@ impl<T: Field, const D: usize> ParamCurve<T, D> for NaturalSplineCurve<T, D> {
             .iter()
             .map(|s| s.jet(t, order))
             .collect::<Result<Vec<_>, _>>()?;
-        Ok((0..=order)
+        let jet = (0..=order)
             .map(|k| std::array::from_fn(|c| jets[c][k].clone()))
-            .collect())
+            .collect();
+        crate::curve::parametric::finite_jet(jet, t)
     }
     fn breakpoints(&self) -> Vec<T> {
         self.components[0].breakpoints()

@@ -23,7 +23,7 @@
 use super::hermite::{FreeParameters, PhHermiteError};
 use super::piecewise::{convert_at, segment_at, PiecewisePh};
 use super::PhCurve;
-use crate::curve::approx::SegmentDistance;
+use crate::curve::approx::{BernsteinPieces, SegmentDistance};
 use crate::curve::enclosure::{ErrorModels, Region};
 use crate::curve::Curve;
 use crate::numeric::quat::vec3;
@@ -57,7 +57,12 @@ fn distances_at<T: Real, C: Curve<T> + ?Sized>(
             if per_segment[k].is_empty() {
                 return Vec::new();
             }
-            let dist = SegmentDistance::new(curve, &seg.control_points(), &pw.knot(k), &h);
+            let dist = SegmentDistance::new(
+                curve,
+                &seg.control_points(),
+                &BernsteinPieces::knot(pw, k),
+                &h,
+            );
             per_segment[k]
                 .iter()
                 .map(|(i, xi)| (*i, k, dist.value(xi).sqrt()))

@@ -111,8 +111,11 @@ pub struct FreeParameters<T> {
 }
 
 impl<T: Field> FreeParameters<T> {
-    /// φ* = 0 for data with m derivatives.
+    /// φ* = 0 for data with m derivatives. An m above
+    /// [`super::piecewise::MAX_DERIVATIVES`] is sized as MAX_DERIVATIVES + 1 (a huge m would
+    /// only exhaust memory): every interpolation refuses such parameters, as it refuses the m.
     pub fn zero(m: usize, ctx: &T::Ctx) -> Self {
+        let m = m.min(super::piecewise::MAX_DERIVATIVES + 1);
         let z = T::zero_in(ctx);
         FreeParameters {
             theta_start: z.clone(),
@@ -169,6 +172,12 @@ pub enum PhHermiteError {
     /// A conversion asked for more segments than [`super::piecewise::MAX_SEGMENTS`].
     #[error("segments: at most {max} segments, got {0}", max = super::piecewise::MAX_SEGMENTS)]
     TooManySegments(usize),
+    /// More or fewer derivatives per joint than a conversion matches.
+    #[error("derivatives: a conversion matches 1 to {max} derivatives at each joint, got {0}", max = super::piecewise::MAX_DERIVATIVES)]
+    Derivatives(usize),
+    /// An interpolant whose control points overflow the number type (the segment).
+    #[error("segment {0}: the interpolant overflows the number type (coordinates too large; scale the curve)")]
+    Overflow(usize),
     /// A conversion interval [a, b] without a < b (reversed, empty or NaN).
     #[error("the interval [a, b] needs a < b")]
     Interval,

@@ -73,9 +73,20 @@ impl<T: Real> PiecewisePh<T> {
         let ctx = self.a.ctx();
         (self.b.clone() - &self.a) / &T::from_i64(self.segments.len() as i64, &ctx)
     }
-    /// The start t_k = a + k h of segment k (computed as a + (b − a)k/N).
-    pub fn knot(&self, k: usize) -> T {
-        knot(&self.a, &self.b, self.segments.len(), k)
+    /// The knot t_k = a + k h, k = 0 … N (computed as a + (b − a)k/N; t_N = b).
+    ///
+    /// # Errors
+    /// [`CurveError::Index`] (field `k`) for k > N.
+    pub fn knot(&self, k: usize) -> Result<T, CurveError> {
+        let n = self.segments.len();
+        if k > n {
+            return Err(CurveError::Index {
+                field: "k",
+                index: k,
+                max: n,
+            });
+        }
+        Ok(knot(&self.a, &self.b, n, k))
     }
     /// The segment containing t ∈ [a, b] and the local parameter ξ ∈ [0, 1] (at a joint, the
     /// segment that starts there; at b, the last one).
@@ -153,8 +164,9 @@ pub fn segment_data<T: Real, C: Curve<T> + ?Sized>(
 ///
 /// # Errors
 /// [`PhHermiteError::NoSegments`] for `segments` = 0, [`PhHermiteError::TooManySegments`]
-/// above [`MAX_SEGMENTS`], [`PhHermiteError::Shape`] unless
-/// 1 ≤ m ≤ [`MAX_DERIVATIVES`], [`PhHermiteError::Interval`] unless
+/// above [`MAX_SEGMENTS`], [`PhHermiteError::Derivatives`] unless
+/// 1 ≤ m ≤ [`MAX_DERIVATIVES`], [`PhHermiteError::Overflow`] for an interpolant whose control
+/// points are not finite, [`PhHermiteError::Interval`] unless
 /// a < b, [`PhHermiteError::NotFinite`] where the curve or its derivatives are not finite at
 /// a segment end (e.g. `sqrt(t − 10)` on [0, 1]), or the first segment's interpolation error.
 pub fn convert<T: Real, C: Curve<T> + ?Sized>(
@@ -173,7 +185,7 @@ pub fn convert<T: Real, C: Curve<T> + ?Sized>(
         return Err(PhHermiteError::TooManySegments(segments));
     }
     if m == 0 || m > MAX_DERIVATIVES {
-        return Err(PhHermiteError::Shape);
+        return Err(PhHermiteError::Derivatives(m));
     }
     if a.partial_cmp(b) != Some(std::cmp::Ordering::Less) {
         return Err(PhHermiteError::Interval);
@@ -189,6 +201,10 @@ pub fn convert<T: Real, C: Curve<T> + ?Sized>(
         .par_iter()
         .map(carried(|d| interpolate(d, free)))
         .collect::<Result<Vec<_>, _>>()?;
+    let finite_segment = |p: &PhCurve<T>| p.control_points().iter().all(finite);
+    if let Some(k) = pieces.iter().position(|p| !finite_segment(p)) {
+        return Err(PhHermiteError::Overflow(k));
+    }
     if roll {
         align_roll(&mut pieces);
     }
@@ -276,6 +292,9 @@ pub fn fit<T: Real, C: Curve<T> + ?Sized>(
     options: &FitOptions<T>,
 ) -> Result<PiecewisePh<T>, PhHermiteError> {
     let m = options.derivatives;
+    if m == 0 || m > MAX_DERIVATIVES {
+        return Err(PhHermiteError::Derivatives(m));
+    }
     if let Some(tol) = &options.tolerance {
         if !(tol.is_finite() && *tol > T::zero_in(&tol.ctx())) {
             return Err(PhHermiteError::BadTolerance);

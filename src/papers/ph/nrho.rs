@@ -205,7 +205,7 @@ pub fn speed_and_turn_rate(pw: &PiecewisePh<f64>, per_segment: usize) -> (Sample
             let xi = i as f64 / per_segment as f64;
             let jet = seg.preimage_jet(&xi, 1);
             let (_, w) = crate::algo::ph::frame_and_omega(&jet[0], &jet[1]);
-            let t = pw.knot(k) + h * xi;
+            let t = crate::curve::approx::BernsteinPieces::knot(pw, k) + h * xi;
             sigma.push((t, jet[0].norm2() / h));
             omega.push((t, crate::numeric::quat::vec3::norm(&w) / h));
         }
