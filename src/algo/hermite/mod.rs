@@ -64,7 +64,7 @@ pub enum HermiteError {
     #[error("every point must have the same dimension d ≥ 1")]
     DimensionMismatch,
     /// A piecewise interpolation asked for more segments than
-    /// [`piecewise::MAX_SEGMENTS`](crate::algo::hermite::piecewise::MAX_SEGMENTS).
+    /// [`piecewise::MAX_SEGMENTS`].
     #[error("segments: at most {max} segments, got {0}", max = crate::algo::hermite::piecewise::MAX_SEGMENTS)]
     TooManySegments(usize),
     /// More derivatives per joint than a piecewise interpolation supports.
