@@ -148,3 +148,59 @@ proptest! {
         }
     }
 }
+
+proptest! {
+    #![proptest_config(config())]
+
+    #[test]
+    fn gerbs_bases_and_dubins(a in hostile_f64(), b in hostile_f64(), lambda in hostile_f64(), sigma in hostile_f64(), n in hostile_count(), i in 0u32..40, t in hostile_f64()) {
+        use trajverify::algo::gerbs::dubins::shortest;
+        use trajverify::algo::gerbs::erbs::{CentreReading, Erbs, ErbsParams};
+        use trajverify::algo::gerbs::Knots;
+        let _ = no_panic("Knots::new", || Knots::new(vec![0.0, a, b, 1.0]))?;
+        if n <= 1000 {
+            let _ = no_panic("Knots::uniform", || Knots::<f64>::uniform(n, &()))?;
+            let _ = no_panic("Bfbs::uniform", || Bfbs::uniform(i, n))?;
+        }
+        if let Ok(params) = no_panic("ErbsParams::new", || ErbsParams::new(a.abs(), 1.0, 1.0, lambda, sigma))? {
+            let Ok(knots) = Knots::<f64>::uniform(4, &()) else { return Ok(()) };
+            if let Ok(erbs) = no_panic("Erbs::new", || Erbs::new(&knots, vec![params], CentreReading::Cited))? {
+                let spec = PathSpec::new(vec![[0.0, 0.0], [300.0, 100.0], [600.0, -50.0], [900.0, 150.0]], 80.0, &());
+                if let Ok(path) = no_panic("ERBS path", || GerbsPath::new(&spec, erbs))? {
+                    if let Ok(p) = no_panic("ERBS at", || path.at(&t, Side::Right))? {
+                        prop_assert!(p.curvature.is_finite() && p.point.iter().all(|v| v.is_finite()), "Ok holding {p:?}");
+                    }
+                }
+            }
+        }
+        if let Some(d) = no_panic("Dubins", || shortest(&[0.0, 0.0, a], &[b, 1.0, 0.0], &lambda))? {
+            prop_assert!(d.total().is_finite() && d.lengths.iter().all(|l| l.is_finite()), "Some holding {:?}", d.lengths);
+        }
+    }
+
+    #[test]
+    fn interpolants_and_proofs(x in hostile_f64(), t0 in hostile_f64(), t1 in hostile_f64(), segments in hostile_count(), m in hostile_count(), degree in 0usize..8, target in hostile_f64()) {
+        use trajverify::algo::hermite::piecewise::interpolate_curve;
+        use trajverify::curve::enclosure::proven_error;
+        use trajverify::curve::spline::ClampedSpline;
+        use trajverify::scalar::ball::Ball;
+        use trajverify::scalar::Field;
+        let curve = ExprCurve::parse("[cos(t), sin(t), t]").expect("a curve");
+        let c = curve.compile::<f64>(&());
+        let small = |n: usize| if n <= 64 || n > 1 << 20 { n } else { 8 };
+        if let Ok(pw) = no_panic("interpolate_curve", || interpolate_curve(&c, (&t0, &t1), small(segments), m.min(40)))? {
+            let (lo, hi) = pw.domain();
+            if let Ok(p) = no_panic("point", || pw.point(&((lo + hi) / 2.0)))? {
+                prop_assert!(p.iter().all(|v| v.is_finite()), "Ok holding {p:?}");
+            }
+        }
+        let times = [0.0, 1.0, x, 3.0, 4.0, 5.0, 6.0, 7.0];
+        let _ = no_panic("ClampedSpline", || ClampedSpline::interpolate(degree, &times, &[[x, 0.0, 1.0]; 8]))?;
+        let cb = curve.compile::<Ball>(&64);
+        let (a, b) = (Ball::from_i64(0, &64), Ball::from_i64(1, &64));
+        let Ok(pw) = fit(&cb, &a, &b, &FitOptions { segments: 1, ..FitOptions::default() }) else { return Ok(()) };
+        if let Ok(e) = no_panic("proven_error", || proven_error(&cb, &pw, target, 2000))? {
+            prop_assert!(e.lower.is_finite() && e.upper.is_finite() && e.lower <= e.upper, "{e:?}");
+        }
+    }
+}

@@ -637,7 +637,7 @@ fn exact<T: Field>(x: &T) -> Option<BigRational> {
 
 /// The shortest Dubins path of radius `radius` from each pose (W_i, heading_i) to the next,
 /// decided exactly on the values as given (see the module doc); `Err(i)` when leg i (0-based)
-/// has no decidable shortest path.
+/// has no decidable shortest path, or one whose lengths overflow the number type.
 pub fn through_poses<T: Real>(
     w: &[[T; 2]],
     headings: &[T],
@@ -659,7 +659,14 @@ pub fn through_poses<T: Real>(
                 })
             })()
             .ok_or(i)?;
-            plan(&leg, i).map(|p| p.path(&leg, &ctx)).map_err(|_| i)
+            let path = plan(&leg, i).map(|p| p.path(&leg, &ctx)).map_err(|_| i)?;
+            // Lengths that overflow the number type (a radius near 1e300) are no path.
+            let finite = path.lengths.iter().chain(&path.start).all(Field::is_finite);
+            if finite {
+                Ok(path)
+            } else {
+                Err(i)
+            }
         })
         .collect()
 }
