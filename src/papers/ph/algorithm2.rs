@@ -159,8 +159,11 @@ pub fn outcome(runs: &[LoopRun]) -> Outcome {
 /// their midpoint to 1, 2, … significant digits, with its digit count; `None` when none up to
 /// 30 digits is inside.
 fn shortest_decimal_between(low: &Float, high: &Float) -> Option<(BigRational, u32)> {
-    let mid = (low.clone() + high) / 2u32;
-    let mid = BigRational::from_float(mid.to_f64())?;
+    // The bounds as exact rationals, rounded inward to doubles (a decimal strictly between
+    // those is strictly between the Floats); no finite bound, no decimal.
+    let above = BigRational::from_float(low.to_f64_round(rug::float::Round::Up))?;
+    let below = BigRational::from_float(high.to_f64_round(rug::float::Round::Down))?;
+    let mid = (above.clone() + &below) / BigRational::from_integer(2.into());
     let exponent = mid.to_f64().abs().log10().floor() as i32;
     (1..=30).find_map(|digits: i32| {
         let scale = num_bigint::BigInt::from(10).pow((digits - 1 - exponent).unsigned_abs());
@@ -170,12 +173,7 @@ fn shortest_decimal_between(low: &Float, high: &Float) -> Option<(BigRational, u
             BigRational::from_integer(scale)
         };
         let rounded = (mid.clone() / &unit).round() * &unit;
-        let inside = rounded
-            > BigRational::from_float(low.to_f64_round(rug::float::Round::Up)).unwrap_or_default()
-            && rounded
-                < BigRational::from_float(high.to_f64_round(rug::float::Round::Down))
-                    .unwrap_or_default();
-        inside.then_some((rounded, digits.unsigned_abs()))
+        (rounded > above && rounded < below).then_some((rounded, digits.unsigned_abs()))
     })
 }
 
