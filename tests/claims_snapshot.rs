@@ -127,16 +127,13 @@ fn the_convergence_report_shows_its_numbers_as_computed() {
     use trajverify::report::convergence::{files, Described};
     audit::start();
     let curve = trajverify::curve::ExprCurve::parse("[cos(t), sin(2*t), t/5]").expect("parses");
-    let (a, b) = (
-        trajverify::scalar::BigRational::from_integer(0.into()),
-        trajverify::scalar::BigRational::from_integer(2.into()),
-    );
+    let interval = trajverify::curve::interval::Interval::new(0, 2).expect("0 < 2");
     let options = StudyOptions {
         method: Method::Hermite(2),
         levels: vec![1, 2, 3, 4, 5],
         ..StudyOptions::default()
     };
-    let result = study(&curve, (&a, &b), &options, &mut |_, _| {}).expect("the study runs");
+    let result = study(&curve, &interval, &options, &mut |_, _| {}).expect("the study runs");
     let described = Described {
         curve: "[cos(t), sin(2*t), t/5]",
         label: "test curve",

@@ -1757,3 +1757,51 @@ fn phodcos_balls_stay_finite_over_many_segments() {
         .as_str()
         .is_some_and(|v| v.starts_with("3.25")));
 }
+
+/// Interval ends may be constant expressions, kept exact: [0, 4π] is studied with 4π
+/// enclosed in the proof's balls; ends whose order cannot be decided, or that are not finite,
+/// are refused naming the option.
+#[test]
+fn report_convergence_takes_constant_interval_ends() {
+    let dir = std::env::temp_dir().join(format!("trajverify-conv-pi-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let (doc, md) = convergence_report(
+        &[
+            "--curve",
+            "[cos(t), sin(t), t/5]",
+            "--interval",
+            "0",
+            "4*pi",
+            "--levels",
+            "2-4",
+        ],
+        &dir,
+    )
+    .unwrap_or_else(|run| panic!("{}", run.stderr));
+    assert!(md.contains("on [0, 4*pi]"), "{md}");
+    let rows = doc["rows"].as_array().unwrap();
+    assert_eq!(rows.len(), 3);
+    assert!(rows.iter().all(|r| r["error_proven"].is_object()), "{doc}");
+    let _ = std::fs::remove_dir_all(&dir);
+    for (a, b, says) in [
+        ("pi", "4*atan(1)", "not decided"),
+        ("0", "ln(0)", "not a finite number"),
+        ("4*pi", "12", "need a < b"),
+        ("0", "2*t", "expression in t"),
+    ] {
+        let Err(run) = convergence_report(
+            &["--curve", "[cos(t), sin(t), t/5]", "--interval", a, b],
+            &dir,
+        ) else {
+            panic!("[{a}, {b}] was accepted");
+        };
+        assert_eq!(run.code, 2, "{}", run.stderr);
+        assert_eq!(run.stderr.trim().lines().count(), 1, "{}", run.stderr);
+        assert!(
+            run.stderr.contains("--interval") && run.stderr.contains(says),
+            "{}",
+            run.stderr
+        );
+        assert!(!dir.exists());
+    }
+}

@@ -5,6 +5,7 @@
 use trajverify::algo::ph::hermite::FreeParameters;
 use trajverify::algo::ph::piecewise::{certified_error, convert};
 use trajverify::curve::enclosure::proven_error;
+use trajverify::curve::interval::Interval;
 use trajverify::curve::{Curve, ExprCurve};
 use trajverify::scalar::ball::Ball;
 use trajverify::scalar::{BigRational, Field, Float, Real};
@@ -56,8 +57,7 @@ fn the_enclosure_contains_the_certified_maximum_and_is_narrow() {
         let e = proven_error(&curve, &pw, 1e-6, 200_000).unwrap();
         let certified = certified_error(
             |bits| c.compile::<Float>(&bits),
-            &a,
-            &b,
+            &Interval::new(a.clone(), b.clone()).unwrap(),
             n,
             4,
             &zero,
@@ -126,8 +126,7 @@ fn a_splines_enclosure_contains_the_certified_maximum_only_with_its_seams() {
     for n in [1usize, 8] {
         let certified = certified_error(
             |_| spline.clone(),
-            &a,
-            &b,
+            &Interval::new(a.clone(), b.clone()).unwrap(),
             n,
             4,
             &FreeParameters::zero(4, &()),
@@ -291,7 +290,7 @@ fn a_screened_search_finds_the_full_searchs_maximum_bit_for_bit() {
         let search = |screen: Option<&ErrorScreen>| {
             certified_error_screened(
                 |bits| c.compile::<Float>(&bits),
-                (&a, &b),
+                &Interval::new(a.clone(), b.clone()).unwrap(),
                 n,
                 4,
                 &zero,

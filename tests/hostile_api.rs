@@ -263,7 +263,7 @@ fn studies_check_precision_and_method() {
             proof: false,
         };
         let r = no_panic("study", || {
-            study(&curve, (&q(0), &q(1)), &options, &mut |_, _| {})
+            study(&curve, &Interval::unit(), &options, &mut |_, _| {})
         });
         let e = message(r);
         assert!(

@@ -42,17 +42,17 @@
 //!
 //! ```
 //! use trajverify::algo::convergence::{study, FitOutcome, Method, StudyOptions};
-//! use trajverify::curve::ExprCurve;
-//! use trajverify::scalar::BigRational;
+//! use trajverify::curve::{interval::Interval, ExprCurve};
 //!
 //! let curve = ExprCurve::parse("[cos(t), sin(t), t/5]").unwrap();
-//! let (a, b) = (BigRational::from_integer(0.into()), BigRational::from_integer(2.into()));
+//! // Ends are exact: rationals, doubles or constants such as "4*pi" (enclosed in balls).
+//! let interval = Interval::parse("0", "2").unwrap();
 //! let options = StudyOptions {
 //!     method: Method::Hermite(1),
 //!     levels: vec![2, 3, 4, 5, 6],
 //!     ..StudyOptions::default()
 //! };
-//! let result = study(&curve, (&a, &b), &options, &mut |_, _| {}).unwrap();
+//! let result = study(&curve, &interval, &options, &mut |_, _| {}).unwrap();
 //! // Cubic Hermite interpolation: order 4, and every error is proven.
 //! assert_eq!(result.expected.order, 4);
 //! match &result.fit {
@@ -66,12 +66,13 @@ use crate::curve::approx::{
     certified_max_error, conversion_error, BernsteinPieces, PiecewiseBernstein, DEFAULT_SAMPLES,
 };
 use crate::curve::enclosure::proven_error;
+use crate::curve::interval::Interval;
 use crate::curve::regularity::{self, Irregular, Regularity};
 use crate::curve::spline::{ClampedSpline, PeriodicSpline};
 use crate::curve::{Curve, ExprCurve};
 use crate::scalar::ball::Ball;
 use crate::scalar::certify::agreeing_digits;
-use crate::scalar::{BigRational, Field, Float, Real};
+use crate::scalar::{Field, Float, Real};
 use rug::float::Round;
 
 /// The deepest level accepted (2¹⁴ segments).
@@ -241,17 +242,17 @@ pub trait StudyCurve: Sync {
     /// when the curve is regular by construction.
     fn regularity(
         &self,
-        (a, b): (&BigRational, &BigRational),
+        interval: &Interval,
         order: usize,
         bits: u32,
     ) -> Result<Option<Regularity>, Irregular> {
-        regularity::check(&*self.in_ball(bits), (a, b), order, bits).map(Some)
+        regularity::check(&*self.in_ball(bits), interval, order, bits).map(Some)
     }
     /// Its size, max |coordinate| over 33 equally spaced points (the scale of the precision
     /// floor).
-    fn size(&self, (a, b): (&BigRational, &BigRational)) -> f64 {
+    fn size(&self, interval: &Interval) -> f64 {
         let c = self.in_f64();
-        let (a, b) = (a.to_f64(), b.to_f64());
+        let (a, b) = interval.to_f64();
         (0..=32)
             .map(|i| a + (b - a) * f64::from(i) / 32.0)
             .flat_map(|t| c.jet(&t, 0).into_iter().flatten())
@@ -313,7 +314,7 @@ macro_rules! spline_study_curve {
             }
             fn regularity(
                 &self,
-                _: (&BigRational, &BigRational),
+                _: &Interval,
                 _: usize,
                 _: u32,
             ) -> Result<Option<Regularity>, Irregular> {
@@ -360,9 +361,6 @@ pub enum StudyError {
     /// Bad levels.
     #[error("{0}")]
     Levels(String),
-    /// b ≤ a.
-    #[error("need a < b")]
-    Interval,
     /// A precision outside [`STUDY_BITS`].
     #[error("{0}")]
     Bits(String),
@@ -544,7 +542,8 @@ pub fn check_levels(levels: &[u32]) -> Result<(), StudyError> {
 /// Run the study of `curve` on [a, b]; `progress(level, segments)` is called after each level.
 ///
 /// # Errors
-/// [`StudyError::Interval`] unless a < b; [`StudyError::Levels`] as [`check_levels`];
+/// The interval is ordered by construction ([`Interval`]: its ends are exact, rounded to
+/// each precision, enclosed in balls for the proof). [`StudyError::Levels`] as [`check_levels`];
 /// [`StudyError::Bits`] for a precision outside [`STUDY_BITS`]; [`StudyError::Method`] for
 /// [`Method::Hermite`] above [`MAX_HERMITE_DERIVATIVES`];
 /// [`StudyError::Irregular`] when the regularity check fails (except `BeyondBallRange` without
@@ -552,13 +551,10 @@ pub fn check_levels(levels: &[u32]) -> Result<(), StudyError> {
 /// with a proof, its ball conversion fails. A failing f64 conversion is not an error.
 pub fn study<C: StudyCurve + ?Sized>(
     curve: &C,
-    (a, b): (&BigRational, &BigRational),
+    interval: &Interval,
     options: &StudyOptions,
     progress: &mut dyn FnMut(u32, usize),
 ) -> Result<Study, StudyError> {
-    if b <= a {
-        return Err(StudyError::Interval);
-    }
     check_levels(&options.levels)?;
     let (low, high) = STUDY_BITS;
     if !(low..=high).contains(&options.bits) {
@@ -575,20 +571,20 @@ pub fn study<C: StudyCurve + ?Sized>(
             )));
         }
     }
-    let regularity = match curve.regularity((a, b), method.derivatives(), options.bits) {
+    let regularity = match curve.regularity(interval, method.derivatives(), options.bits) {
         // Balls cannot enclose such values; without a proof MPFR carries them, and a
         // non-finite jet still stops the conversion at its joint.
         Err(Irregular::BeyondBallRange { .. }) if !options.proof => None,
         other => other?,
     };
-    let size = curve.size((a, b));
+    let size = curve.size(interval);
     let precision_floor = size * 2f64.powi(16 - options.bits.min(1000) as i32);
     let proof_floor = options
         .proof
         .then(|| 16.0 * size * 2f64.powi(-(options.bits.min(2000) as i32) / 2));
     let mut rows = Vec::with_capacity(options.levels.len());
     for &n in &options.levels {
-        rows.push(level(curve, (a, b), options, n, precision_floor)?);
+        rows.push(level(curve, interval, options, n, precision_floor)?);
         progress(n, 1 << n);
     }
     let orders = observed_orders(&rows);
@@ -631,7 +627,7 @@ pub fn study<C: StudyCurve + ?Sized>(
 /// Compute and classify one level.
 fn level<C: StudyCurve + ?Sized>(
     curve: &C,
-    (a, b): (&BigRational, &BigRational),
+    interval: &Interval,
     options: &StudyOptions,
     n: u32,
     floor: f64,
@@ -648,7 +644,7 @@ fn level<C: StudyCurve + ?Sized>(
     let e = certified_max_error(
         |p| curve.in_mpfr(p),
         |c, p| {
-            let (a, b) = (Float::from_rational(a, &p), Float::from_rational(b, &p));
+            let (a, b): (Float, Float) = interval.ends(&p);
             method.fit(&**c, (&a, &b), segments)
         },
         bits,
@@ -658,7 +654,8 @@ fn level<C: StudyCurve + ?Sized>(
     let sampled = (e.lo, e.hi);
     let proven = if options.proof {
         let c = curve.in_ball(bits);
-        let (a, b) = (Ball::from_rational(a, &bits), Ball::from_rational(b, &bits));
+        // Balls enclosing the exact ends: the proven error holds for the true interval.
+        let (a, b): (Ball, Ball) = interval.ends(&bits);
         let pw = method
             .fit(&*c, (&a, &b), segments)
             .map_err(failed("ball conversion"))?;
@@ -671,7 +668,7 @@ fn level<C: StudyCurve + ?Sized>(
     let f64_error = {
         let c = curve.in_f64();
         method
-            .fit(&*c, (&a.to_f64(), &b.to_f64()), segments)
+            .fit(&*c, (&interval.to_f64().0, &interval.to_f64().1), segments)
             .ok()
             .map(|pw| conversion_error(&*c, &pw, DEFAULT_SAMPLES).max)
             .filter(|x| x.is_finite())

@@ -153,7 +153,8 @@ pub enum ReportKind {
         /// interval must lie within the first and last times).
         #[arg(long, value_name = "CSV")]
         data: Option<PathBuf>,
-        /// The parameter interval a b.
+        /// The parameter interval a b: numbers ("0.5", "1/3") or constants ("4*pi"), kept exact
+        /// (rounded per precision, enclosed in balls for the proof).
         #[arg(long, num_args = 2, required = true, value_names = ["A", "B"], allow_hyphen_values = true)]
         interval: Vec<String>,
         /// The approximation: "phodcos" (C⁴ PH curves, paper 001; expected order 6) or

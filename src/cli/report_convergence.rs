@@ -11,10 +11,11 @@ use super::budget;
 use super::input::{fail, InputError};
 use super::Failure;
 use crate::algo::convergence::{self, Method, StudyCurve, StudyOptions};
+use crate::curve::interval::Interval;
 use crate::curve::spline::{ClampedSpline, PeriodicSpline};
 use crate::curve::ExprCurve;
 use crate::report::convergence::Described;
-use crate::scalar::{BigRational, Field, ScalarKind};
+use crate::scalar::{Field, ScalarKind};
 use std::path::Path;
 use std::time::Instant;
 
@@ -157,22 +158,16 @@ fn parse_levels(text: &str) -> Result<Vec<u32>, InputError> {
 
 /// The options that do not depend on the curve, checked before any data is read.
 struct Options {
-    a: BigRational,
-    b: BigRational,
+    interval: Interval,
     study: StudyOptions,
 }
 
 fn options(r: &Request) -> Result<Options, InputError> {
     let method =
         Method::parse(&r.method).map_err(|e| InputError(format!("option --method: {e}")))?;
-    let read = |s: &str| {
-        crate::scalar::parse::parse_rational(s)
-            .map_err(|_| InputError(format!("option --interval: {s:?} is not a number")))
-    };
-    let (a, b) = (read(&r.interval.0)?, read(&r.interval.1)?);
-    if b <= a {
-        return fail("option --interval: need a < b");
-    }
+    // Each end a number or a constant expression ("4*pi"), kept exact.
+    let interval = Interval::parse(&r.interval.0, &r.interval.1)
+        .map_err(|e| InputError(format!("option --{e}")))?;
     let levels = parse_levels(&r.levels)?;
     let (bits, proof) = match r.scalar {
         ScalarKind::Ball(bits) => (bits, true),
@@ -180,8 +175,7 @@ fn options(r: &Request) -> Result<Options, InputError> {
         other => return fail(format!("option --scalar: {other} is not available here: the report proves with ball:<bits> or samples with mpfr:<bits>")),
     };
     Ok(Options {
-        a,
-        b,
+        interval,
         study: StudyOptions {
             method,
             levels,
@@ -200,7 +194,10 @@ fn check_budget(r: &Request, curve: &Parsed, o: &Options) -> Result<(), InputErr
     let levels = &o.study.levels;
     let segments: f64 = levels.iter().map(|&n| f64::from(n).exp2()).sum();
     let proven = o.study.proof;
-    let width = (o.b.clone() - &o.a).to_f64();
+    let width = {
+        let (a, b) = o.interval.to_f64();
+        b - a
+    };
     let (per_segment, knots) = match curve {
         Parsed::Expression(_) => (if proven { 1.7e-3 } else { 6e-4 }, 0.0),
         Parsed::Closed(s, rows) => {
@@ -244,7 +241,10 @@ pub fn run(r: &Request, out: &Path) -> Result<String, Failure> {
     if let Parsed::Open(spline, _) = &curve {
         // An open curve is known only between its first and last samples.
         let (first, last) = spline.domain();
-        if o.a.to_f64() < first || o.b.to_f64() > last {
+        // Decided on floats around the exact ends, so an end a rounding would move inside
+        // the data is refused.
+        let (lo, hi) = o.interval.enclosure(128);
+        if lo < first || hi > last {
             return Err(Failure::Usage(format!("option --interval: an open curve's data cover only [{first}, {last}] (the first and last times)")));
         }
     }
@@ -256,7 +256,7 @@ pub fn run(r: &Request, out: &Path) -> Result<String, Failure> {
             start.elapsed().as_secs_f64()
         );
     };
-    let study = convergence::study(curve.study_curve(), (&o.a, &o.b), &o.study, &mut progress)
+    let study = convergence::study(curve.study_curve(), &o.interval, &o.study, &mut progress)
         .map_err(|e| match e {
             convergence::StudyError::Irregular(i) => Failure::Usage(format!(
                 "option --curve: on [{}, {}] {i}",

@@ -172,7 +172,8 @@ fn read_curve(
     // segment's end).
     match crate::curve::regularity::check(
         &curve.compile::<crate::scalar::ball::Ball>(&128),
-        (&a, &b),
+        &crate::curve::interval::Interval::new(a.clone(), b.clone())
+            .map_err(|e| InputError(format!("field \"interval\": {e}")))?,
         4,
         128,
     ) {

@@ -132,7 +132,24 @@ pub enum ExactReal {
     Expr(Expr),
 }
 
+impl From<BigRational> for ExactReal {
+    fn from(q: BigRational) -> Self {
+        ExactReal::Exact(q)
+    }
+}
+
+impl From<i64> for ExactReal {
+    fn from(n: i64) -> Self {
+        ExactReal::Exact(BigRational::from_integer(n.into()))
+    }
+}
+
 impl ExactReal {
+    /// A double taken exactly (every finite double is a rational); `None` for NaN and ±∞.
+    pub fn from_f64(x: f64) -> Option<Self> {
+        BigRational::from_float(x).map(ExactReal::Exact)
+    }
+
     /// The value in the number type `T` (rounded once for a rational; for an expression,
     /// each operation rounded in `T`, so a ball encloses it).
     pub fn eval<T: Real>(&self, ctx: &T::Ctx) -> T {

@@ -12,6 +12,7 @@ pub mod enclosure;
 pub mod expr;
 pub mod function;
 pub mod integral;
+pub mod interval;
 pub mod parametric;
 pub mod regularity;
 pub mod spline;

@@ -13,9 +13,10 @@
 //! checked first. The smallest and largest ‖γ′‖ seen bound the curve's speed, from which a
 //! near-cusp is reported ([`Regularity::speed_ratio`]).
 
+use super::interval::Interval;
 use super::Curve;
 use crate::scalar::ball::Ball;
-use crate::scalar::{BigRational, Field, Float};
+use crate::scalar::{Field, Float};
 use rug::float::Round;
 
 /// Why a curve is not regular on the interval.
@@ -88,25 +89,25 @@ const MIN_RELATIVE_WIDTH: f64 = 1e-12;
 /// box is narrower than 10⁻¹²·(b − a) or 20 000 boxes have been evaluated.
 pub fn check<C: Curve<Ball> + ?Sized>(
     curve: &C,
-    (a, b): (&BigRational, &BigRational),
+    interval: &Interval,
     order: usize,
     bits: u32,
 ) -> Result<Regularity, Irregular> {
     let order = order.max(1);
-    let (a_f, b_f) = (
-        Float::with_val(bits, crate::scalar::mpfr_rational(a)),
-        Float::with_val(bits, crate::scalar::mpfr_rational(b)),
-    );
+    // Floats around the exact ends (equal to them when they are floats at `bits`): the
+    // proof covers the true interval.
+    let (a_f, b_f) = interval.enclosure(bits);
     for end in [&a_f, &b_f] {
         point(curve, end, order)?;
     }
     let width = Float::with_val(bits, &b_f - &a_f).to_f64();
+    let start = a_f.to_f64();
     let mut boxes = vec![(a_f, b_f)];
     let mut seen = 0usize;
     let mut proven = Regularity {
         min_speed: f64::INFINITY,
         max_speed: 0.0,
-        slowest_at: a.to_f64(),
+        slowest_at: start,
     };
     while let Some((lo, hi)) = boxes.pop() {
         seen += 1;
@@ -198,13 +199,9 @@ mod tests {
     use super::*;
     use crate::curve::ExprCurve;
 
-    fn q(n: i64) -> BigRational {
-        BigRational::from_integer(n.into())
-    }
-
     fn verdict(text: &str, a: i64, b: i64) -> Result<Regularity, Irregular> {
         let c = ExprCurve::parse(text).unwrap().compile::<Ball>(&128);
-        check(&c, (&q(a), &q(b)), 4, 128)
+        check(&c, &Interval::new(a, b).expect("a < b"), 4, 128)
     }
 
     #[test]

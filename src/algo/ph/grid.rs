@@ -354,7 +354,14 @@ pub fn certified_grid_error<C: Curve<Float>>(
     screen: Option<&ErrorScreen>,
 ) -> Result<(Float, Float), PhHermiteError> {
     let lo_curve = make(bits);
-    let pw = convert_at(&lo_curve, interval, segments, m, free, bits)?;
+    let ends_at = |p: u32| {
+        (
+            Float::from_rational(interval.0, &p),
+            Float::from_rational(interval.1, &p),
+        )
+    };
+    let (a, b) = ends_at(bits);
+    let pw = convert_at(&lo_curve, (&a, &b), segments, m, free, bits)?;
     let noise = evaluation_noise(&lo_curve, &pw);
     let screened = screen
         .and_then(|screen| screened_distances(&lo_curve, &pw, (interval, ts), screen, &noise));
@@ -369,7 +376,8 @@ pub fn certified_grid_error<C: Curve<Float>>(
     let mut max_hi = Float::new(hi_bits);
     for (i, k, _) in d.iter().filter(|(_, _, x)| *x >= max_lo.clone() - &noise) {
         let k = *k;
-        let (seg, t0, h) = segment_at(&hi_curve, interval, (segments, k), m, free, hi_bits)?;
+        let (a, b) = ends_at(hi_bits);
+        let (seg, t0, h) = segment_at(&hi_curve, (&a, &b), (segments, k), m, free, hi_bits)?;
         // ξ exactly: (t − t_k)/h from the rational t.
         let xi_hi = (Float::from_rational(&ts[*i], &hi_bits) - &t0) / &h;
         let value = SegmentDistance::new(&hi_curve, &seg.control_points(), &t0, &h)

@@ -24,6 +24,7 @@ pub use crate::curve::approx::{
     CertifiedError, ConversionError, DEFAULT_SAMPLES,
 };
 use crate::curve::approx::{locate, locate_in_domain, pieces_breakpoints, pieces_derivatives};
+use crate::curve::interval::Interval;
 use crate::curve::parametric::{CurveError, Frame, ParamCurve, ParamCurveArclen, ParamCurveFrame};
 use crate::curve::taylor::Taylor;
 use crate::curve::Curve;
@@ -562,42 +563,34 @@ pub fn sample_points<T: Real>(pw: &PiecewisePh<T>, per_segment: usize) -> Vec<[T
     out
 }
 
-/// A uniform piecewise conversion of `curve` on [a, b] (given exactly) at `bits`, without the
-/// roll correction (positions do not depend on it).
+/// A uniform piecewise conversion of `curve` on [a, b] (the ends rounded to `bits` by the
+/// caller) at `bits`, without the roll correction (positions do not depend on it).
 pub(super) fn convert_at<C: Curve<Float>>(
     curve: &C,
-    (a, b): (&BigRational, &BigRational),
+    (a, b): (&Float, &Float),
     segments: usize,
     m: usize,
     free: &FreeParameters<BigRational>,
     bits: u32,
 ) -> Result<PiecewisePh<Float>, PhHermiteError> {
-    let (a, b) = (
-        Float::from_rational(a, &bits),
-        Float::from_rational(b, &bits),
-    );
     let free = free.map(|x| Float::from_rational(x, &bits));
-    convert(curve, &a, &b, segments, m, &free, false)
+    convert(curve, a, b, segments, m, &free, false)
 }
 
 /// Segment k of that conversion alone, at `bits`: the PH curve, its start t_k and the step h.
 pub(super) fn segment_at<C: Curve<Float>>(
     curve: &C,
-    (a, b): (&BigRational, &BigRational),
+    (a, b): (&Float, &Float),
     (segments, k): (usize, usize),
     m: usize,
     free: &FreeParameters<BigRational>,
     bits: u32,
 ) -> Result<(PhCurve<Float>, Float, Float), PhHermiteError> {
-    let (a, b) = (
-        Float::from_rational(a, &bits),
-        Float::from_rational(b, &bits),
-    );
     let free = free.map(|x| Float::from_rational(x, &bits));
-    let h = (b.clone() - &a) / &Float::from_i64(segments as i64, &bits);
-    let jet_at = |j: usize| segment_jet(curve, &knot(&a, &b, segments, j), &h, m);
+    let h = (b.clone() - a) / &Float::from_i64(segments as i64, &bits);
+    let jet_at = |j: usize| segment_jet(curve, &knot(a, b, segments, j), &h, m);
     let seg = interpolate(&HermiteData::from_jets(&jet_at(k), &jet_at(k + 1))?, &free)?;
-    Ok((seg, knot(&a, &b, segments, k), h))
+    Ok((seg, knot(a, b, segments, k), h))
 }
 
 /// The observed convergence between two refinement levels (segments doubled): the ratio
@@ -620,20 +613,20 @@ pub fn observed_order<T: Real>(coarse: &T, fine: &T) -> Option<(T, T)> {
 /// sampling and the refinement are the same at both precisions).
 ///
 /// # Errors
-/// Those of [`convert`] at `bits` (a, b rounded to `bits`); those of [`interpolate`] for the
+/// Those of [`convert`] at `bits` (a, b rounded to `bits`: an end like 4π is exact in the
+/// [`Interval`] and rounded at each precision); those of [`interpolate`] for the
 /// maximum's segment rebuilt at `hi_bits` (its data are not checked for finiteness there).
 #[allow(clippy::too_many_arguments)]
 pub fn certified_error<C: Curve<Float>>(
     make: impl Fn(u32) -> C,
-    a: &BigRational,
-    b: &BigRational,
+    interval: &Interval,
     segments: usize,
     m: usize,
     free: &FreeParameters<BigRational>,
     bits: u32,
     hi_bits: u32,
 ) -> Result<CertifiedError, PhHermiteError> {
-    certified_error_screened(make, (a, b), segments, m, free, (bits, hi_bits), None)
+    certified_error_screened(make, interval, segments, m, free, (bits, hi_bits), None)
 }
 
 /// [`certified_error`] that, given an [`ErrorScreen`] of the same conversion, searches only
@@ -644,7 +637,7 @@ pub fn certified_error<C: Curve<Float>>(
 /// Those of [`certified_error`].
 pub fn certified_error_screened<C: Curve<Float>>(
     make: impl Fn(u32) -> C,
-    (a, b): (&BigRational, &BigRational),
+    interval: &Interval,
     segments: usize,
     m: usize,
     free: &FreeParameters<BigRational>,
@@ -652,7 +645,8 @@ pub fn certified_error_screened<C: Curve<Float>>(
     screen: Option<&ErrorScreen>,
 ) -> Result<CertifiedError, PhHermiteError> {
     let lo_curve = make(bits);
-    let pw = convert_at(&lo_curve, (a, b), segments, m, free, bits)?;
+    let (a, b): (Float, Float) = interval.ends(&bits);
+    let pw = convert_at(&lo_curve, (&a, &b), segments, m, free, bits)?;
     let reaching = screen.and_then(|screen| {
         let seed = conversion_error_among(&lo_curve, &pw, DEFAULT_SAMPLES, &[screen.seed_segment]);
         let noise = evaluation_noise(&lo_curve, &pw);
@@ -664,7 +658,8 @@ pub fn certified_error_screened<C: Curve<Float>>(
     };
     let hi_curve = make(hi_bits);
     let k = e.segment;
-    let (seg, t0, h) = segment_at(&hi_curve, (a, b), (segments, k), m, free, hi_bits)?;
+    let (a, b): (Float, Float) = interval.ends(&hi_bits);
+    let (seg, t0, h) = segment_at(&hi_curve, (&a, &b), (segments, k), m, free, hi_bits)?;
     Ok(recertify(e, &hi_curve, &seg.control_points(), (&t0, &h)))
 }
 

@@ -10,6 +10,7 @@
 use super::super::{Outcome, Verdict};
 use crate::algo::ph::hermite::FreeParameters;
 use crate::algo::ph::piecewise::{certified_error, convert, CertifiedError, PiecewisePh};
+use crate::curve::interval::Interval;
 use crate::curve::spline::PeriodicSpline;
 use crate::curve::taylor::Taylor;
 use crate::curve::Curve;
@@ -171,14 +172,22 @@ pub fn compute() -> Nrho {
         convert(&spline, &0.0, &period, SEGMENTS, 4, &free, true).expect("NRHO rotating");
     let inertial = convert(&Inertial(&spline), &0.0, &period, SEGMENTS, 4, &free, true)
         .expect("NRHO inertial");
-    let (a, b) = (rational(0.0), rational(period));
+    let interval = Interval::new(rational(0.0), rational(period)).expect("a positive period");
     let zero = FreeParameters::zero(4, &());
     let bits = super::table1::BITS;
     let hi = super::table1::HI_BITS;
     let error_rotating =
-        certified_error(|_| &spline, &a, &b, SEGMENTS, 4, &zero, bits, hi).expect("NRHO");
-    let error_inertial =
-        certified_error(|_| Inertial(&spline), &a, &b, SEGMENTS, 4, &zero, bits, hi).expect("NRHO");
+        certified_error(|_| &spline, &interval, SEGMENTS, 4, &zero, bits, hi).expect("NRHO");
+    let error_inertial = certified_error(
+        |_| Inertial(&spline),
+        &interval,
+        SEGMENTS,
+        4,
+        &zero,
+        bits,
+        hi,
+    )
+    .expect("NRHO");
     let jumps_rotating = continuity_bounds(&spline, period);
     Nrho {
         rotating,

@@ -16,6 +16,7 @@ use crate::algo::ph::piecewise::{
     DEFAULT_SAMPLES,
 };
 use crate::curve::enclosure::ErrorEnclosure;
+use crate::curve::interval::Interval;
 use crate::curve::CompiledCurve;
 use crate::curve::ExprCurve;
 use crate::scalar::ball::Ball;
@@ -98,7 +99,7 @@ fn level_error(
 ) -> CertifiedError {
     certified_error_screened(
         |bits| curve().compile::<Float>(&bits),
-        (&rational(0), &rational(1)),
+        &Interval::unit(),
         segments,
         m,
         free,
