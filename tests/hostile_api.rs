@@ -8,6 +8,7 @@ use trajverify::algo::gerbs::bfbs::Bfbs;
 use trajverify::algo::gerbs::erbs::{CentreReading, Erbs, ErbsParams};
 use trajverify::algo::gerbs::path::{GerbsPath, PathSpec};
 use trajverify::algo::gerbs::{Knots, Side};
+use trajverify::curve::interval::Interval;
 use trajverify::curve::parametric::ParamCurve;
 use trajverify::scalar::BigRational;
 
@@ -297,6 +298,21 @@ fn marins_parametrization_refuses_bad_points_and_ignores_scale() {
     // The knots end at 0 and 1 exactly, and do not depend on the points' scale.
     let unit = parametrize(&points, &default).expect("four points");
     assert_eq!((unit.knots[0], unit.knots[3]), (0.0, 1.0));
+    // The result says whether the minimization converged; a budget of one iteration of the
+    // descent is reported as not converged, with increasing knots from the last iterate.
+    assert!(unit.converged(), "{unit:?}");
+    let wavy: Vec<[f64; 2]> = (0..40)
+        .map(|i| [f64::from(i), f64::from((i * 7) % 13)])
+        .collect();
+    let budget = ParametrizeOptions {
+        max_iterations: 1,
+        ..ParametrizeOptions::default()
+    };
+    let cut = parametrize(&wavy, &budget).expect("a budget is not an error");
+    assert!(!cut.descent_converged && !cut.converged(), "{cut:?}");
+    assert_eq!(cut.descent_iterations, 1);
+    assert!(cut.knots.windows(2).all(|w| w[0] < w[1]));
+    assert!(parametrize(&wavy, &default).expect("40 points").converged());
     for s in [1e-200, 1e200] {
         let scaled: Vec<[f64; 2]> = points.iter().map(|p| [p[0] * s, p[1] * s]).collect();
         let m = parametrize(&scaled, &default).expect("scaled points");

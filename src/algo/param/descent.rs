@@ -126,10 +126,20 @@ pub fn polish<T: Real>(
     alpha: &[T],
     form: Objective,
 ) -> Result<Vec<T>, SplineError> {
+    polish_outcome(rough, z, alpha, form).map(|o| o.h)
+}
+
+/// [`polish`], saying how Newton's method stopped.
+fn polish_outcome<T: Real>(
+    rough: &Descent<f64>,
+    z: &[Vec<T>],
+    alpha: &[T],
+    form: Objective,
+) -> Result<NewtonOutcome<T>, SplineError> {
     check_problem(rough.h.len(), z, alpha)?;
     let ctx = alpha[0].ctx();
     let start = rough.h.iter().map(|x| T::from_f64(*x, &ctx)).collect();
-    newton_polish(start, z, alpha, form, NEWTON_MAX_STEPS)
+    newton_polish_outcome(start, z, alpha, form, NEWTON_MAX_STEPS)
 }
 
 /// A minimizing parametrization with the quantities that describe it.
@@ -143,6 +153,24 @@ pub struct Minimum<T> {
     pub chord_objective: T,
     /// ‖π_B(∇G)‖ at the minimizer: the stopping rule's quantity, at the working precision.
     pub projected_gradient_norm: T,
+    /// The f64 gradient projection's iterations.
+    pub descent_iterations: usize,
+    /// Whether the gradient projection met its relative tolerance ([`DESCENT_TOLERANCE`])
+    /// rather than stopping on its iteration budget.
+    pub descent_converged: bool,
+    /// Newton's steps in the working precision.
+    pub newton_steps: usize,
+    /// Whether Newton's method stopped because a step no longer changed h (at 4 ulps of the
+    /// working precision), rather than on [`NEWTON_MAX_STEPS`] or a singular system.
+    pub newton_converged: bool,
+}
+
+impl<T> Minimum<T> {
+    /// Whether both stages converged: the knots are the minimizer to the working precision.
+    /// When it is false the knots are the last iterate, not a minimizer.
+    pub fn converged(&self) -> bool {
+        self.descent_converged && self.newton_converged
+    }
 }
 
 /// Stage two with its summary: [`polish`] in the number type of `z`, then G there and at
@@ -160,7 +188,8 @@ pub fn refine<T: Real>(
 ) -> Result<Minimum<T>, SplineError> {
     check_problem(rough.h.len(), z, alpha)?;
     let ctx = alpha[0].ctx();
-    let h = polish(rough, z, alpha, form)?;
+    let newton = polish_outcome(rough, z, alpha, form)?;
+    let h = newton.h;
     let objective_at = objective(&h, z, alpha, form)?;
     let chord_objective = objective(&chord_length_spacing(z), z, alpha, form)?;
     let p = project(&gradient(&h, z, alpha, form)?);
@@ -173,6 +202,10 @@ pub fn refine<T: Real>(
         objective: objective_at,
         chord_objective,
         projected_gradient_norm,
+        descent_iterations: rough.iterations,
+        descent_converged: rough.converged,
+        newton_steps: newton.steps,
+        newton_converged: newton.converged,
     })
 }
 
@@ -335,12 +368,38 @@ fn illinois<T: Real>(
 /// problem, or a spacing that is not positive and finite. A singular Newton system ends the
 /// iteration without an error.
 pub fn newton_polish<T: Real>(
-    mut h: Vec<T>,
+    h: Vec<T>,
     z: &[Vec<T>],
     alpha: &[T],
     form: Objective,
     steps: usize,
 ) -> Result<Vec<T>, SplineError> {
+    newton_polish_outcome(h, z, alpha, form, steps).map(|o| o.h)
+}
+
+/// Where Newton's method stopped and why.
+#[derive(Clone, Debug)]
+pub struct NewtonOutcome<T> {
+    /// The last iterate.
+    pub h: Vec<T>,
+    /// The steps taken.
+    pub steps: usize,
+    /// Whether the last step was below 4 ulps of the working precision (otherwise the step
+    /// limit or a singular system stopped it).
+    pub converged: bool,
+}
+
+/// [`newton_polish`], saying how it stopped.
+///
+/// # Errors
+/// Those of [`newton_polish`].
+pub fn newton_polish_outcome<T: Real>(
+    mut h: Vec<T>,
+    z: &[Vec<T>],
+    alpha: &[T],
+    form: Objective,
+    steps: usize,
+) -> Result<NewtonOutcome<T>, SplineError> {
     use crate::numeric::linalg::{solve, Matrix};
     use crate::scalar::dual::Dual;
     let ctx = super::objective::check_spacing(&h, z, alpha)?;
@@ -350,6 +409,7 @@ pub fn newton_polish<T: Real>(
         .map(|c| c.iter().cloned().map(Dual::constant).collect())
         .collect();
     let ad: Vec<Dual<T>> = alpha.iter().cloned().map(Dual::constant).collect();
+    let (mut taken, mut converged) = (0, false);
     for _ in 0..steps {
         let g = gradient(&h, z, alpha, form)?;
         let mut hessian = Matrix::zeros(n + 1, n + 1, &ctx);
@@ -375,11 +435,17 @@ pub fn newton_polish<T: Real>(
             .iter()
             .fold(T::zero_in(&ctx), |m, d| crate::scalar::max_of(m, d.abs()));
         h = h.iter().zip(&delta).map(|(x, d)| x.clone() + d).collect();
+        taken += 1;
         if size <= T::epsilon(&ctx) * &T::from_i64(4, &ctx) {
+            converged = true;
             break;
         }
     }
-    Ok(h)
+    Ok(NewtonOutcome {
+        h,
+        steps: taken,
+        converged,
+    })
 }
 
 /// Options of [`parametrize`]: which form of G, and the weights α of the components.
@@ -389,6 +455,9 @@ pub struct ParametrizeOptions<T> {
     pub objective: Objective,
     /// One weight α_l per coordinate (Eq. 31's 1/α_l²); `None`: every α_l = 1.
     pub alpha: Option<Vec<T>>,
+    /// The gradient projection's budget: it stops after this many iterations
+    /// ([`DESCENT_MAX_ITERATIONS`] by default) and the result says it did not converge.
+    pub max_iterations: usize,
 }
 
 impl<T> Default for ParametrizeOptions<T> {
@@ -396,6 +465,7 @@ impl<T> Default for ParametrizeOptions<T> {
         ParametrizeOptions {
             objective: Objective::Exact,
             alpha: None,
+            max_iterations: DESCENT_MAX_ITERATIONS,
         }
     }
 }
@@ -429,6 +499,7 @@ pub const MAX_PARAMETRIZE_POINTS: usize = 1000;
 /// assert_eq!(m.knots.len(), 4);
 /// assert!(m.knots.windows(2).all(|w| w[0] < w[1]));
 /// assert!(m.objective <= m.chord_objective);
+/// assert!(m.converged());
 /// ```
 pub fn parametrize<T: Real, const D: usize>(
     points: &[[T; D]],
@@ -501,12 +572,13 @@ pub fn parametrize<T: Real, const D: usize>(
         .map(|c| c.iter().map(Field::to_f64).collect())
         .collect();
     let a64: Vec<f64> = alpha.iter().map(Field::to_f64).collect();
-    let rough = descend(
+    let rough = gradient_projection(
         chord_length_spacing(&z64),
         &z64,
         &a64,
         options.objective,
-        &mut |_, _| {},
+        &DESCENT_TOLERANCE,
+        options.max_iterations,
     )?;
     let mut minimum = refine(&rough, &z, &alpha, options.objective)?;
     // G and its gradient are quadratic in the points: back to the points as given.
