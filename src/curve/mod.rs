@@ -14,6 +14,7 @@ pub mod function;
 pub mod integral;
 pub mod interval;
 pub mod parametric;
+pub mod query;
 pub mod regularity;
 pub mod spline;
 pub mod taylor;

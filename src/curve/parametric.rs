@@ -103,6 +103,15 @@ pub enum CurveError {
         /// What is wrong.
         message: String,
     },
+    /// An argument that is not what the function is defined for (a point that is not
+    /// finite).
+    #[error("{field}: {message}")]
+    Argument {
+        /// The argument.
+        field: &'static str,
+        /// What is wrong.
+        message: String,
+    },
     /// The frame is not defined at this parameter (zero speed).
     #[error("t: the frame is not defined at t = {t} ({reason})")]
     Frame {
