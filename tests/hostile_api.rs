@@ -10,7 +10,6 @@ use trajverify::algo::gerbs::path::{GerbsPath, PathSpec};
 use trajverify::algo::gerbs::{Knots, Side};
 use trajverify::curve::interval::Interval;
 use trajverify::curve::parametric::ParamCurve;
-use trajverify::scalar::BigRational;
 
 /// Run `f`, failing the test with `what` if it panics.
 fn no_panic<R>(what: &str, f: impl FnOnce() -> R) -> R {
@@ -250,7 +249,6 @@ fn piecewise_ph_locate_and_clamped_splines_check_their_input() {
 fn studies_check_precision_and_method() {
     use trajverify::curve::ExprCurve;
     let curve = ExprCurve::parse("[sin(3*t), cos(2*t), t^2]").expect("a curve");
-    let q = |n: i64| BigRational::from_integer(n.into());
     for (bits, method) in [
         (0, Method::Phodcos),
         (1, Method::Phodcos),
