@@ -10,9 +10,10 @@ use trajverify::algo::ph::hermite::{interpolate, FreeParameters, HermiteData};
 use trajverify::algo::ph::piecewise::segment_jet;
 use trajverify::algo::ph::piecewise::{certified_error, convert};
 use trajverify::curve::enclosure::proven_error;
+use trajverify::curve::interval::Interval;
 use trajverify::curve::{Curve, ExprCurve};
 use trajverify::scalar::ball::Ball;
-use trajverify::scalar::{BigRational, Field, Float, Real};
+use trajverify::scalar::{Field, Float, Real};
 
 const CURVE: &str = "[1.5*sin(7.2*t), cos(9*t), exp(cos(1.8*t))]";
 
@@ -79,10 +80,7 @@ fn error_search(c: &mut Criterion) {
         .measurement_time(Duration::from_secs(4))
         .warm_up_time(Duration::from_millis(500));
     let curve = ExprCurve::parse(CURVE).expect("curve");
-    let (a, b) = (
-        BigRational::from_integer(0.into()),
-        BigRational::from_integer(1.into()),
-    );
+    let unit = Interval::unit();
     let zero = FreeParameters::zero(4, &());
     g.bench_function(
         BenchmarkId::new("mpfr128/256", "certified_error"),
@@ -90,8 +88,7 @@ fn error_search(c: &mut Criterion) {
             bench.iter(|| {
                 certified_error(
                     |bits| curve.compile::<Float>(&bits),
-                    &a,
-                    &b,
+                    &unit,
                     64,
                     4,
                     &zero,
