@@ -247,14 +247,17 @@ fn exact_ratios_with_a_zero_denominator_are_refused_not_fatal() {
 }
 
 #[test]
-fn knots_count_from_one_and_refuse_out_of_range_indices() {
-    use trajverify::algo::gerbs::Knots;
+fn knots_count_from_zero_and_refuse_out_of_range_indices() {
+    use trajverify::algo::gerbs::{Knots, Side};
     let knots = Knots::<f64>::uniform(5, &()).expect("knots");
-    assert_eq!(no_panic("Knots::get(0)", || knots.get(0)), None);
-    assert_eq!(knots.get(1), Some(&0.0));
-    assert_eq!(knots.get(3), Some(&0.25));
-    assert_eq!(knots.get(7), Some(&1.0));
-    assert_eq!(knots.get(8), None);
+    assert_eq!(knots.get(0), Some(&0.0));
+    assert_eq!(knots.get(2), Some(&0.25));
+    assert_eq!(knots.get(6), Some(&1.0));
+    assert_eq!(no_panic("Knots::get(7)", || knots.get(7)), None);
+    // Interval i runs from knot i to knot i + 1: 0.3 lies in interval 2 = [1/4, 1/2].
+    assert_eq!(knots.interval(&0.3, Side::Right), Some(2));
+    assert_eq!(knots.interval(&0.25, Side::Left), Some(1));
+    assert_eq!(knots.interval(&1.5, Side::Left), None);
 }
 
 #[test]

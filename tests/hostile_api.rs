@@ -46,18 +46,33 @@ fn message<T, E: std::fmt::Display>(r: Result<T, E>) -> String {
 #[test]
 fn gerbs_indices_counts_and_intervals_are_checked() {
     let path = bfbs_path();
+    // Indices count from 0: knots 0 … 6, intervals 0 … 5 (0 and 5 empty: doubled ends).
     let e = message(no_panic("at_on(0.3, 99)", || path.at_on(&0.3, 99)));
-    assert!(e.starts_with("j:"), "{e}");
+    assert!(e.starts_with("interval:"), "{e}");
+    let e = message(no_panic("at_on(0.3, 0)", || path.at_on(&0.3, 0)));
+    assert!(e.starts_with("interval:") && e.contains("empty"), "{e}");
     let e = message(no_panic("at_on(0.9, 2)", || path.at_on(&0.9, 2)));
     assert!(e.starts_with("t:"), "t outside interval 2 answered: {e}");
-    assert!(no_panic("at_on(NaN, 3)", || path.at_on(&f64::NAN, 3)).is_err());
+    assert!(no_panic("at_on(NaN, 2)", || path.at_on(&f64::NAN, 2)).is_err());
     let e = message(no_panic("at_knot(99)", || path.at_knot(99, Side::Left)));
-    assert!(e.starts_with("k:"), "{e}");
-    assert!(no_panic("at_knot(0)", || path.at_knot(0, Side::Right)).is_err());
+    assert!(e.starts_with("knot:"), "{e}");
+    let e = message(no_panic("at_knot(7)", || path.at_knot(7, Side::Right)));
+    assert!(e.starts_with("knot:") && e.contains("0 to 6"), "{e}");
+    let e = message(no_panic("series_on(0.3, 6)", || path.series_on(&0.3, 6, 2)));
+    assert!(e.starts_with("interval:"), "{e}");
     let e = message(no_panic("sample(usize::MAX)", || path.sample(usize::MAX)));
     assert!(e.starts_with("count:"), "{e}");
-    // The answers inside the ranges are unchanged: W2 at its knot t_3 = 1/4.
-    let w2 = path.at_knot(3, Side::Right).expect("knot 3");
+    // The answers inside the ranges: W1 at knot 0 (t = 0) and W2 at knot 2 (t = 1/4); the
+    // point at 0.3 on interval 2 is the path's point there.
+    let w1 = path.at_knot(0, Side::Right).expect("knot 0");
+    assert!(
+        w1.point[0].abs() < 1e-9 && w1.point[1].abs() < 1e-9,
+        "{:?}",
+        w1.point
+    );
+    let on = path.at_on(&0.3, 2).expect("interval 2");
+    assert_eq!(on.point, path.point(&0.3).expect("inside"));
+    let w2 = path.at_knot(2, Side::Right).expect("knot 2");
     assert!((w2.point[0] - 300.0).abs() < 1e-9 && (w2.point[1] - 100.0).abs() < 1e-9);
     assert_eq!(path.sample(11).expect("11 samples").len(), 11);
 }

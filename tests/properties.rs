@@ -389,7 +389,7 @@ mod gerbs {
     fn check_interpolation<B: Blend<f64>>(path: &GerbsPath<f64, B>, w: &[[i64; 2]], radius: i64) {
         let n = w.len();
         for i in 0..n {
-            let t = *path.knots().get(i + 2).unwrap();
+            let t = *path.knots().get(i + 1).unwrap();
             let p = path
                 .at(&t, if i + 1 == n { Side::Left } else { Side::Right })
                 .unwrap();
@@ -437,14 +437,14 @@ mod gerbs {
             let n = knots.basis_count();
             let bfbs = Bfbs::new(exponents[..n].to_vec()).expect("exponents");
             // The partition holds on [t_2, t_{n+1}] (all of [t_1, t_{n+2}] with doubled ends).
-            let (a, b) = (knots.get(2).unwrap().clone(), knots.get(n + 1).unwrap().clone());
+            let (a, b) = (knots.get(1).unwrap().clone(), knots.get(n).unwrap().clone());
             let t = a.clone() + (b.clone() - &a) * q(frac, 1000);
             for side in [Side::Left, Side::Right] {
                 // At t_2 from the left (and at t_(n+1) from the right) the derivatives are
                 // those of the end interval (t_1, t_2), where only one basis function lives
                 // unless the end knot is doubled: outside the partition's domain.
-                let outside = (t == a && side == Side::Left && *knots.get(1).unwrap() < a)
-                    || (t == b && side == Side::Right && b < *knots.get(n + 2).unwrap());
+                let outside = (t == a && side == Side::Left && *knots.get(0).unwrap() < a)
+                    || (t == b && side == Side::Right && b < *knots.get(n + 1).unwrap());
                 if outside {
                     continue;
                 }
@@ -499,8 +499,9 @@ mod gerbs {
             let after = GerbsPath::from_parts(base.knots().clone(), base.blend().clone(), curves.clone(), tan.clone()).unwrap();
             let base_e = GerbsPath::new(&sp, erbs(n, 3, 5)).expect("valid");
             let after_e = GerbsPath::from_parts(base_e.knots().clone(), base_e.blend().clone(), curves, tan).unwrap();
-            // B_{k+2} (paper numbering) carries c_{k+1}: support [t_{k+1}, t_{k+3}].
-            let (lo, hi) = (*base.knots().get(k + 1).unwrap(), *base.knots().get(k + 3).unwrap());
+            // B_{k+2} (paper numbering) carries c_{k+1}: support [t_{k+1}, t_{k+3}], knots k to k + 2
+            // counted from 0.
+            let (lo, hi) = (*base.knots().get(k).unwrap(), *base.knots().get(k + 2).unwrap());
             for s in samples {
                 let t = s as f64 / 1000.0;
                 if (lo..=hi).contains(&t) {
@@ -524,7 +525,7 @@ mod gerbs {
         let base = GerbsPath::new(&sp, Bfbs::uniform(2, 4).expect("exponents")).expect("valid");
         let after =
             GerbsPath::from_parts(base.knots().clone(), base.blend().clone(), curves, tan).unwrap();
-        let t = *base.knots().get(3).unwrap();
+        let t = *base.knots().get(2).unwrap();
         assert_ne!(
             base.at(&t, Side::Right).unwrap().point,
             after.at(&t, Side::Right).unwrap().point

@@ -362,7 +362,7 @@ impl BasisJob {
         for (i, q) in self.at.iter().enumerate() {
             // The knot interval and side are decided on the exact point, never on its
             // rounding (a point 1e-40 below a knot rounds onto it).
-            let Some(j) = self.knots.interval(q, self.side) else {
+            let Some(j) = self.knots.paper_interval(q, self.side) else {
                 rows.push(Out::List(Vec::new()));
                 continue;
             };
@@ -638,8 +638,8 @@ impl PathJob {
         let n = self.waypoints.len();
         let at_knots: Vec<_> = (0..n)
             .map(|i| {
-                // The knot t_{i+2} of waypoint i + 1 (from the inside at the ends).
-                path.at_knot(i + 2, if i + 1 == n { Side::Left } else { Side::Right })
+                // Knot i + 1 (the paper's t_{i+2}) of waypoint i + 1 (from the inside at the ends).
+                path.at_knot(i + 1, if i + 1 == n { Side::Left } else { Side::Right })
             })
             .collect::<Result<_, _>>()
             .map_err(gerbs_error)?;

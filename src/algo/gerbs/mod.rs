@@ -18,7 +18,14 @@
 //!
 //! [`path`] builds the local arcs and lines (Eqs. 19–24), Algorithm 1 (tangents and turn
 //! directions) and Algorithm 2 (the blended path); [`dubins`] is the shortest-path baseline of
-//! Fig. 7. Knots use the paper's numbering t_1 … t_{n+2}, stored from index 0.
+//! Fig. 7.
+//!
+//! **Indices count from 0** in the API an engineer calls: knot i ([`Knots::get`]; the paper's
+//! t_{i+1}), knot interval i from knot i to knot i + 1 ([`Knots::interval`]),
+//! [`path::GerbsPath::at_knot`], [`path::GerbsPath::at_on`], [`path::GerbsPath::series_on`].
+//! The [`Blend`] trait, [`Located`] and [`basis_series_on`] — what the implementer of a new
+//! kind of blend writes against — keep the paper's 1-based j of Eq. (6) (F_j on (t_j, t_{j+1})),
+//! so that their code reads like the paper's equations; each says so.
 //!
 //! The BFBS basis (i = 2) on the knots of Fig. 1 at t = 3/10, exactly and in f64: a partition
 //! of unity with B₃ = 2944/3125 and B₄ = 181/3125.
@@ -151,10 +158,10 @@ impl<T: Field> Knots<T> {
         Knots::new(t)
     }
 
-    /// Knot t_j in the paper's numbering (1-based): t_1 … t_{n+2}; `None` for j = 0 or
-    /// j > n + 2. ([`Knots::as_slice`] counts from 0: `as_slice()[j − 1]` is t_j.)
-    pub fn get(&self, j: usize) -> Option<&T> {
-        j.checked_sub(1).and_then(|i| self.t.get(i))
+    /// Knot i, counted from 0 like every index of the API (`get(i)` is the paper's
+    /// t_{i+1}); `None` past the last knot, i > n + 1.
+    pub fn get(&self, i: usize) -> Option<&T> {
+        self.t.get(i)
     }
 
     /// Knot t_j (1-based) for the algorithms, whose indices come from the knot vector
@@ -173,9 +180,16 @@ impl<T: Field> Knots<T> {
         &self.t
     }
 
-    /// The non-empty interval (t_j, t_{j+1}) holding t, with t_j ≤ t < t_{j+1} from the
-    /// right or t_j < t ≤ t_{j+1} from the left; `None` outside [t_1, t_{n+2}].
+    /// The non-empty knot interval i holding t, counted from 0 (from knot i to knot i + 1:
+    /// the paper's (t_{i+1}, t_{i+2})), with knot i ≤ t < knot i + 1 from the right or
+    /// knot i < t ≤ knot i + 1 from the left; `None` outside the knots' range.
     pub fn interval(&self, t: &T, side: Side) -> Option<usize> {
+        self.paper_interval(t, side).map(|j| j - 1)
+    }
+
+    /// [`Knots::interval`] in the paper's numbering: the j with t_j ≤ t < t_{j+1} (from
+    /// the right), 1 ≤ j ≤ n + 1, as the algorithms and the [`Blend`] trait count.
+    pub(crate) fn paper_interval(&self, t: &T, side: Side) -> Option<usize> {
         let m = self.t.len();
         (1..m)
             .filter(|&j| self.t[j - 1] < self.t[j])
@@ -315,12 +329,12 @@ pub fn basis_series<T: Field, B: Blend<T> + ?Sized>(
     order: usize,
     side: Side,
 ) -> Option<Vec<Taylor<T>>> {
-    let j = knots.interval(t, side)?;
+    let j = knots.paper_interval(t, side)?;
     Some(basis_series_on(knots, blend, t, j, order))
 }
 
-/// A parameter t in knot interval j (1-based, t_j ≤ t ≤ t_{j+1}) with its distances to the
-/// interval's ends. A caller with t exact chooses j on the exact value ([`Knots::interval`])
+/// A parameter t in knot interval j (the paper's 1-based j, t_j ≤ t ≤ t_{j+1}: interval
+/// j − 1 of [`Knots::interval`]) with its distances to the interval's ends. A caller with t exact chooses j on the exact value ([`Knots::interval`])
 /// and forms the distances exactly, rounding each once: rounding t onto a knot then switches
 /// no branch, and a basis function that vanishes at the knot like (t − t_j)^i keeps its
 /// relative accuracy (t − t_j formed from a rounded t would be 0).
@@ -425,10 +439,14 @@ mod tests {
         let r = |n: i64, d: i64| BigRational::new(n.into(), d.into());
         assert_eq!(k.at(3), &r(1, 4));
         assert_eq!(k.basis_count(), 5);
-        assert_eq!(k.interval(&r(1, 4), Side::Right), Some(3));
-        assert_eq!(k.interval(&r(1, 4), Side::Left), Some(2));
-        assert_eq!(k.interval(&r(0, 1), Side::Left), Some(2));
-        assert_eq!(k.interval(&r(1, 1), Side::Right), Some(5));
+        assert_eq!(k.paper_interval(&r(1, 4), Side::Right), Some(3));
+        assert_eq!(k.paper_interval(&r(1, 4), Side::Left), Some(2));
+        assert_eq!(k.paper_interval(&r(0, 1), Side::Left), Some(2));
+        assert_eq!(k.paper_interval(&r(1, 1), Side::Right), Some(5));
+        // The API counts from 0: knot 2 (= 1/4) to knot 3 from the right.
+        assert_eq!(k.interval(&r(1, 4), Side::Right), Some(2));
+        assert_eq!(k.interval(&r(1, 4), Side::Left), Some(1));
+        assert_eq!(k.get(2), Some(&r(1, 4)));
         assert!(Knots::new(vec![0.0, 0.5, 0.5, 1.0]).is_err());
         assert!(Knots::new(vec![0.0, 0.0, 0.5, 1.0, 1.0]).is_ok());
         assert!(Knots::new(vec![0.0, 0.0, 0.0, 1.0]).is_err());

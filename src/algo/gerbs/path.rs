@@ -652,8 +652,8 @@ impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
     /// p as series in t to `order` at t ∈ [0, 1], one-sided at knots (the side decided on t
     /// as given; for a t rounded from an exact value use [`GerbsPath::series_on`]).
     pub fn series(&self, t: &T, order: usize, side: Side) -> [Taylor<T>; 2] {
-        match self.knots.interval(t, side) {
-            Some(j) => self.series_on(t, j, order),
+        match self.knots.paper_interval(t, side) {
+            Some(j) => self.series_in(t, j, order),
             None => {
                 let zero = Taylor::constant(T::zero_in(&t.ctx())).with_order(order);
                 [zero.clone(), zero]
@@ -661,9 +661,41 @@ impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
         }
     }
 
-    /// p as series in t to `order` on knot interval j (1-based), chosen by the caller.
-    pub fn series_on(&self, t: &T, j: usize, order: usize) -> [Taylor<T>; 2] {
+    /// p as series in t to `order` on knot interval i (counted from 0: from knot i to knot
+    /// i + 1), chosen by the caller.
+    ///
+    /// # Errors
+    /// [`GerbsError::Parameter`] (field `interval`) unless interval i exists and is not empty.
+    pub fn series_on(&self, t: &T, i: usize, order: usize) -> Result<[Taylor<T>; 2], GerbsError> {
+        self.check_interval(i)?;
+        Ok(self.series_in(t, i + 1, order))
+    }
+
+    /// [`GerbsPath::series_on`] on the paper's interval j = i + 1, unchecked (the callers
+    /// inside the crate take j from the knot vector).
+    pub(crate) fn series_in(&self, t: &T, j: usize, order: usize) -> [Taylor<T>; 2] {
         self.series_located(&Located::from_t(&self.knots, t, j), order)
+    }
+
+    /// `Ok` when knot interval i (from 0) exists and is not empty, decided on the knots.
+    fn check_interval(&self, i: usize) -> Result<(&T, &T), GerbsError> {
+        let knots = self.knots.as_slice();
+        let (Some(a), Some(b)) = (knots.get(i), knots.get(i + 1)) else {
+            return Err(GerbsError::Parameter {
+                field: "interval",
+                message: format!(
+                    "interval {i} does not exist: the intervals are numbered 0 to {}",
+                    knots.len() - 2
+                ),
+            });
+        };
+        if a.decide_lt(b) != Some(true) {
+            return Err(GerbsError::Parameter {
+                field: "interval",
+                message: format!("interval {i} is empty (knots {i} and {} are equal)", i + 1),
+            });
+        }
+        Ok((a, b))
     }
 
     /// [`GerbsPath::series_on`] at a located parameter (its distances to the interval's ends
@@ -718,7 +750,7 @@ impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
     /// defined on its knots only.
     pub fn at(&self, t: &T, side: Side) -> Result<PathPoint<T>, GerbsError> {
         match self.knots.interval(t, side) {
-            Some(j) => self.at_on(t, j),
+            Some(i) => self.at_on(t, i),
             None => Err(GerbsError::Parameter {
                 field: "t",
                 message: "outside the knot vector's range (or not a number)".into(),
@@ -726,22 +758,25 @@ impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
         }
     }
 
-    /// Point, derivatives and curvature at knot t_k (1-based, k = 1 … n + 2), from the side
-    /// `side`: the knot interval is decided on the index, not on a comparison of values.
+    /// Point, derivatives and curvature at knot i (counted from 0, i = 0 … n + 1: the
+    /// paper's t_{i+1}), from the side `side`: the knot interval is decided on the index, not
+    /// on a comparison of values.
     ///
     /// # Errors
-    /// [`GerbsError::Parameter`] (field `k`) for k = 0 or k > n + 2, and (field `t`) where the
+    /// [`GerbsError::Parameter`] (field `knot`) for i > n + 1, and (field `t`) where the
     /// path's derivatives or curvature are not finite there.
-    pub fn at_knot(&self, k: usize, side: Side) -> Result<PathPoint<T>, GerbsError> {
-        let Some(t) = self.knots.get(k).cloned() else {
+    pub fn at_knot(&self, i: usize, side: Side) -> Result<PathPoint<T>, GerbsError> {
+        let Some(t) = self.knots.get(i).cloned() else {
             return Err(GerbsError::Parameter {
-                field: "k",
+                field: "knot",
                 message: format!(
-                    "knot {k} does not exist: the knots are numbered 1 to {}",
-                    self.knots.as_slice().len()
+                    "knot {i} does not exist: the knots are numbered 0 to {}",
+                    self.knots.as_slice().len() - 1
                 ),
             });
         };
+        // The paper's numbering from here on: t_k is knot i.
+        let k = i + 1;
         let last = self.knots.as_slice().len();
         // The non-empty interval that ends (from the left) or starts (from the right) at t_k.
         let nonempty = |j: usize| self.knots.at(j) < self.knots.at(j + 1);
@@ -749,7 +784,7 @@ impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
             Side::Right => (k..last).find(|&j| nonempty(j)),
             Side::Left => (1..k).rev().find(|&j| nonempty(j)),
         };
-        let j = j.or_else(|| self.knots.interval(&t, side));
+        let j = j.or_else(|| self.knots.paper_interval(&t, side));
         match j {
             Some(j) => {
                 // t is the interval's start (from the right) or end (from the left), or a knot
@@ -767,39 +802,25 @@ impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
         }
     }
 
-    /// Point, derivatives and curvature at t on knot interval j (1-based), chosen by the
-    /// caller (for a t rounded from an exact value whose interval is known).
+    /// Point, derivatives and curvature at t on knot interval i (counted from 0: from knot
+    /// i to knot i + 1), chosen by the caller (for a t rounded from an exact value whose
+    /// interval is known).
     ///
     /// # Errors
-    /// [`GerbsError::Parameter`]: field `j` unless (t_j, t_{j+1}) is a non-empty knot
-    /// interval; field `t` for a t that is not finite or lies outside [t_j, t_{j+1}] (for
-    /// balls: provably outside), or where the derivatives or curvature are not finite.
-    pub fn at_on(&self, t: &T, j: usize) -> Result<PathPoint<T>, GerbsError> {
-        let knots = self.knots.as_slice();
-        let (Some(a), Some(b)) = (self.knots.get(j), self.knots.get(j + 1)) else {
-            return Err(GerbsError::Parameter {
-                field: "j",
-                message: format!(
-                    "interval {j} does not exist: the intervals are numbered 1 to {}",
-                    knots.len() - 1
-                ),
-            });
-        };
-        if a.decide_lt(b) != Some(true) {
-            return Err(GerbsError::Parameter {
-                field: "j",
-                message: format!("interval {j} is empty (t_{j} = t_{})", j + 1),
-            });
-        }
+    /// [`GerbsError::Parameter`]: field `interval` unless interval i exists and is not
+    /// empty; field `t` for a t that is not finite or lies outside the interval (for balls:
+    /// provably outside), or where the derivatives or curvature are not finite.
+    pub fn at_on(&self, t: &T, i: usize) -> Result<PathPoint<T>, GerbsError> {
+        let (a, b) = self.check_interval(i)?;
         // Provably outside only (decided without counting an undecided comparison): a ball
         // that touches the interval is evaluated there.
         if !t.is_finite() || t.decide_lt(a) == Some(true) || b.decide_lt(t) == Some(true) {
             return Err(GerbsError::Parameter {
                 field: "t",
-                message: format!("not finite or outside knot interval {j}"),
+                message: format!("not finite or outside knot interval {i}"),
             });
         }
-        finite_point(self.point_from(t, self.series_on(t, j, 3)))
+        finite_point(self.point_from(t, self.series_in(t, i + 1, 3)))
     }
 
     fn point_from(&self, t: &T, [x, y]: [Taylor<T>; 2]) -> PathPoint<T> {
@@ -822,7 +843,8 @@ impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
     /// `count` ≥ 2 evenly spaced points t = i/(count − 1) of [0, 1] (from the right, the last
     /// from the left). On the uniform knots of Algorithm 2 (t_k = (k − 2)/(n − 1)) the knot
     /// interval of each sample is decided exactly in integers, j = ⌊i(n − 1)/(count − 1)⌋ + 2,
-    /// so rounding i/(count − 1) onto a knot cannot switch sides; other knot vectors locate
+    /// (the paper's numbering; interval j − 1 from 0), so rounding i/(count − 1) onto a knot
+    /// cannot switch sides; other knot vectors locate
     /// the rounded value.
     ///
     /// # Errors
@@ -843,18 +865,19 @@ impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
             .map(|i| {
                 let t = T::from_ratio(i as i64, last as i64, &ctx);
                 if uniform && n >= 2 {
-                    let j = if i == last {
-                        n
+                    // The interval counted from 0 (the paper's j − 1).
+                    let interval = if i == last {
+                        n - 1
                     } else {
                         // i(n−1) fits: i ≤ MAX samples and n ≤ 10⁵ in every caller.
-                        (i as u128 * (n as u128 - 1) / last as u128) as usize + 2
+                        (i as u128 * (n as u128 - 1) / last as u128) as usize + 1
                     };
-                    self.at_on(&t, j)
+                    self.at_on(&t, interval)
                 } else {
                     // t = i/last lies in [0, 1] = [t_1, t_{n+2}]: its interval exists.
                     let side = if i == last { Side::Left } else { Side::Right };
                     match self.knots.interval(&t, side) {
-                        Some(j) => self.at_on(&t, j),
+                        Some(interval) => self.at_on(&t, interval),
                         None => finite_point(self.point_from(&t, self.series(&t, 3, side))),
                     }
                 }
@@ -1129,7 +1152,7 @@ impl<B: Blend<Ball>> GerbsPath<Ball, B> {
             return Ok(total);
         }
         let speed = |t: &Ball, order: usize| -> Option<Taylor<Ball>> {
-            let speed = speed_series(self.series_on(t, j, order + 1));
+            let speed = speed_series(self.series_in(t, j, order + 1));
             speed.c.iter().all(Field::is_finite).then_some(speed)
         };
         let mut cuts = vec![a.clone()];
@@ -1224,13 +1247,13 @@ impl<T: Real, B: Blend<T>> ParamCurve<T, 2> for GerbsPath<T, B> {
         let side = if *t == end { Side::Left } else { Side::Right };
         let j = self
             .knots
-            .interval(t, side)
+            .paper_interval(t, side)
             .ok_or_else(|| CurveError::OutsideDomain {
                 t: t.to_f64(),
                 start: start.to_f64(),
                 end: end.to_f64(),
             })?;
-        let [x, y] = self.series_on(t, j, order);
+        let [x, y] = self.series_in(t, j, order);
         let (dx, dy) = (x.derivatives(), y.derivatives());
         Ok((0..=order)
             .map(|k| [dx[k].clone(), dy[k].clone()])

@@ -47,10 +47,10 @@ pub(super) fn knot_data<B: Blend<Ball>>(
     let mut along = Vec::new();
     for i in 0..n {
         let right = path
-            .at_knot(i + 2, if i == n - 1 { Side::Left } else { Side::Right })
+            .at_knot(i + 1, if i == n - 1 { Side::Left } else { Side::Right })
             .map_err(|e| e.to_string())?;
         let left = path
-            .at_knot(i + 2, if i == 0 { Side::Right } else { Side::Left })
+            .at_knot(i + 1, if i == 0 { Side::Right } else { Side::Left })
             .map_err(|e| e.to_string())?;
         let sq = |x: Ball| x.clone() * &x;
         let d = sq(right.point[0].clone() - &w[i][0]) + &sq(right.point[1].clone() - &w[i][1]);
@@ -95,7 +95,7 @@ fn speed_lower<B: Blend<Ball>>(
     // The path's own series (the curvature over a wide box need not be finite, and is not
     // needed): p′ at the midpoint, p″ over the box.
     let derivative = |x: &Ball, k: usize| -> [Ball; 2] {
-        let [sx, sy] = path.series_on(x, j, 2);
+        let [sx, sy] = path.series_in(x, j, 2);
         [sx.derivatives()[k].clone(), sy.derivatives()[k].clone()]
     };
     let at_mid = norm(&derivative(&mid, 1));
@@ -596,7 +596,7 @@ fn locality_proof() -> Result<(Outcome, Outcome), String> {
     // At t_4 = 1/2 only B_4 is non-zero (it is 1 there): the path moves with c_3.
     let half = Ball::from_rational(&BigRational::new(1.into(), 2.into()), &HI);
     let at_half = |path: &GerbsPath<Ball, Bfbs>| {
-        path.at_on(&half, 4)
+        path.at_on(&half, 3)
             .map(|a| a.point)
             .map_err(|e| e.to_string())
     };
@@ -668,8 +668,8 @@ pub fn loop_range() -> Outcome {
         (dx.clone() * &dx + &(dy.clone() * &dy)).sqrt()
     };
     let near = Ball::from_rational(&BigRational::new(999.into(), 1000.into()), &HI);
-    // Knot interval n (1-based) is [t_n, t_{n+1}] = [(n − 2)/(n − 1), 1].
-    let (end, inside) = match (path.at_knot(n + 2, Side::Left), path.at_on(&near, n)) {
+    // Knot interval n − 1 (from 0; the paper's t_n to t_{n+1}) is [(n − 2)/(n − 1), 1].
+    let (end, inside) = match (path.at_knot(n + 1, Side::Left), path.at_on(&near, n - 1)) {
         (Ok(e), Ok(i)) => (distance(&e.point), distance(&i.point)),
         (Err(e), _) | (_, Err(e)) => return Outcome::failed(scalar, e),
     };
@@ -726,7 +726,7 @@ pub fn algorithm1_returns_s() -> Outcome {
         let mut wrong = Vec::new();
         for (i, turn) in s.iter().enumerate().take(s.len() - 1).skip(1) {
             let kappa = path
-                .at_knot(i + 2, Side::Right)
+                .at_knot(i + 1, Side::Right)
                 .map_err(|e| e.to_string())?
                 .curvature;
             let left = sign(&kappa).ok_or_else(|| format!("the curvature's sign at W{}", i + 1))?;
@@ -873,7 +873,7 @@ pub fn abstract_midpoints() -> Outcome {
     let mut lines = Vec::new();
     for (i, curve) in path.curves().iter().enumerate() {
         let side = if i == n - 1 { Side::Left } else { Side::Right };
-        let p = match path.at_knot(i + 2, side) {
+        let p = match path.at_knot(i + 1, side) {
             Ok(at) => at.point,
             Err(e) => return Outcome::failed(scalar, e),
         };
@@ -928,7 +928,7 @@ pub fn erbs_path_smooth() -> Outcome {
             .map(|&p| {
                 let delta = BigRational::new(1.into(), num_bigint::BigInt::from(10).pow(p));
                 let t = Ball::from_rational(&(centre.clone() + delta), &bits);
-                let at = path.at_on(&t, 3).map_err(|e| e.to_string())?;
+                let at = path.at_on(&t, 2).map_err(|e| e.to_string())?;
                 let [x, y] = at.d2;
                 let second = (x.clone() * &x + &(y.clone() * &y)).sqrt();
                 Ok((p, second, at.curvature.abs()))
