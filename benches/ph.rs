@@ -105,8 +105,7 @@ fn error_search(c: &mut Criterion) {
         bench.iter(|| {
             let pw = convert(
                 &cb,
-                &Ball::from_i64(0, &256),
-                &Ball::from_i64(1, &256),
+                (&Ball::from_i64(0, &256), &Ball::from_i64(1, &256)),
                 64,
                 4,
                 &fb,

@@ -22,7 +22,7 @@ fn report<T: Real>(label: &str, ctx: &T::Ctx) -> Result<(), PhHermiteError> {
         segments: 32,
         ..FitOptions::default()
     };
-    let spline = fit(&helix, &a, &b, &options)?;
+    let spline = fit(&helix, (&a, &b), &options)?;
     let error = conversion_error(&helix, &spline, DEFAULT_SAMPLES).max;
     let t = T::from_ratio(3, 2, ctx);
     let frame = spline.frame(&t).expect("1.5 lies in [0, 6]");

@@ -24,7 +24,7 @@ fn main() {
     };
     // `tally` counts the comparisons of balls that could not be decided in this computation.
     let (result, undecided) = tally(|| {
-        let spline = fit(&curve, &a, &b, &options).map_err(|e| e.to_string())?;
+        let spline = fit(&curve, (&a, &b), &options).map_err(|e| e.to_string())?;
         proven_error(&curve, &spline, 1e-6, 200_000).map_err(|e| e.to_string())
     });
     let e = match result {

@@ -44,7 +44,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         segments: 16,
         ..FitOptions::default()
     };
-    let spline = fit(&curve, &0.0, &2.0, &options)?;
+    let spline = fit(&curve, (&0.0, &2.0), &options)?;
     let p = spline.point(&1.0)?;
     println!(
         "PH spline, 16 segments: p(1) = ({:.6}, {:.6}, {:.6})",
@@ -55,8 +55,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let (a, b) = (Ball::from_i64(0, &128), Ball::from_i64(2, &128));
     let proven = fit(
         &curve,
-        &a,
-        &b,
+        (&a, &b),
         &FitOptions {
             segments: 16,
             ..FitOptions::default()
@@ -98,8 +97,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let arc = BezierCurve::new(vec![[1.0, 0.0], [1.0, k], [k, 1.0], [0.0, 1.0]], 0.0, 1.0)?;
     let ph = fit(
         &AsCurve::new(&arc),
-        &0.0,
-        &1.0,
+        (&0.0, &1.0),
         &FitOptions {
             segments: 4,
             ..FitOptions::default()

@@ -140,7 +140,7 @@ proptest! {
         // Segment counts that would be accepted but are slow are not this test's subject.
         let segments = if (1..=64).contains(&segments) || segments > 1 << 20 || segments == 0 { segments } else { 8 };
         let options = FitOptions { segments, derivatives, ..FitOptions::default() };
-        if let Ok(pw) = no_panic("fit", || fit(&curve, &a, &b, &options))? {
+        if let Ok(pw) = no_panic("fit", || fit(&curve, (&a, &b), &options))? {
             let (lo, hi) = pw.domain();
             if let Ok(p) = no_panic("point", || pw.point(&((lo + hi) / 2.0)))? {
                 prop_assert!(p.iter().all(|v| v.is_finite()), "Ok holding {p:?}");
@@ -198,7 +198,7 @@ proptest! {
         let _ = no_panic("ClampedSpline", || ClampedSpline::interpolate(degree, &times, &[[x, 0.0, 1.0]; 8]))?;
         let cb = curve.compile::<Ball>(&64);
         let (a, b) = (Ball::from_i64(0, &64), Ball::from_i64(1, &64));
-        let Ok(pw) = fit(&cb, &a, &b, &FitOptions { segments: 1, ..FitOptions::default() }) else { return Ok(()) };
+        let Ok(pw) = fit(&cb, (&a, &b), &FitOptions { segments: 1, ..FitOptions::default() }) else { return Ok(()) };
         if let Ok(e) = no_panic("proven_error", || proven_error(&cb, &pw, target, 2000))? {
             prop_assert!(e.lower.is_finite() && e.upper.is_finite() && e.lower <= e.upper, "{e:?}");
         }

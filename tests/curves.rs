@@ -34,7 +34,7 @@ fn helix_fit() -> trajverify::algo::ph::piecewise::PiecewisePh<f64> {
         segments: 32,
         ..FitOptions::default()
     };
-    fit(&helix.compile::<f64>(&()), &0.0, &6.0, &options).unwrap()
+    fit(&helix.compile::<f64>(&()), (&0.0, &6.0), &options).unwrap()
 }
 
 #[test]
@@ -70,7 +70,7 @@ fn ph_spline_arc_length_is_exact_and_agrees_with_quadrature() {
         segments: 32,
         ..FitOptions::default()
     };
-    let precise = fit(&helix.compile::<Float>(&256), &a, &b, &options).unwrap();
+    let precise = fit(&helix.compile::<Float>(&256), (&a, &b), &options).unwrap();
     let l = precise.length().unwrap();
     assert!((l.to_f64() - pw.length().unwrap()).abs() < 1e-13);
 }

@@ -37,8 +37,7 @@ fn in_balls(
     let curve = ExprCurve::parse(CURVE).unwrap().compile::<Ball>(&256);
     let pw = convert(
         &curve,
-        &Ball::from_i64(0, &256),
-        &Ball::from_i64(1, &256),
+        (&Ball::from_i64(0, &256), &Ball::from_i64(1, &256)),
         n,
         4,
         &FreeParameters::zero(4, &256),
@@ -112,8 +111,7 @@ fn a_splines_enclosure_contains_the_certified_maximum_only_with_its_seams() {
     let enclose = |n: usize, curve: &dyn Curve<Ball>| {
         let pw = convert(
             curve,
-            &Ball::from_i64(0, &256),
-            &Ball::from_i64(2, &256),
+            (&Ball::from_i64(0, &256), &Ball::from_i64(2, &256)),
             n,
             4,
             &FreeParameters::zero(4, &256),

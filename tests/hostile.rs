@@ -63,7 +63,9 @@ fn ph_conversion_refuses_bad_segments_intervals_and_undefined_curves() {
     let free = FreeParameters::<f64>::zero(4, &());
     let run = |curve: &ExprCurve, a: f64, b: f64, n: usize| {
         let compiled = curve.compile::<f64>(&());
-        no_panic("convert", || convert(&compiled, &a, &b, n, 4, &free, true))
+        no_panic("convert", || {
+            convert(&compiled, (&a, &b), n, 4, &free, true)
+        })
     };
     assert!(matches!(
         run(&helix, 0.0, 1.0, 0),
@@ -299,8 +301,7 @@ fn curves_are_evaluated_on_their_domain_only() {
         &ExprCurve::parse("[cos(t), sin(t), t/5]")
             .expect("parses")
             .compile::<f64>(&()),
-        &0.0,
-        &6.0,
+        (&0.0, &6.0),
         &FitOptions::default(),
     )
     .expect("a PH spline");
@@ -341,7 +342,7 @@ fn a_ph_fit_checks_its_options() {
     let helix = ExprCurve::parse("[cos(t), sin(t), t/5]")
         .expect("parses")
         .compile::<f64>(&());
-    let run = |options: FitOptions<f64>| no_panic("fit", || fit(&helix, &0.0, &6.0, &options));
+    let run = |options: FitOptions<f64>| no_panic("fit", || fit(&helix, (&0.0, &6.0), &options));
     assert!(run(FitOptions {
         segments: 0,
         ..FitOptions::default()
@@ -378,8 +379,7 @@ fn a_ph_fit_checks_its_options() {
     assert!(n > 8 && error <= 1e-12, "{n} segments, error {error:e}");
     let coarser = convert(
         &helix,
-        &0.0,
-        &6.0,
+        (&0.0, &6.0),
         n / 2,
         4,
         &FreeParameters::zero(4, &()),

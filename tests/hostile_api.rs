@@ -198,7 +198,7 @@ fn conversions_cap_their_segments_and_check_their_arguments() {
             segments,
             ..FitOptions::default()
         };
-        let e = message(no_panic("fit", || fit(&c, &0.0, &1.0, &options)));
+        let e = message(no_panic("fit", || fit(&c, (&0.0, &1.0), &options)));
         assert!(e.starts_with("segments:"), "{e}");
     }
     let e = message(no_panic("interpolate_curve", || {
@@ -209,8 +209,7 @@ fn conversions_cap_their_segments_and_check_their_arguments() {
     let (a, b) = (Ball::from_i64(0, &128), Ball::from_i64(1, &128));
     let pw = fit(
         &cb,
-        &a,
-        &b,
+        (&a, &b),
         &FitOptions {
             segments: 2,
             ..FitOptions::default()
@@ -235,8 +234,7 @@ fn piecewise_ph_locate_and_clamped_splines_check_their_input() {
         .compile::<f64>(&());
     let pw = fit(
         &c,
-        &0.0,
-        &1.0,
+        (&0.0, &1.0),
         &FitOptions {
             segments: 8,
             ..FitOptions::default()
@@ -352,14 +350,14 @@ fn fits_name_the_derivatives_and_refuse_overflow() {
         ..FitOptions::default()
     };
     let e = message(no_panic("derivatives 20", || {
-        fit(&helix, &0.0, &1.0, &options)
+        fit(&helix, (&0.0, &1.0), &options)
     }));
     assert!(e.starts_with("derivatives:"), "{e}");
     let huge = ExprCurve::parse("[1e200*cos(t), 1e200*sin(t), t]")
         .expect("a curve")
         .compile::<f64>(&());
     let r = no_panic("1e200 curve", || {
-        fit(&huge, &0.0, &1.0, &FitOptions::default())
+        fit(&huge, (&0.0, &1.0), &FitOptions::default())
     });
     match r {
         Ok(pw) => {
@@ -371,7 +369,7 @@ fn fits_name_the_derivatives_and_refuse_overflow() {
             "{e}"
         ),
     }
-    let pw = fit(&helix, &0.0, &1.0, &FitOptions::default()).expect("a fit");
+    let pw = fit(&helix, (&0.0, &1.0), &FitOptions::default()).expect("a fit");
     let e = message(no_panic("knot(1000)", || pw.knot(1000)));
     assert!(e.starts_with("k:"), "{e}");
     assert_eq!(pw.knot(8).expect("the last knot"), 1.0);
@@ -425,9 +423,9 @@ fn every_library_curve_can_be_fitted_through_the_adapter() {
         derivatives: 2,
         ..FitOptions::default()
     };
-    let pw = fit(&adapted, &0.0, &1.0, &options).expect("a fit of the path");
+    let pw = fit(&adapted, (&0.0, &1.0), &options).expect("a fit of the path");
     let e = conversion_error(&adapted, &pw, DEFAULT_SAMPLES).max;
     assert!(e.is_finite() && e < 10.0, "E = {e}");
     // Outside the path's domain the adapter's jet is NaN, which the conversion refuses.
-    assert!(fit(&adapted, &0.0, &2.0, &options).is_err());
+    assert!(fit(&adapted, (&0.0, &2.0), &options).is_err());
 }

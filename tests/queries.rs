@@ -18,7 +18,7 @@ fn helix_spline() -> trajverify::algo::ph::piecewise::PiecewisePh<f64> {
         segments: 16,
         ..FitOptions::default()
     };
-    fit(&helix, &0.0, &(2.0 * std::f64::consts::PI), &options).expect("a fit")
+    fit(&helix, (&0.0, &(2.0 * std::f64::consts::PI)), &options).expect("a fit")
 }
 
 #[test]

@@ -216,7 +216,7 @@ impl Method {
             Method::Phodcos => {
                 let zero = crate::algo::ph::hermite::FreeParameters::zero(4, &a.ctx());
                 Fitted::Ph(
-                    crate::algo::ph::piecewise::convert(curve, a, b, segments, 4, &zero, false)
+                    crate::algo::ph::piecewise::convert(curve, (a, b), segments, 4, &zero, false)
                         .map_err(|e| e.to_string())?,
                 )
             }

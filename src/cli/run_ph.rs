@@ -240,21 +240,26 @@ fn phodcos_in<T: Real>(
     let (pw, err) = match (fixed.or(input.segments), &input.tolerance) {
         (Some(n), _) => {
             scale = check_finite(&c, &a, &b, n)?;
-            let pw =
-                convert(&c, &a, &b, n, 4, &FreeParameters::zero(4, ctx), true).map_err(ph_error)?;
+            let pw = convert(&c, (&a, &b), n, 4, &FreeParameters::zero(4, ctx), true)
+                .map_err(ph_error)?;
             let e = conversion_error(&c, &pw, DEFAULT_SAMPLES);
             (pw, e)
         }
         (None, Some(tol)) => {
             scale = check_finite(&c, &a, &b, 1)?;
-            phodcos(&c, &a, &b, &T::from_rational(tol, ctx), input.max_segments)
-                .map_err(ph_error)?
-                .ok_or_else(|| {
-                    InputError(format!(
-                        "field \"tolerance\": not reached with {} segments (raise \"max_segments\")",
-                        input.max_segments
-                    ))
-                })?
+            phodcos(
+                &c,
+                (&a, &b),
+                &T::from_rational(tol, ctx),
+                input.max_segments,
+            )
+            .map_err(ph_error)?
+            .ok_or_else(|| {
+                InputError(format!(
+                    "field \"tolerance\": not reached with {} segments (raise \"max_segments\")",
+                    input.max_segments
+                ))
+            })?
         }
         (None, None) => return fail("input: give exactly one of \"segments\" and \"tolerance\""),
     };
@@ -337,7 +342,7 @@ impl PhodcosJob {
         // The error depends on positions only, which the roll correction (Eq. 22) leaves
         // alone: it is searched on the conversion before the roll, whose balls the chained
         // rotations do not widen; the printed preimages are that conversion rolled.
-        let mut pw = convert(&c, &a, &b, n, 4, &free, false).map_err(ph_error)?;
+        let mut pw = convert(&c, (&a, &b), n, 4, &free, false).map_err(ph_error)?;
         let e = proven_error_until(&c, &pw, 1e-6, 4_000_000, Some(budget::search_deadline()))
             .map_err(|e| RunError::Internal(e.to_string()))?;
         pw.align_roll();
@@ -494,7 +499,7 @@ impl ProvenJob for ConvergenceJob {
         let free = self.free.map(|q| f64::from_rational(q, &()));
         let rows = self.rows(|segments| {
             check_finite(&c, &fa, &fb, segments)?;
-            let pw = convert(&c, &fa, &fb, segments, 4, &free, true).map_err(ph_error)?;
+            let pw = convert(&c, (&fa, &fb), segments, 4, &free, true).map_err(ph_error)?;
             Ok(Out::Num(conversion_error(&c, &pw, DEFAULT_SAMPLES).max))
         })?;
         Ok(Rendered::plain(
@@ -515,7 +520,7 @@ impl ProvenJob for ConvergenceJob {
         self.rows(|segments| {
             check_finite(&c, &a, &b, segments)?;
             // The error depends on positions only, which the roll correction leaves alone.
-            let pw = convert(&c, &a, &b, segments, 4, &free, false).map_err(ph_error)?;
+            let pw = convert(&c, (&a, &b), segments, 4, &free, false).map_err(ph_error)?;
             let e = proven_error_until(&c, &pw, 1e-6, 4_000_000, Some(budget::search_deadline()))
                 .map_err(|e| RunError::Internal(e.to_string()))?;
             Ok(Out::MaybeZero(

@@ -32,7 +32,7 @@ use crate::scalar::Real;
 /// let k = 0.5522847498;
 /// let arc = BezierCurve::new(vec![[1.0, 0.0], [1.0, k], [k, 1.0], [0.0, 1.0]], 0.0, 1.0).unwrap();
 /// let options = FitOptions { segments: 4, ..FitOptions::default() };
-/// let spline = fit(&AsCurve::new(&arc), &0.0, &1.0, &options).unwrap();
+/// let spline = fit(&AsCurve::new(&arc), (&0.0, &1.0), &options).unwrap();
 /// let p = spline.point(&0.5).unwrap();
 /// let q = arc.point(&0.5).unwrap();
 /// assert!((p[0] - q[0]).abs() < 1e-9 && (p[1] - q[1]).abs() < 1e-9 && p[2].abs() < 1e-12);

@@ -544,7 +544,7 @@ fn first_boxes(models: &[Model], bits: u32) -> (BinaryHeap<Candidate>, (f64, usi
 /// use trajverify::scalar::{ball::Ball, Field};
 /// let curve = ExprCurve::parse("[cos(t), sin(t), t]").unwrap().compile::<Ball>(&128);
 /// let (a, b) = (Ball::from_i64(0, &128), Ball::from_i64(1, &128));
-/// let spline = fit(&curve, &a, &b, &FitOptions { segments: 2, ..FitOptions::default() }).unwrap();
+/// let spline = fit(&curve, (&a, &b), &FitOptions { segments: 2, ..FitOptions::default() }).unwrap();
 /// let e = proven_error(&curve, &spline, 1e-6, 100_000).unwrap();
 /// assert!(e.lower <= e.upper && e.upper < 1e-6);
 /// ```

@@ -34,11 +34,11 @@ use crate::scalar::Real;
 /// }
 /// let helix = FnCurve(Helix);
 /// let options = FitOptions { segments: 8, ..FitOptions::default() };
-/// let spline = fit(&helix, &0.0, &6.0, &options).unwrap();
+/// let spline = fit(&helix, (&0.0, &6.0), &options).unwrap();
 /// assert_eq!(spline.segments().len(), 8);
 ///
 /// let (a, b) = (Ball::from_i64(0, &128), Ball::from_i64(6, &128));
-/// let proven = fit(&helix, &a, &b, &FitOptions { segments: 8, ..FitOptions::default() }).unwrap();
+/// let proven = fit(&helix, (&a, &b), &FitOptions { segments: 8, ..FitOptions::default() }).unwrap();
 /// let e = proven_error(&helix, &proven, 1e-3, 100_000).unwrap();
 /// assert!(e.lower <= e.upper && e.upper < 1e-3);
 /// ```

@@ -8,7 +8,7 @@
 //! it: a convergence study ([`crate::algo::convergence::study`]), its regularity proof
 //! ([`crate::curve::regularity::check`]) and the certified error of a conversion
 //! ([`crate::algo::ph::piecewise::certified_error`]). Functions that work in one number type
-//! take the ends as two values of that type (`fit(&curve, &a, &b, ..)`).
+//! take the ends as two values of that type (`fit(&curve, (&a, &b), ..)`).
 //!
 //! Whether a < b is decided on the exact ends: by rational comparison when both are
 //! rational, otherwise by balls at 64, 256, 1024 and 4096 bits until they are disjoint.

@@ -126,7 +126,7 @@ pub fn grid_error<T: Real, C: Curve<T> + ?Sized>(curve: &C, pw: &PiecewisePh<T>,
 ///
 /// let curve = ExprCurve::parse("[t, t^2, sin(t)]").unwrap().compile::<Ball>(&128);
 /// let (a, b) = (Ball::zero_in(&128), Ball::one_in(&128));
-/// let pw = convert(&curve, &a, &b, 2, 4, &FreeParameters::zero(4, &128), false).unwrap();
+/// let pw = convert(&curve, (&a, &b), 2, 4, &FreeParameters::zero(4, &128), false).unwrap();
 /// let ts: Vec<BigRational> = (0..=10).map(|i| BigRational::new(i.into(), 10.into())).collect();
 /// let zero = BigRational::from_integer(0.into());
 /// let one = BigRational::from_integer(1.into());

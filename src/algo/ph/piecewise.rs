@@ -137,8 +137,7 @@ pub fn segment_jet<T: Real, C: Curve<T> + ?Sized>(
 /// The Hermite data of every segment: derivatives 1…m scaled by h^j (Eq. 20).
 pub fn segment_data<T: Real, C: Curve<T> + ?Sized>(
     curve: &C,
-    a: &T,
-    b: &T,
+    (a, b): (&T, &T),
     segments: usize,
     m: usize,
 ) -> Vec<HermiteData<T>> {
@@ -172,8 +171,7 @@ pub fn segment_data<T: Real, C: Curve<T> + ?Sized>(
 /// a segment end (e.g. `sqrt(t − 10)` on [0, 1]), or the first segment's interpolation error.
 pub fn convert<T: Real, C: Curve<T> + ?Sized>(
     curve: &C,
-    a: &T,
-    b: &T,
+    (a, b): (&T, &T),
     segments: usize,
     m: usize,
     free: &FreeParameters<T>,
@@ -191,7 +189,7 @@ pub fn convert<T: Real, C: Curve<T> + ?Sized>(
     if a.partial_cmp(b) != Some(std::cmp::Ordering::Less) {
         return Err(PhHermiteError::Interval);
     }
-    let data = segment_data(curve, a, b, segments, m);
+    let data = segment_data(curve, (a, b), segments, m);
     let finite = |v: &[T; 3]| v.iter().all(Field::is_finite);
     if let Some(k) = data.iter().position(|d| {
         !(finite(&d.p_b) && finite(&d.p_e) && d.start.iter().chain(&d.end).all(finite))
@@ -277,19 +275,18 @@ pub const MAX_SEGMENTS: usize = 1 << 19;
 ///
 /// let helix = ExprCurve::parse("[cos(t), sin(t), t/5]").unwrap();
 /// let options = FitOptions { segments: 32, ..FitOptions::default() };
-/// let spline = fit(&helix.compile::<f64>(&()), &0.0, &6.0, &options).unwrap();
+/// let spline = fit(&helix.compile::<f64>(&()), (&0.0, &6.0), &options).unwrap();
 /// let length = spline.length().unwrap(); // exact for the PH spline: 6·√(1 + 1/25)
 /// assert!((length - 6.0 * 1.04f64.sqrt()).abs() < 1e-6);
 ///
 /// let (a, b) = (Float::with_val(256, 0), Float::with_val(256, 6));
-/// let precise = fit(&helix.compile::<Float>(&256), &a, &b, &FitOptions::default()).unwrap();
+/// let precise = fit(&helix.compile::<Float>(&256), (&a, &b), &FitOptions::default()).unwrap();
 /// let p = precise.point(&Float::with_val(256, 3)).unwrap();
 /// assert!((p[0].to_f64() - 3f64.cos()).abs() < 1e-5);
 /// ```
 pub fn fit<T: Real, C: Curve<T> + ?Sized>(
     curve: &C,
-    a: &T,
-    b: &T,
+    (a, b): (&T, &T),
     options: &FitOptions<T>,
 ) -> Result<PiecewisePh<T>, PhHermiteError> {
     let m = options.derivatives;
@@ -307,7 +304,7 @@ pub fn fit<T: Real, C: Curve<T> + ?Sized>(
     };
     let mut n = options.segments;
     loop {
-        let pw = convert(curve, a, b, n, m, &free, options.roll)?;
+        let pw = convert(curve, (a, b), n, m, &free, options.roll)?;
         let Some(tol) = &options.tolerance else {
             return Ok(pw);
         };
@@ -450,15 +447,14 @@ pub type Converted<T> = (PiecewisePh<T>, ConversionError<T>);
 /// meeting the tolerance is `Ok(None)`, not an error.
 pub fn phodcos<T: Real, C: Curve<T> + ?Sized>(
     curve: &C,
-    a: &T,
-    b: &T,
+    (a, b): (&T, &T),
     tolerance: &T,
     max_segments: usize,
 ) -> Result<Option<Converted<T>>, PhHermiteError> {
     let ctx = a.ctx();
     let free = FreeParameters::zero(4, &ctx);
     let attempt = |n: usize| -> Result<(PiecewisePh<T>, ConversionError<T>), PhHermiteError> {
-        let pw = convert(curve, a, b, n, 4, &free, true)?;
+        let pw = convert(curve, (a, b), n, 4, &free, true)?;
         let e = conversion_error(curve, &pw, DEFAULT_SAMPLES);
         Ok((pw, e))
     };
@@ -574,7 +570,7 @@ pub(super) fn convert_at<C: Curve<Float>>(
     bits: u32,
 ) -> Result<PiecewisePh<Float>, PhHermiteError> {
     let free = free.map(|x| Float::from_rational(x, &bits));
-    convert(curve, a, b, segments, m, &free, false)
+    convert(curve, (a, b), segments, m, &free, false)
 }
 
 /// Segment k of that conversion alone, at `bits`: the PH curve, its start t_k and the step h.
@@ -676,7 +672,7 @@ mod tests {
         let curve = ExprCurve::parse("[cos(3*t), sin(2*t), t^2]").unwrap();
         let c = curve.compile::<f64>(&());
         let (n, samples) = (4usize, DEFAULT_SAMPLES);
-        let pw = convert(&c, &0.0, &1.0, n, 4, &FreeParameters::zero(4, &()), false).unwrap();
+        let pw = convert(&c, (&0.0, &1.0), n, 4, &FreeParameters::zero(4, &()), false).unwrap();
         let e = conversion_error(&c, &pw, samples);
         let grid: Vec<BigRational> = (0..=n * samples)
             .map(|i| BigRational::new((i as i64).into(), ((n * samples) as i64).into()))

@@ -92,7 +92,7 @@ pub fn figure2a() -> String {
     let mut panels = Vec::new();
     for (a, b, view) in [(0usize, 1usize, "top (x, y)"), (0, 2, "side (x, z)")] {
         for segments in [1usize, 2, 8] {
-            let pw = convert(&c, &0.0, &1.0, segments, 4, &free, true).expect("test curve");
+            let pw = convert(&c, (&0.0, &1.0), segments, 4, &free, true).expect("test curve");
             panels.push(Panel {
                 title: format!("{segments} segment(s), {view}"),
                 x_label: format!("{} (length units)", ["x", "y", "z"][a]),
@@ -124,7 +124,7 @@ type QuatMap =
 pub fn figure2b() -> String {
     let c = table1::curve().compile::<f64>(&());
     let free = FreeParameters::zero(4, &());
-    let raw = convert(&c, &0.0, &1.0, 2, 4, &free, false).expect("test curve");
+    let raw = convert(&c, (&0.0, &1.0), 2, 4, &free, false).expect("test curve");
     let mut fixed = raw.clone();
     fixed.align_roll();
     let sample = |pw: &PiecewisePh<f64>, f: &QuatMap| {

@@ -133,7 +133,7 @@ impl Screen {
             (0..SCREENED)
                 .map(|i| {
                     let segments = TABLE1[i].0;
-                    let pw = convert(&c, &0.0, &1.0, segments, 4, &free, false)
+                    let pw = convert(&c, (&0.0, &1.0), segments, 4, &free, false)
                         .map_err(|e| format!("the f64 conversion into {segments} segments: {e}"))?;
                     Ok(family
                         .par_iter()

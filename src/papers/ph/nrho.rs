@@ -126,7 +126,7 @@ fn continuity_bounds(spline: &PeriodicSpline, period: f64) -> Result<Vec<f64>, S
     let ((converted, jumps), undecided) = crate::scalar::ball::tally(|| {
         let (za, zb) = (Ball::zero_in(&bits), Ball::from_f64(period, &bits));
         let free = FreeParameters::zero(4, &bits);
-        match convert(spline, &za, &zb, SEGMENTS, 4, &free, false) {
+        match convert(spline, (&za, &zb), SEGMENTS, 4, &free, false) {
             Ok(mut pw) => {
                 pw.align_roll();
                 (Ok(()), super::theorems::jumps_of(&pw))
@@ -169,9 +169,16 @@ pub fn compute() -> Nrho {
         .fold(0.0, f64::max);
     let free = FreeParameters::zero(4, &());
     let rotating =
-        convert(&spline, &0.0, &period, SEGMENTS, 4, &free, true).expect("NRHO rotating");
-    let inertial = convert(&Inertial(&spline), &0.0, &period, SEGMENTS, 4, &free, true)
-        .expect("NRHO inertial");
+        convert(&spline, (&0.0, &period), SEGMENTS, 4, &free, true).expect("NRHO rotating");
+    let inertial = convert(
+        &Inertial(&spline),
+        (&0.0, &period),
+        SEGMENTS,
+        4,
+        &free,
+        true,
+    )
+    .expect("NRHO inertial");
     let interval = Interval::new(rational(0.0), rational(period)).expect("a positive period");
     let zero = FreeParameters::zero(4, &());
     let bits = super::table1::BITS;

@@ -73,7 +73,7 @@ pub fn proven_error_with(
     let c = curve().compile::<Ball>(&BITS);
     let (a, b) = (Ball::from_i64(0, &BITS), Ball::from_i64(1, &BITS));
     let free = free.map(|x| Ball::from_rational(x, &BITS));
-    let pw = convert(&c, &a, &b, segments, 4, &free, false).map_err(|e| {
+    let pw = convert(&c, (&a, &b), segments, 4, &free, false).map_err(|e| {
         format!("the test curve's conversion into {segments} segments in balls: {e}")
     })?;
     let models = ErrorModels::build(&c, &pw, target, None);
@@ -112,7 +112,7 @@ fn proven_with<R>(
     let free = FreeParameters::zero(4, &BITS);
     // Without the roll correction: it turns each preimage by Q(α), which leaves the curve p,
     // and so E, unchanged.
-    let pw = convert(&c, &a, &b, segments, 4, &free, false).ok()?;
+    let pw = convert(&c, (&a, &b), segments, 4, &free, false).ok()?;
     let models = ErrorModels::build(&c, &pw, target, None);
     let enclosure = models.enclose(target, MAX_BOXES, None);
     let found = then(&models, &enclosure);

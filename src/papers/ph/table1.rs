@@ -133,7 +133,7 @@ pub fn f64_column(levels: &[u32]) -> Vec<(usize, f64)> {
     levels
         .par_iter()
         .map(|&n| {
-            let pw = convert(&c, &0.0, &1.0, 1 << n, 4, &free, true).expect("f64 conversion");
+            let pw = convert(&c, (&0.0, &1.0), 1 << n, 4, &free, true).expect("f64 conversion");
             (1usize << n, conversion_error(&c, &pw, DEFAULT_SAMPLES).max)
         })
         .collect()
@@ -201,8 +201,7 @@ impl BallConversion {
         );
         let pw = convert(
             &curve,
-            &a,
-            &b,
+            (&a, &b),
             segments,
             4,
             &FreeParameters::zero(4, &BITS),
@@ -491,8 +490,7 @@ pub fn f64_floor(
     let c = curve().compile::<f64>(&());
     let pw = match convert(
         &c,
-        &0.0,
-        &1.0,
+        (&0.0, &1.0),
         row.segments,
         4,
         &FreeParameters::zero(4, &()),

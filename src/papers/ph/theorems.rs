@@ -365,7 +365,7 @@ fn test_conversion(segments: usize) -> Result<PiecewisePh<Ball>, String> {
     let c = table1::curve().compile::<Ball>(&BITS);
     let (a, b) = (Ball::from_i64(0, &BITS), Ball::from_i64(1, &BITS));
     let free = FreeParameters::zero(4, &BITS);
-    convert(&c, &a, &b, segments, 4, &free, false)
+    convert(&c, (&a, &b), segments, 4, &free, false)
         .map_err(|e| format!("the test curve's conversion into {segments} segments in balls: {e}"))
 }
 
@@ -602,7 +602,7 @@ fn geometry_row(segments: usize, length: &Ball) -> Result<GeometryRow, String> {
     let c = table1::curve().compile::<Ball>(&bits);
     let (a, b) = (Ball::zero_in(&bits), Ball::one_in(&bits));
     let free = FreeParameters::zero(4, &bits);
-    let pw = convert(&c, &a, &b, segments, 4, &free, true).map_err(|e| {
+    let pw = convert(&c, (&a, &b), segments, 4, &free, true).map_err(|e| {
         format!("the test curve's conversion into {segments} segments in balls: {e}")
     })?;
     let mut l = Ball::zero_in(&bits);
