@@ -15,7 +15,7 @@ fn data<T: Field>(m: usize, ctx: &T::Ctx) -> HermiteData<T> {
     let end = (0..=m)
         .map(|j| T::from_ratio(-(j as i64 + 2), 3, ctx))
         .collect();
-    HermiteData::new(start, end, T::zero_in(ctx), T::one_in(ctx)).expect("valid data")
+    HermiteData::new(start, end, (T::zero_in(ctx), T::one_in(ctx))).expect("valid data")
 }
 
 fn control_points(c: &mut Criterion) {

@@ -11,7 +11,7 @@ fn main() -> Result<(), HermiteError> {
     // [position, velocity, acceleration] at t0 = 0 and at t1 = 2.
     let start = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.5], [0.0, 0.0, 0.0]];
     let end = [[2.0, 1.0, 1.0], [0.0, 1.0, 0.0], [0.0, -1.0, 0.0]];
-    let fast = hermite_curve(0.0, 2.0, &start, &end)?;
+    let fast = hermite_curve(&start, &end, (0.0, 2.0))?;
     println!("f64: degree {} on [0, 2]", fast.degree());
     for (k, p) in fast.control_points().iter().enumerate() {
         println!("  p{k} = {p:?}");
@@ -28,10 +28,9 @@ fn main() -> Result<(), HermiteError> {
     let q = |n: i64, d: i64| BigRational::new(n.into(), d.into());
     let exact_point = |p: [f64; 3]| p.map(|x| q((x * 2.0) as i64, 2));
     let exact = hermite_curve(
-        q(0, 1),
-        q(2, 1),
         &start.map(exact_point),
         &end.map(exact_point),
+        (q(0, 1), q(2, 1)),
     )?;
     println!("exact:");
     for (k, p) in exact.control_points().iter().enumerate() {

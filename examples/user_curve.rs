@@ -94,7 +94,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
 
     // 4. Another library curve through the same interface: a plane cubic Bézier curve.
     let k = 0.5522847498;
-    let arc = BezierCurve::new(vec![[1.0, 0.0], [1.0, k], [k, 1.0], [0.0, 1.0]], 0.0, 1.0)?;
+    let arc = BezierCurve::new(vec![[1.0, 0.0], [1.0, k], [k, 1.0], [0.0, 1.0]], (0.0, 1.0))?;
     let ph = fit(
         &AsCurve::new(&arc),
         (&0.0, &1.0),

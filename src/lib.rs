@@ -31,7 +31,7 @@
 //!
 //! fn control_points<T: Field>(ctx: &T::Ctx) -> Vec<T> {
 //!     let i = |v: i64| T::from_i64(v, ctx);
-//!     let data = HermiteData::new(vec![i(0), i(0), i(0)], vec![i(1), i(1), i(0)], i(0), i(1)).unwrap();
+//!     let data = HermiteData::new(vec![i(0), i(0), i(0)], vec![i(1), i(1), i(0)], (i(0), i(1))).unwrap();
 //!     data.solve().unwrap().into_control_points()
 //! }
 //!

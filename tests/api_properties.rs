@@ -74,7 +74,7 @@ proptest! {
 
     #[test]
     fn bezier_and_hermite_curves(x in hostile_f64(), y in hostile_f64(), t0 in hostile_f64(), t1 in hostile_f64(), t in hostile_f64(), order in hostile_count()) {
-        if let Ok(c) = no_panic("BezierCurve::new", || BezierCurve::new(vec![[0.0, 0.0], [x, y], [1.0, 0.0]], t0, t1))? {
+        if let Ok(c) = no_panic("BezierCurve::new", || BezierCurve::new(vec![[0.0, 0.0], [x, y], [1.0, 0.0]], (t0, t1)))? {
             if let Ok(d) = no_panic("derivatives", || c.derivatives(&t, order))? {
                 prop_assert!(all_finite(&d), "Ok holding {d:?}");
             }
@@ -87,7 +87,7 @@ proptest! {
         }
         let start = [[0.0, 0.0], [x, 1.0]];
         let end = [[1.0, y], [0.0, 1.0]];
-        if let Ok(c) = no_panic("hermite_curve", || hermite_curve(t0, t1, &start, &end))? {
+        if let Ok(c) = no_panic("hermite_curve", || hermite_curve(&start, &end, (t0, t1)))? {
             prop_assert!(all_finite(c.control_points()), "Ok holding {:?}", c.control_points());
         }
     }

@@ -120,8 +120,7 @@ fn the_hermite_map_encloses_the_reference() {
         let data = HermiteData::new(
             vec![v(0, 1), v(1, 3), v(-2, 7), v(5, 11)],
             vec![v(1, 1), v(0, 1), v(3, 13), v(-1, 17)],
-            v(0, 1),
-            v(3, 7),
+            (v(0, 1), v(3, 7)),
         )
         .unwrap();
         data.solve().unwrap().into_control_points()

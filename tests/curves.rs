@@ -116,7 +116,7 @@ fn ph_spline_frame_is_adapted_and_omega_turns_it_per_unit_of_t() {
 fn hermite_curves_meet_their_data_per_unit_of_t() {
     let start = [[0.0, 0.0, 0.0], [1.0, 0.0, 2.0], [0.0, 3.0, 0.0]];
     let end = [[1.0, 1.0, 0.5], [0.0, 1.0, 0.0], [4.0, 0.0, -1.0]];
-    let c = hermite_curve(0.5, 2.0, &start, &end).unwrap();
+    let c = hermite_curve(&start, &end, (0.5, 2.0)).unwrap();
     for k in 0..3 {
         let (a, b) = (
             c.derivative(&0.5, k).unwrap(),
@@ -215,11 +215,11 @@ fn data_splines_and_expressions_are_curves_on_their_domain() {
         .unwrap()
         .compile::<f64>(&());
     assert!(matches!(
-        CurveOn::new(&root, 1.0, 0.0),
+        CurveOn::new(&root, (1.0, 0.0)),
         Err(CurveError::Domain { .. })
     ));
-    assert!(CurveOn::new(&root, f64::NAN, 1.0).is_err());
-    let on_root = CurveOn::new(&root, 0.0, 20.0).unwrap();
+    assert!(CurveOn::new(&root, (f64::NAN, 1.0)).is_err());
+    let on_root = CurveOn::new(&root, (0.0, 20.0)).unwrap();
     assert!(matches!(
         on_root.point(&1.0),
         Err(CurveError::NotFinite { .. })

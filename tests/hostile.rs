@@ -51,7 +51,7 @@ fn a_nan_double_is_no_exact_ball() {
 fn hermite_data_refuse_a_nan_or_reversed_interval() {
     for (t0, t1) in [(0.0, f64::NAN), (f64::NAN, 1.0), (1.0, 1.0), (1.0, 0.0)] {
         let r = no_panic("HermiteData::new", || {
-            HermiteData::new(vec![0.0], vec![1.0], t0, t1)
+            HermiteData::new(vec![0.0], vec![1.0], (t0, t1))
         });
         assert!(r.is_err(), "[{t0}, {t1}] accepted");
     }
@@ -122,21 +122,20 @@ fn marin_entry_points_check_their_shapes() {
 
 #[test]
 fn bernstein_polynomials_need_points_and_an_interval() {
-    assert!(no_panic("empty", || Bernstein::<f64>::new(vec![], 0.0, 1.0)).is_err());
+    assert!(no_panic("empty", || Bernstein::<f64>::new(vec![], (0.0, 1.0))).is_err());
     let q = |n: i64| BigRational::from_integer(n.into());
-    assert!(no_panic("t0 = t1", || Bernstein::new(vec![q(1)], q(1), q(1))).is_err());
-    assert!(no_panic("NaN", || Bernstein::new(vec![1.0], 0.0, f64::NAN)).is_err());
+    assert!(no_panic("t0 = t1", || Bernstein::new(vec![q(1)], (q(1), q(1)))).is_err());
+    assert!(no_panic("NaN", || Bernstein::new(vec![1.0], (0.0, f64::NAN))).is_err());
     // Hermite data with no points, or of unequal lengths, are refused (their fields are
     // private: no struct literal skips `new`).
     assert!(no_panic("empty data", || HermiteData::<f64>::new(
         vec![],
         vec![],
-        0.0,
-        1.0
+        (0.0, 1.0)
     ))
     .is_err());
     let r = no_panic("ragged data", || {
-        HermiteData::new(vec![0.0, 1.0], vec![1.0], 0.0, 1.0)
+        HermiteData::new(vec![0.0, 1.0], vec![1.0], (0.0, 1.0))
     });
     assert!(r.is_err());
 }
@@ -296,7 +295,7 @@ fn curves_are_evaluated_on_their_domain_only() {
     use trajverify::curve::bezier::BezierCurve;
     use trajverify::curve::parametric::{ParamCurve, ParamCurveArclen, ParamCurveFrame};
     let bezier =
-        BezierCurve::new(vec![[0.0, 0.0, 0.0], [1.0, 1.0, 1.0]], 0.0, 1.0).expect("a line");
+        BezierCurve::new(vec![[0.0, 0.0, 0.0], [1.0, 1.0, 1.0]], (0.0, 1.0)).expect("a line");
     let ph = fit(
         &ExprCurve::parse("[cos(t), sin(t), t/5]")
             .expect("parses")
@@ -311,28 +310,26 @@ fn curves_are_evaluated_on_their_domain_only() {
         assert!(no_panic("PiecewisePh::frame", || ph.frame(&t)).is_err());
         assert!(no_panic("PiecewisePh::arc_length", || ph.arc_length(&t)).is_err());
     }
-    assert!(no_panic("empty", || BezierCurve::<f64, 2>::new(vec![], 0.0, 1.0)).is_err());
-    assert!(no_panic("t0 = t1", || BezierCurve::new(vec![[1.0]], 1.0, 1.0)).is_err());
+    assert!(no_panic("empty", || BezierCurve::<f64, 2>::new(vec![], (0.0, 1.0))).is_err());
+    assert!(no_panic("t0 = t1", || BezierCurve::new(vec![[1.0]], (1.0, 1.0))).is_err());
     let q = |n: i64| BigRational::from_integer(n.into());
     assert!(no_panic("exact t0 = t1", || BezierCurve::new(
         vec![[q(1)]],
-        q(1),
-        q(1)
+        (q(1), q(1))
     ))
     .is_err());
     // Hermite data: unequal derivative counts, no data, an empty interval.
     let d = [[0.0, 1.0], [1.0, 0.0]];
-    assert!(no_panic("hermite_curve", || hermite_curve(0.0, 1.0, &d, &d[..1])).is_err());
+    assert!(no_panic("hermite_curve", || hermite_curve(&d, &d[..1], (0.0, 1.0))).is_err());
     assert!(no_panic("hermite_curve", || hermite_curve::<f64, 2>(
-        0.0,
-        1.0,
         &[],
-        &[]
+        &[],
+        (0.0, 1.0)
     ))
     .is_err());
-    assert!(no_panic("hermite_curve", || hermite_curve(1.0, 1.0, &d, &d)).is_err());
-    assert!(no_panic("hermite_curve", || hermite_curve(0.0, f64::NAN, &d, &d)).is_err());
-    let ok = hermite_curve(0.0, 1.0, &d, &d).expect("C¹ data");
+    assert!(no_panic("hermite_curve", || hermite_curve(&d, &d, (1.0, 1.0))).is_err());
+    assert!(no_panic("hermite_curve", || hermite_curve(&d, &d, (0.0, f64::NAN))).is_err());
+    let ok = hermite_curve(&d, &d, (0.0, 1.0)).expect("C¹ data");
     assert!(ok.control_points().iter().flatten().all(|x| x.is_finite()));
 }
 

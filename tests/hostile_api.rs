@@ -148,7 +148,7 @@ fn erbs_with_fractional_sigma_refuses_the_kernel_centre() {
 #[test]
 fn derivative_orders_are_bounded() {
     use trajverify::curve::bezier::BezierCurve;
-    let line = BezierCurve::new(vec![[0.0, 0.0], [1.0, 1.0]], 0.0, 1.0).expect("a line");
+    let line = BezierCurve::new(vec![[0.0, 0.0], [1.0, 1.0]], (0.0, 1.0)).expect("a line");
     for order in [usize::MAX, 1_000_000_000] {
         let e = message(no_panic("derivatives", || line.derivatives(&0.5, order)));
         assert!(e.starts_with("order:"), "{e}");
@@ -163,14 +163,13 @@ fn constructors_refuse_nan_and_infinite_data() {
     use trajverify::curve::bezier::BezierCurve;
     assert!(no_panic("Bezier NaN", || BezierCurve::new(
         vec![[0.0, f64::NAN]],
-        0.0,
-        1.0
+        (0.0, 1.0)
     ))
     .is_err());
     for bad in [f64::NAN, f64::INFINITY] {
         let start = [[0.0, 0.0], [bad, 0.0]];
         let end = [[1.0, 1.0], [0.0, 1.0]];
-        assert!(no_panic("hermite_curve", || hermite_curve(0.0, 1.0, &start, &end)).is_err());
+        assert!(no_panic("hermite_curve", || hermite_curve(&start, &end, (0.0, 1.0))).is_err());
         let knots = vec![0.0, bad, 2.0];
         let points = [[0.0], [1.0], [0.0]];
         assert!(no_panic("spline knot", || NaturalSplineCurve::new(knots, &points)).is_err());
@@ -382,8 +381,7 @@ fn curvature_at_zero_speed_and_inverse_arc_length_are_errors_not_nan() {
     // A cubic with a cusp: γ′(1/2) = 0.
     let cusp = BezierCurve::new(
         vec![[0.0, 0.0], [1.0, 1.0], [0.0, 1.0], [1.0, 0.0]],
-        0.0,
-        1.0,
+        (0.0, 1.0),
     )
     .expect("a cubic");
     let r = no_panic("curvature at the cusp", || curvature(&cusp, &0.5));
@@ -391,7 +389,7 @@ fn curvature_at_zero_speed_and_inverse_arc_length_are_errors_not_nan() {
         Ok(k) => assert!(k.is_finite(), "Ok holding {k}"),
         Err(e) => assert!(e.to_string().starts_with("t:"), "{e}"),
     }
-    let line = BezierCurve::new(vec![[0.0, 0.0], [3.0, 4.0]], 0.0, 1.0).expect("a line");
+    let line = BezierCurve::new(vec![[0.0, 0.0], [3.0, 4.0]], (0.0, 1.0)).expect("a line");
     for s in [f64::NAN, -1.0, 6.0] {
         let e = message(no_panic("parameter_at_length", || {
             line.parameter_at_length(&s, &1e-12)

@@ -27,7 +27,7 @@ fn hermite_data() -> impl Strategy<Value = HermiteData<BigRational>> {
         )
             .prop_map(|(start, end, t0, (w, d))| {
                 let t1 = t0.clone() + q(w, d);
-                HermiteData::new(start, end, t0, t1).expect("valid by construction")
+                HermiteData::new(start, end, (t0, t1)).expect("valid by construction")
             })
     })
 }
@@ -55,7 +55,7 @@ proptest! {
     #[test]
     fn hermite_reversal(data in hermite_data()) {
         let flip = |v: &[BigRational]| v.iter().enumerate().map(|(j, x)| if j % 2 == 1 { -x.clone() } else { x.clone() }).collect::<Vec<_>>();
-        let reversed = HermiteData::new(flip(data.end()), flip(data.start()), data.interval().0.clone(), data.interval().1.clone()).unwrap();
+        let reversed = HermiteData::new(flip(data.end()), flip(data.start()), (data.interval().0.clone(), data.interval().1.clone())).unwrap();
         let mut p = data.solve().unwrap().into_control_points();
         p.reverse();
         prop_assert_eq!(reversed.solve().unwrap().into_control_points(), p);
@@ -68,9 +68,9 @@ proptest! {
         end in prop::collection::vec(-10.0f64..10.0, 4),
         width in 0.5f64..2.0,
     ) {
-        let fast = HermiteData::new(start.clone(), end.clone(), 0.0, width).unwrap().solve().unwrap();
+        let fast = HermiteData::new(start.clone(), end.clone(), (0.0, width)).unwrap().solve().unwrap();
         let to = |v: &[f64]| v.iter().map(|x| Float::with_val(256, *x)).collect::<Vec<_>>();
-        let precise = HermiteData::new(to(&start), to(&end), Float::with_val(256, 0), Float::with_val(256, width)).unwrap().solve().unwrap();
+        let precise = HermiteData::new(to(&start), to(&end), (Float::with_val(256, 0), Float::with_val(256, width))).unwrap().solve().unwrap();
         let scale = start.iter().chain(&end).fold(1.0f64, |s, x| s.max(x.abs()));
         for (a, b) in fast.control_points().iter().zip(precise.control_points()) {
             prop_assert!((a - b.to_f64()).abs() <= 1e-13 * scale, "{} vs {}", a, b.to_f64());
@@ -89,7 +89,7 @@ proptest! {
     /// Degree elevation keeps every value of the curve.
     #[test]
     fn elevation_keeps_values(points in prop::collection::vec(rational(), 1..10), times in 1usize..4, zeta in 0i64..=20) {
-        let b = Bernstein::new(points, q(-1, 1), q(3, 1)).unwrap();
+        let b = Bernstein::new(points, (q(-1, 1), q(3, 1))).unwrap();
         let e = b.elevate_by(times);
         let t = q(-1, 1) + q(4 * zeta, 20);
         prop_assert_eq!(b.eval(&t), e.eval(&t));

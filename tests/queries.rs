@@ -64,7 +64,7 @@ fn the_nearest_point_of_the_helix_to_a_point_on_its_axis() {
 #[test]
 fn subsegments_keep_the_parameter_and_measure_from_their_start() {
     let spline = helix_spline();
-    let part = Subsegment::new(&spline, 1.0, 2.0).expect("inside the domain");
+    let part = Subsegment::new(&spline, (1.0, 2.0)).expect("inside the domain");
     assert_eq!(part.domain(), (1.0, 2.0));
     assert_eq!(part.point(&1.5).unwrap(), spline.point(&1.5).unwrap());
     assert!(part.point(&2.5).is_err());
@@ -77,7 +77,7 @@ fn subsegments_keep_the_parameter_and_measure_from_their_start() {
     assert!(part.breakpoints().iter().all(|b| *b > 1.0 && *b < 2.0));
     assert_eq!(part.breakpoints().len(), 3);
     for (a, b) in [(2.0, 1.0), (-1.0, 1.0), (1.0, 7.0), (f64::NAN, 1.0)] {
-        assert!(Subsegment::new(&spline, a, b).is_err(), "[{a}, {b}]");
+        assert!(Subsegment::new(&spline, (a, b)).is_err(), "[{a}, {b}]");
     }
 }
 
@@ -99,7 +99,7 @@ fn batch_evaluation_matches_pointwise_and_names_the_bad_parameter() {
 fn queries_run_in_every_real_number_type() {
     let bits = 200u32;
     let q = |n: i64| Float::from_i64(n, &bits);
-    let c = BezierCurve::new(vec![[q(0), q(0)], [q(1), q(2)], [q(2), q(0)]], q(0), q(1))
+    let c = BezierCurve::new(vec![[q(0), q(0)], [q(1), q(2)], [q(2), q(0)]], (q(0), q(1)))
         .expect("a parabola");
     let e = extrema(&c).expect("extrema");
     let apex = Float::from_ratio(1, 2, &bits);

@@ -82,7 +82,7 @@ fn hermite_in<T: Field>(data: &HermiteInput, ctx: &T::Ctx) -> Result<Out<T>, Inp
         T::zero_in(ctx),
         T::from_rational(&(data.t1.clone() - &data.t0), ctx),
     );
-    let polygon = hermite::solve_points(&conv(&data.start), &conv(&data.end), &t0, &t1)
+    let polygon = hermite::solve_points(&conv(&data.start), &conv(&data.end), (&t0, &t1))
         .map_err(|e| InputError(format!("field \"start\": {e}")))?;
     let degree = polygon.len() as i64 - 1;
     let points = polygon

@@ -30,7 +30,7 @@ use crate::scalar::Real;
 /// use trajverify::curve::parametric::ParamCurve;
 ///
 /// let k = 0.5522847498;
-/// let arc = BezierCurve::new(vec![[1.0, 0.0], [1.0, k], [k, 1.0], [0.0, 1.0]], 0.0, 1.0).unwrap();
+/// let arc = BezierCurve::new(vec![[1.0, 0.0], [1.0, k], [k, 1.0], [0.0, 1.0]], (0.0, 1.0)).unwrap();
 /// let options = FitOptions { segments: 4, ..FitOptions::default() };
 /// let spline = fit(&AsCurve::new(&arc), (&0.0, &1.0), &options).unwrap();
 /// let p = spline.point(&0.5).unwrap();

@@ -29,12 +29,12 @@ impl<T: Field, const D: usize> BezierCurve<T, D> {
     /// ```
     /// use trajverify::curve::bezier::BezierCurve;
     /// use trajverify::curve::parametric::ParamCurve;
-    /// let line = BezierCurve::new(vec![[0.0, 0.0, 0.0], [2.0, 4.0, 6.0]], 1.0, 3.0).unwrap();
+    /// let line = BezierCurve::new(vec![[0.0, 0.0, 0.0], [2.0, 4.0, 6.0]], (1.0, 3.0)).unwrap();
     /// assert_eq!(line.point(&2.0).unwrap(), [1.0, 2.0, 3.0]);
     /// assert_eq!(line.derivative(&2.0, 1).unwrap(), [1.0, 2.0, 3.0]); // per unit of t
-    /// assert!(BezierCurve::<f64, 3>::new(vec![], 0.0, 1.0).is_err());
+    /// assert!(BezierCurve::<f64, 3>::new(vec![], (0.0, 1.0)).is_err());
     /// ```
-    pub fn new(points: Vec<[T; D]>, t0: T, t1: T) -> Result<Self, BernsteinError> {
+    pub fn new(points: Vec<[T; D]>, (t0, t1): (T, T)) -> Result<Self, BernsteinError> {
         if points.is_empty() {
             return Err(BernsteinError::Empty);
         }

@@ -28,13 +28,13 @@
 //! use trajverify::curve::parametric::{ParamCurve, ParamCurveArclen};
 //! use trajverify::scalar::BigRational;
 //!
-//! let fast = BezierCurve::new(vec![[0.0, 0.0], [1.0, 2.0], [3.0, 2.0], [4.0, 0.0]], 0.0, 2.0).unwrap();
+//! let fast = BezierCurve::new(vec![[0.0, 0.0], [1.0, 2.0], [3.0, 2.0], [4.0, 0.0]], (0.0, 2.0)).unwrap();
 //! assert_eq!(fast.point(&1.0).unwrap(), [2.0, 1.5]);
 //! assert!(fast.point(&2.5).is_err()); // outside [0, 2]
 //! assert!(fast.arc_length(&2.0).unwrap() > 4.0); // longer than the chord
 //!
 //! let q = |n: i64| BigRational::from_integer(n.into());
-//! let exact = BezierCurve::new(vec![[q(0)], [q(1)], [q(3)], [q(4)]], q(0), q(1)).unwrap();
+//! let exact = BezierCurve::new(vec![[q(0)], [q(1)], [q(3)], [q(4)]], (q(0), q(1))).unwrap();
 //! let jet = exact.derivatives(&BigRational::new(1.into(), 2.into()), 1).unwrap();
 //! assert_eq!(jet[0][0], q(2));
 //! assert_eq!(jet[1][0], BigRational::new(9.into(), 2.into())); // 3·(¼·1 + ½·2 + ¼·1)
@@ -222,7 +222,7 @@ pub fn check_domain<T: Field>(t: &T, (start, end): (&T, &T)) -> Result<(), Curve
 /// use trajverify::curve::ExprCurve;
 ///
 /// let helix = ExprCurve::parse("[cos(t), sin(t), 0.2*t]").unwrap().compile::<f64>(&());
-/// let on = CurveOn::new(helix, 0.0, 6.0).unwrap();
+/// let on = CurveOn::new(helix, (0.0, 6.0)).unwrap();
 /// let length = on.length().unwrap();
 /// assert!((length - 6.0 * 1.04f64.sqrt()).abs() < 1e-12);
 /// assert!(on.point(&7.0).is_err());
@@ -238,7 +238,7 @@ impl<C: Curve<T>, T: Real> CurveOn<C, T> {
     ///
     /// # Errors
     /// [`CurveError::Domain`] unless start < end, both finite.
-    pub fn new(curve: C, start: T, end: T) -> Result<Self, CurveError> {
+    pub fn new(curve: C, (start, end): (T, T)) -> Result<Self, CurveError> {
         if !(start.is_finite() && end.is_finite() && start.decide_lt(&end) == Some(true)) {
             return Err(CurveError::Domain {
                 start: start.to_f64(),
@@ -368,7 +368,7 @@ pub trait ParamCurveArclen<T: Real, const D: usize>: ParamCurve<T, D> {
     /// use trajverify::curve::bezier::BezierCurve;
     /// use trajverify::curve::parametric::ParamCurveArclen;
     /// // A straight segment of length 5 run at non-uniform speed (control points bunched).
-    /// let line = BezierCurve::new(vec![[0.0, 0.0], [0.3, 0.4], [3.0, 4.0]], 0.0, 1.0).unwrap();
+    /// let line = BezierCurve::new(vec![[0.0, 0.0], [0.3, 0.4], [3.0, 4.0]], (0.0, 1.0)).unwrap();
     /// let t = line.parameter_at_length(&2.5, &1e-12).unwrap();
     /// assert!((line.arc_length(&t).unwrap() - 2.5).abs() < 1e-10);
     /// assert!(line.parameter_at_length(&6.0, &1e-12).is_err());

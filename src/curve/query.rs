@@ -34,7 +34,7 @@ pub const MAX_POINTS: usize = 10_000_000;
 /// ```
 /// use trajverify::curve::bezier::BezierCurve;
 /// use trajverify::curve::query::points_at;
-/// let c = BezierCurve::new(vec![[0.0, 0.0], [1.0, 2.0], [2.0, 0.0]], 0.0, 1.0).unwrap();
+/// let c = BezierCurve::new(vec![[0.0, 0.0], [1.0, 2.0], [2.0, 0.0]], (0.0, 1.0)).unwrap();
 /// let p = points_at(&c, &[0.0, 0.5, 1.0]).unwrap();
 /// assert_eq!(p, vec![[0.0, 0.0], [1.0, 1.0], [2.0, 0.0]]);
 /// assert!(points_at(&c, &[0.5, 2.0]).is_err());
@@ -63,8 +63,8 @@ pub fn points_at<T: Field, const D: usize, C: ParamCurve<T, D> + ?Sized>(
 /// use trajverify::curve::bezier::BezierCurve;
 /// use trajverify::curve::parametric::{ParamCurve, ParamCurveArclen};
 /// use trajverify::curve::query::Subsegment;
-/// let line = BezierCurve::new(vec![[0.0, 0.0], [4.0, 0.0]], 0.0, 1.0).unwrap();
-/// let middle = Subsegment::new(&line, 0.25, 0.75).unwrap();
+/// let line = BezierCurve::new(vec![[0.0, 0.0], [4.0, 0.0]], (0.0, 1.0)).unwrap();
+/// let middle = Subsegment::new(&line, (0.25, 0.75)).unwrap();
 /// assert_eq!(middle.domain(), (0.25, 0.75));
 /// assert_eq!(middle.point(&0.5).unwrap(), [2.0, 0.0]);
 /// assert!(middle.point(&0.9).is_err());
@@ -82,7 +82,7 @@ impl<'a, T: Field, C: ?Sized> Subsegment<'a, C, T> {
     ///
     /// # Errors
     /// [`CurveError::Domain`] unless start < end (decided) and both lie in the curve's domain.
-    pub fn new<const D: usize>(curve: &'a C, start: T, end: T) -> Result<Self, CurveError>
+    pub fn new<const D: usize>(curve: &'a C, (start, end): (T, T)) -> Result<Self, CurveError>
     where
         C: ParamCurve<T, D>,
     {
@@ -151,7 +151,7 @@ pub struct Extremum<T> {
 /// use trajverify::curve::bezier::BezierCurve;
 /// use trajverify::curve::query::{bounding_box, extrema};
 /// // y = 2t(1 − t)·2 peaks at t = 1/2 with y = 1, between the control points' 0 and 2.
-/// let c = BezierCurve::new(vec![[0.0, 0.0], [1.0, 2.0], [2.0, 0.0]], 0.0, 1.0).unwrap();
+/// let c = BezierCurve::new(vec![[0.0, 0.0], [1.0, 2.0], [2.0, 0.0]], (0.0, 1.0)).unwrap();
 /// let e = extrema(&c).unwrap();
 /// assert!((e[1].max - 1.0).abs() < 1e-15 && (e[1].max_at - 0.5).abs() < 1e-8);
 /// let (low, high) = bounding_box(&c).unwrap();
@@ -255,7 +255,7 @@ pub struct Nearest<T, const D: usize> {
 /// ```
 /// use trajverify::curve::bezier::BezierCurve;
 /// use trajverify::curve::query::nearest_point;
-/// let c = BezierCurve::new(vec![[0.0, 0.0], [1.0, 2.0], [2.0, 0.0]], 0.0, 1.0).unwrap();
+/// let c = BezierCurve::new(vec![[0.0, 0.0], [1.0, 2.0], [2.0, 0.0]], (0.0, 1.0)).unwrap();
 /// let n = nearest_point(&c, &[1.0, 3.0]).unwrap();
 /// assert!((n.t - 0.5).abs() < 1e-8 && (n.distance - 2.0).abs() < 1e-12);
 /// ```

@@ -26,12 +26,12 @@
 //! use trajverify::scalar::BigRational;
 //!
 //! let q = |n: i64, d: i64| BigRational::new(n.into(), d.into());
-//! let exact = HermiteData::new(vec![q(0, 1); 3], vec![q(1, 1), q(1, 1), q(0, 1)], q(0, 1), q(2, 1))
+//! let exact = HermiteData::new(vec![q(0, 1); 3], vec![q(1, 1), q(1, 1), q(0, 1)], (q(0, 1), q(2, 1)))
 //!     .unwrap()
 //!     .solve()
 //!     .unwrap();
 //! assert_eq!(exact.control_points()[3..], [q(1, 5), q(3, 5), q(1, 1)]);
-//! let fast = HermiteData::new(vec![0.0; 3], vec![1.0, 1.0, 0.0], 0.0, 2.0).unwrap().solve().unwrap();
+//! let fast = HermiteData::new(vec![0.0; 3], vec![1.0, 1.0, 0.0], (0.0, 2.0)).unwrap().solve().unwrap();
 //! assert!((fast.control_points()[3] - 0.2).abs() < 1e-15);
 //! ```
 
@@ -115,7 +115,7 @@ impl<T: Field> HermiteData<T> {
     /// # Errors
     /// [`HermiteError::Empty`] when `start` or `end` is empty; [`HermiteError::LengthMismatch`]
     /// when their lengths differ; [`HermiteError::EmptyInterval`] unless t₀ < t₁ (NaN fails).
-    pub fn new(start: Vec<T>, end: Vec<T>, t0: T, t1: T) -> Result<Self, HermiteError> {
+    pub fn new(start: Vec<T>, end: Vec<T>, (t0, t1): (T, T)) -> Result<Self, HermiteError> {
         let data = HermiteData { start, end, t0, t1 };
         data.check()?;
         Ok(data)
@@ -193,7 +193,7 @@ impl<T: Field> HermiteData<T> {
         let head = anti_difference(&scaled(&self.start)); // p₀…pₘ
         let tail = backward_anti_difference(&scaled(&self.end)); // pₘ₊₁…pₙ
         let points = head.into_iter().chain(tail).collect();
-        Bernstein::new(points, self.t0.clone(), self.t1.clone()).map_err(|e| match e {
+        Bernstein::new(points, (self.t0.clone(), self.t1.clone())).map_err(|e| match e {
             crate::numeric::poly::bernstein::BernsteinError::Empty => HermiteError::Empty,
             crate::numeric::poly::bernstein::BernsteinError::Interval => {
                 HermiteError::EmptyInterval
@@ -216,8 +216,7 @@ impl<T: Field> HermiteData<T> {
 pub fn solve_points<T: Field>(
     start: &[Vec<T>],
     end: &[Vec<T>],
-    t0: &T,
-    t1: &T,
+    (t0, t1): (&T, &T),
 ) -> Result<Vec<Vec<T>>, HermiteError> {
     let dims = start.first().map_or(0, Vec::len);
     if dims == 0 || start.iter().chain(end).any(|v| v.len() != dims) {
@@ -229,8 +228,7 @@ pub fn solve_points<T: Field>(
             HermiteData::new(
                 coordinate(start, c),
                 coordinate(end, c),
-                t0.clone(),
-                t1.clone(),
+                (t0.clone(), t1.clone()),
             )?
             .solve()
         })
@@ -265,20 +263,19 @@ pub fn solve_points<T: Field>(
 ///
 /// let start = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 0.0]];
 /// let end = [[1.0, 1.0, 0.5], [0.0, 1.0, 0.0], [0.0, 0.0, 0.0]];
-/// let curve = hermite_curve(0.0, 2.0, &start, &end).unwrap();
+/// let curve = hermite_curve(&start, &end, (0.0, 2.0)).unwrap();
 /// assert_eq!(curve.degree(), 5);
 /// let v = curve.derivative(&2.0, 1).unwrap();
 /// assert!((v[1] - 1.0).abs() < 1e-15 && v[0].abs() < 1e-15);
 ///
 /// let q = |n: i64| BigRational::from_integer(n.into());
-/// let exact = hermite_curve(q(0), q(2), &[[q(0)], [q(0)], [q(0)]], &[[q(1)], [q(1)], [q(0)]]).unwrap();
+/// let exact = hermite_curve(&[[q(0)], [q(0)], [q(0)]], &[[q(1)], [q(1)], [q(0)]], (q(0), q(2))).unwrap();
 /// assert_eq!(exact.control_points()[3][0], BigRational::new(1.into(), 5.into())); // paper 000, Fig. 2
 /// ```
 pub fn hermite_curve<T: Field, const D: usize>(
-    t0: T,
-    t1: T,
     start: &[[T; D]],
     end: &[[T; D]],
+    (t0, t1): (T, T),
 ) -> Result<BezierCurve<T, D>, HermiteError> {
     if start.is_empty() || end.is_empty() {
         return Err(HermiteError::Empty);
@@ -292,12 +289,12 @@ pub fn hermite_curve<T: Field, const D: usize>(
         }
     }
     let rows = |v: &[[T; D]]| v.iter().map(|p| p.to_vec()).collect::<Vec<_>>();
-    let polygon = solve_points(&rows(start), &rows(end), &t0, &t1)?;
+    let polygon = solve_points(&rows(start), &rows(end), (&t0, &t1))?;
     let points = polygon
         .into_iter()
         .map(|p| std::array::from_fn(|c| p[c].clone()))
         .collect();
-    BezierCurve::new(points, t0, t1).map_err(|e| match e {
+    BezierCurve::new(points, (t0, t1)).map_err(|e| match e {
         crate::numeric::poly::bernstein::BernsteinError::NotFinite(k) => {
             HermiteError::NotFinite(format!("control point {k} (overflow)"))
         }
@@ -393,8 +390,7 @@ pub fn hermite_matrix<T: Field>(m: usize, t0: &T, t1: &T) -> Result<Matrix<T>, H
         let data = HermiteData::new(
             unit[..=m].to_vec(),
             unit[m + 1..].to_vec(),
-            t0.clone(),
-            t1.clone(),
+            (t0.clone(), t1.clone()),
         )?;
         columns.push(data.solve()?.into_control_points());
     }
@@ -416,13 +412,15 @@ mod tests {
 
     #[test]
     fn figure_two_control_points() {
-        let fast = HermiteData::new(ints(&[0, 0, 0]), ints(&[1, 1, 0]), q(0, 1), q(1, 1)).unwrap();
+        let fast =
+            HermiteData::new(ints(&[0, 0, 0]), ints(&[1, 1, 0]), (q(0, 1), q(1, 1))).unwrap();
         let p = fast.solve().unwrap().into_control_points();
         assert_eq!(
             p,
             vec![q(0, 1), q(0, 1), q(0, 1), q(3, 5), q(4, 5), q(1, 1)]
         );
-        let slow = HermiteData::new(ints(&[0, 0, 0]), ints(&[1, 1, 0]), q(0, 1), q(2, 1)).unwrap();
+        let slow =
+            HermiteData::new(ints(&[0, 0, 0]), ints(&[1, 1, 0]), (q(0, 1), q(2, 1))).unwrap();
         let p = slow.solve().unwrap().into_control_points();
         assert_eq!(
             p,
@@ -444,7 +442,7 @@ mod tests {
     fn points_are_solved_coordinate_by_coordinate() {
         let start = vec![vec![q(0, 1), q(0, 1)], vec![q(1, 1), q(0, 1)]];
         let end = vec![vec![q(1, 1), q(1, 1)], vec![q(0, 1), q(1, 1)]];
-        let p = solve_points(&start, &end, &q(0, 1), &q(3, 2)).unwrap();
+        let p = solve_points(&start, &end, (&q(0, 1), &q(3, 2))).unwrap();
         assert_eq!(
             p,
             vec![
@@ -456,7 +454,7 @@ mod tests {
         );
         let ragged = vec![vec![q(0, 1)], vec![q(1, 1), q(2, 1)]];
         assert_eq!(
-            solve_points(&ragged, &ragged, &q(0, 1), &q(1, 1)),
+            solve_points(&ragged, &ragged, (&q(0, 1), &q(1, 1))),
             Err(HermiteError::DimensionMismatch)
         );
     }
@@ -464,15 +462,15 @@ mod tests {
     #[test]
     fn shape_errors() {
         assert_eq!(
-            HermiteData::new(ints(&[0]), ints(&[1, 2]), q(0, 1), q(1, 1)),
+            HermiteData::new(ints(&[0]), ints(&[1, 2]), (q(0, 1), q(1, 1))),
             Err(HermiteError::LengthMismatch { start: 1, end: 2 })
         );
         assert_eq!(
-            HermiteData::new(ints(&[0]), ints(&[1]), q(1, 1), q(1, 1)),
+            HermiteData::new(ints(&[0]), ints(&[1]), (q(1, 1), q(1, 1))),
             Err(HermiteError::EmptyInterval)
         );
         assert_eq!(
-            HermiteData::<BigRational>::new(vec![], vec![], q(0, 1), q(1, 1)),
+            HermiteData::<BigRational>::new(vec![], vec![], (q(0, 1), q(1, 1))),
             Err(HermiteError::Empty)
         );
     }
@@ -480,7 +478,7 @@ mod tests {
     #[test]
     fn f64_scale_overflow_is_an_error() {
         // m = 200: 401!/201! ≈ 1e496 overflows f64 (m = 119 still fits: 239!/120! ≈ 1e267).
-        let data = HermiteData::new(vec![0.0; 201], vec![0.0; 201], 0.0, 1.0).unwrap();
+        let data = HermiteData::new(vec![0.0; 201], vec![0.0; 201], (0.0, 1.0)).unwrap();
         assert!(matches!(
             data.solve(),
             Err(HermiteError::ScaleNotRepresentable { .. })

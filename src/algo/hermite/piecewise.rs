@@ -77,7 +77,7 @@ pub fn interpolate_curve<T: Real, C: Curve<T> + ?Sized>(
     let pieces = (0..segments)
         .into_par_iter()
         .map(carried(|k: usize| {
-            let points = solve_points(&jets[k], &jets[k + 1], &zero, &one)?;
+            let points = solve_points(&jets[k], &jets[k + 1], (&zero, &one))?;
             Ok(points
                 .into_iter()
                 .map(|p| [p[0].clone(), p[1].clone(), p[2].clone()])

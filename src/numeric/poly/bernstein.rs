@@ -59,12 +59,12 @@ impl<T: Field> Bernstein<T> {
     /// use trajverify::scalar::BigRational;
     /// let q = |n: i64| BigRational::from_integer(n.into());
     /// // The Fig. 2 control points of paper 000 on [0, 1]: B(1/2) = 1/2 exactly.
-    /// let b = Bernstein::new(vec![q(0), q(0), q(0), q(1), q(1), q(1)], q(0), q(1)).unwrap();
+    /// let b = Bernstein::new(vec![q(0), q(0), q(0), q(1), q(1), q(1)], (q(0), q(1))).unwrap();
     /// assert_eq!(b.eval(&BigRational::new(1.into(), 2.into())), BigRational::new(1.into(), 2.into()));
-    /// assert!(Bernstein::<f64>::new(vec![], 0.0, 1.0).is_err());
-    /// assert!(Bernstein::new(vec![1.0], 1.0, 1.0).is_err());
+    /// assert!(Bernstein::<f64>::new(vec![], (0.0, 1.0)).is_err());
+    /// assert!(Bernstein::new(vec![1.0], (1.0, 1.0)).is_err());
     /// ```
-    pub fn new(control_points: Vec<T>, t0: T, t1: T) -> Result<Self, BernsteinError> {
+    pub fn new(control_points: Vec<T>, (t0, t1): (T, T)) -> Result<Self, BernsteinError> {
         if control_points.is_empty() {
             return Err(BernsteinError::Empty);
         }
@@ -389,7 +389,11 @@ mod tests {
     }
 
     fn sample() -> Bernstein<BigRational> {
-        Bernstein::new(vec![q(1, 1), q(-2, 1), q(3, 2), q(5, 1)], q(1, 1), q(3, 1)).unwrap()
+        Bernstein::new(
+            vec![q(1, 1), q(-2, 1), q(3, 2), q(5, 1)],
+            (q(1, 1), q(3, 1)),
+        )
+        .unwrap()
     }
 
     #[test]

@@ -600,10 +600,9 @@ fn unit_datum_response(m: usize, t: i64) -> Option<BigRational> {
     start[m] = [BigRational::from_integer(1.into())];
     let end = vec![[zero.clone()]; m + 1];
     let curve = crate::algo::hermite::hermite_curve(
-        zero,
-        BigRational::from_integer(t.into()),
         &start,
         &end,
+        (zero, BigRational::from_integer(t.into())),
     )
     .ok()?;
     let middle = BigRational::new(t.into(), 2.into());

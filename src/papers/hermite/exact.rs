@@ -130,9 +130,13 @@ pub fn eq16_17_index_ranges() -> (Outcome, String) {
     }
     // The Fig. 2 instance: start data all zero, yet p₃ changes with the duration.
     let p3 = |t1: i64| {
-        HermiteData::new(vec![q(0), q(0), q(0)], vec![q(1), q(1), q(0)], q(0), q(t1))
-            .and_then(|d| d.solve())
-            .map(|b| b.control_points()[3].clone())
+        HermiteData::new(
+            vec![q(0), q(0), q(0)],
+            vec![q(1), q(1), q(0)],
+            (q(0), q(t1)),
+        )
+        .and_then(|d| d.solve())
+        .map(|b| b.control_points()[3].clone())
     };
     let fig2 = match (p3(1), p3(2)) {
         (Ok(a), Ok(b)) => format!("in the Fig. 2 instance (m = 2) the start data are all zero, yet p_3 = {a} for duration 1 and {b} for duration 2"),
@@ -279,7 +283,7 @@ pub fn eq13_derivatives() -> Outcome {
     for n in 0..=15 {
         let t0 = rng.rational();
         let t1 = t0.clone() + rng.positive();
-        let b = Bernstein::new(rng.rationals(n + 1), t0.clone(), t1.clone())
+        let b = Bernstein::new(rng.rationals(n + 1), (t0.clone(), t1.clone()))
             .expect("t0 < t1 and n + 1 points by construction");
         let power = b.to_power_basis();
         for j in 0..=n + 1 {
@@ -342,8 +346,7 @@ pub fn fig2(duration: i64, printed: &str) -> (Outcome, Bernstein<Q>) {
     let data = HermiteData::new(
         vec![q(0), q(0), q(0)],
         vec![q(1), q(1), q(0)],
-        q(0),
-        q(duration),
+        (q(0), q(duration)),
     );
     let Ok(curve) = data.and_then(|d| d.solve()) else {
         let fail = Outcome::new(
@@ -354,7 +357,7 @@ pub fn fig2(duration: i64, printed: &str) -> (Outcome, Bernstein<Q>) {
         );
         return (
             fail,
-            Bernstein::new(vec![q(0)], q(0), q(1)).expect("a constant on [0, 1]"),
+            Bernstein::new(vec![q(0)], (q(0), q(1))).expect("a constant on [0, 1]"),
         );
     };
     let shown: Vec<String> = curve

@@ -79,7 +79,7 @@ pub struct TurnMetrics {
 
 /// Solve one coordinate's Hermite problem (all data valid by construction).
 fn solve_coordinate<T: Field>(start: Vec<T>, end: Vec<T>, t0: T, t1: T) -> Option<Bernstein<T>> {
-    HermiteData::new(start, end, t0, t1)
+    HermiteData::new(start, end, (t0, t1))
         .and_then(|d| d.solve())
         .ok()
 }
@@ -89,8 +89,7 @@ fn to_f64_curve<T: Field>(c: &Curve<T>) -> Curve<f64> {
         .map(|b| {
             Bernstein::new(
                 b.control_points().iter().map(Field::to_f64).collect(),
-                b.t0().to_f64(),
-                b.t1().to_f64(),
+                (b.t0().to_f64(), b.t1().to_f64()),
             )
             .expect("the solved curve's interval, rounded to f64")
         })

@@ -17,8 +17,7 @@ pub fn fig2_panels(fast: &Bernstein<BigRational>, slow: &Bernstein<BigRational>)
                     let d = b.nth_derivative(j);
                     let f: Bernstein<f64> = Bernstein::new(
                         d.control_points().iter().map(Field::to_f64).collect(),
-                        d.t0().to_f64(),
-                        d.t1().to_f64(),
+                        (d.t0().to_f64(), d.t1().to_f64()),
                     )
                     .expect("the solved curve's interval, rounded to f64");
                     let pts = (0..=200).map(|i| {

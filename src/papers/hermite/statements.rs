@@ -79,7 +79,7 @@ pub fn n_is_count(printed_fig2: &str) -> Outcome {
 /// Sec. 3.1: "x_0^(1) = nΔ¹(p_0) = n(p_1 − p_0)", printed without Eq. 14's 1/(t_1 − t_0).
 pub fn first_derivative_factor() -> Outcome {
     // A documented instance on an interval of length 3.
-    let data = HermiteData::new(vec![q(1), q(2)], vec![q(4), q(-1)], q(0), q(3));
+    let data = HermiteData::new(vec![q(1), q(2)], vec![q(4), q(-1)], (q(0), q(3)));
     let Ok(curve) = data.and_then(|d| d.solve()) else {
         return Outcome::new(
             "",
@@ -114,7 +114,7 @@ pub fn order_count() -> Outcome {
     for m in 0..=10usize {
         let start: Vec<Q> = (0..=m).map(|j| q(j as i64 + 1)).collect();
         let end: Vec<Q> = (0..=m).map(|j| q(2 * j as i64 - 3)).collect();
-        match HermiteData::new(start, end, q(0), q(1)).and_then(|d| d.solve()) {
+        match HermiteData::new(start, end, (q(0), q(1))).and_then(|d| d.solve()) {
             Ok(c) => degrees.push(c.degree()),
             Err(_) => degrees.push(usize::MAX),
         }
@@ -147,7 +147,7 @@ fn acceleration_range(c: &Bernstein<Q>) -> Result<(Ball, Ball), String> {
             Ball::from_rational(b.t0(), &RANGE_BITS),
             Ball::from_rational(b.t1(), &RANGE_BITS),
         );
-        Bernstein::new(points, t0, t1).map_err(|e| e.to_string())
+        Bernstein::new(points, (t0, t1)).map_err(|e| e.to_string())
     };
     let (second, third) = (
         to_balls(&c.nth_derivative(2))?,
@@ -202,7 +202,7 @@ pub fn eq4_basis_and_endpoints() -> Outcome {
     for n in 1..=12usize {
         let points = rng.rationals(n + 1);
         let (t0, t1) = (Q::new((-3).into(), 2.into()), Q::new(7.into(), 3.into()));
-        let curve = Bernstein::new(points.clone(), t0.clone(), t1.clone())
+        let curve = Bernstein::new(points.clone(), (t0.clone(), t1.clone()))
             .expect("t0 < t1 and n + 1 points by construction");
         let span = t1.clone() - &t0;
         for t in [t0.clone(), Q::new(1.into(), 5.into()), t1.clone()] {
@@ -243,14 +243,13 @@ pub fn eq4_basis_and_endpoints() -> Outcome {
 /// nothing decides between them: undetermined by clause 5.
 pub fn fig4_caption_vs_text() -> Outcome {
     // Each reading as one exact problem of Eqs. 16–18 on one coordinate.
-    let text_problem = HermiteData::new(vec![q(0), q(70)], vec![q(3000), q(60)], q(0), q(60))
+    let text_problem = HermiteData::new(vec![q(0), q(70)], vec![q(3000), q(60)], (q(0), q(60)))
         .and_then(|d| d.solve())
         .is_ok();
     let caption_problem = HermiteData::new(
         vec![q(0), q(70), q(-2)],
         vec![q(3000), q(60), q(0)],
-        q(0),
-        q(60),
+        (q(0), q(60)),
     )
     .and_then(|d| d.solve())
     .is_ok();
@@ -327,7 +326,7 @@ pub fn duration_coupling(fast: &Bernstein<Q>, slow: &Bernstein<Q>) -> Outcome {
             .sum()
     };
     let moved = |curve: &Bernstein<Q>, t1: i64| {
-        Bernstein::new(curve.control_points().to_vec(), q(0), q(t1)).ok()
+        Bernstein::new(curve.control_points().to_vec(), (q(0), q(t1))).ok()
     };
     let (Some(fast_on_two), Some(slow_on_one)) = (moved(fast, 2), moved(slow, 1)) else {
         return Outcome::new(
@@ -385,7 +384,7 @@ pub fn triangular() -> Outcome {
                     && a[(m + 1 + j, n - j)] != zero
             });
             let (start, end) = (rng.rationals(m + 1), rng.rationals(m + 1));
-            let recursive = HermiteData::new(start.clone(), end.clone(), q(0), t1.clone())
+            let recursive = HermiteData::new(start.clone(), end.clone(), (q(0), t1.clone()))
                 .and_then(|d| d.solve())
                 .map(|c| c.control_points().to_vec())
                 .ok();

@@ -64,8 +64,7 @@ impl Polygons {
         let local = |b: &Bernstein<Ball>| {
             Bernstein::new(
                 b.control_points().to_vec(),
-                Ball::zero_in(&BITS),
-                Ball::one_in(&BITS),
+                (Ball::zero_in(&BITS), Ball::one_in(&BITS)),
             )
             .map_err(|e| e.to_string())
         };
