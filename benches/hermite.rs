@@ -48,21 +48,24 @@ fn condition_number(c: &mut Criterion) {
     for m in [10usize, 30] {
         g.bench_function(BenchmarkId::new("f64_jacobi", m), |b| {
             b.iter(|| {
-                condition::condition::<f64>(black_box(m), &0.0, &1.0, TransformKind::Transform)
+                condition::condition::<f64>(black_box(m), (&0.0, &1.0), TransformKind::Transform)
             })
         });
         let (t0, t1) = (
             BigRational::from_integer(0.into()),
             BigRational::from_integer(1.into()),
         );
-        let a = trajverify::algo::hermite::transform_matrix(m, &t0, &t1, TransformKind::Transform)
-            .map(|q| q.to_f64());
+        let a =
+            trajverify::algo::hermite::transform_matrix(m, (&t0, &t1), TransformKind::Transform)
+                .map(|q| q.to_f64());
         g.bench_function(BenchmarkId::new("f64_nalgebra_full", m), |b| {
             b.iter(|| reference::condition_number(black_box(&a)))
         });
         let (z, o) = (Float::with_val(256, 0), Float::with_val(256, 1));
         g.bench_function(BenchmarkId::new("mpfr256", m), |b| {
-            b.iter(|| condition::condition::<Float>(black_box(m), &z, &o, TransformKind::Transform))
+            b.iter(|| {
+                condition::condition::<Float>(black_box(m), (&z, &o), TransformKind::Transform)
+            })
         });
     }
     g.finish();

@@ -82,7 +82,7 @@ proptest! {
     fn partition_of_unity(n in 0usize..=20, t0 in rational(), (w, d) in (1i64..=100, 1i64..=10), zeta in 0i64..=50) {
         let t1 = t0.clone() + q(w, d);
         let t = t0.clone() + (t1.clone() - &t0) * q(zeta, 50);
-        let total = (0..=n).fold(q(0, 1), |acc, k| acc + basis(n, k, &t, &t0, &t1));
+        let total = (0..=n).fold(q(0, 1), |acc, k| acc + basis(n, k, &t, (&t0, &t1)));
         prop_assert_eq!(total, q(1, 1));
     }
 

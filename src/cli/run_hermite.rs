@@ -172,7 +172,7 @@ pub fn run_condition(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Ren
     )?;
     // JSON has no infinity: null when the f64 matrix leaves f64's range or nalgebra's σ_min
     // is 0.
-    let raw_reference = condition::f64_reference(m, &t0, &t1, kind);
+    let raw_reference = condition::f64_reference(m, (&t0, &t1), kind);
     let reference = raw_reference.filter(|k| k.is_finite());
     let f64_note = match (raw_reference, condition::f64_out_of_range(m, scale)) {
         (None, Some(why)) => why,
@@ -223,7 +223,7 @@ impl ConditionJob {
         let needed = f64::from(bits) + 64.0 + (high - low) + 4.0 * self.m as f64;
         let locate = needed.min(f64::from(u32::MAX / 4)) as u32;
         let relative = 2f64.powi(-(bits.min(1000) as i32));
-        condition::proven(self.m, &self.t0, &self.t1, self.kind, locate, relative).ok_or_else(|| {
+        condition::proven(self.m, (&self.t0, &self.t1), self.kind, locate, relative).ok_or_else(|| {
             RunError::Input(format!(
                 "output \"condition_number\": the inertia brackets did not close at {bits} bits; raise the precision"
             ))
@@ -327,7 +327,7 @@ fn f64_matrix_condition(
     t1: &BigRational,
     kind: TransformKind,
 ) -> Option<Result<f64, crate::numeric::linalg::svd::NoConvergence>> {
-    let a = crate::algo::hermite::transform_matrix(m, t0, t1, kind).map(|q| q.to_f64());
+    let a = crate::algo::hermite::transform_matrix(m, (t0, t1), kind).map(|q| q.to_f64());
     if a.entries().iter().any(|x| !x.is_finite()) {
         return None;
     }

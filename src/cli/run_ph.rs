@@ -198,7 +198,7 @@ fn check_finite<T: Real, C: Curve<T>>(
 ) -> Result<T, InputError> {
     let mut scale = T::zero_in(&a.ctx());
     for k in 0..=segments {
-        let t = crate::algo::ph::piecewise::knot(a, b, segments, k);
+        let t = crate::algo::ph::piecewise::knot((a, b), segments, k);
         let jet = c.jet(&t, 4);
         if jet.iter().flatten().any(|x| !x.is_finite()) {
             return fail(format!(

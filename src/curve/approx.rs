@@ -38,12 +38,12 @@ pub trait BernsteinPieces<T: Real>: Sync {
     /// same formula past b: callers pass k ≤ N).
     fn knot(&self, k: usize) -> T {
         let (a, b) = self.interval();
-        knot(a, b, self.count(), k)
+        knot((a, b), self.count(), k)
     }
 }
 
 /// a + (b − a) k / N.
-pub fn knot<T: Field>(a: &T, b: &T, n: usize, k: usize) -> T {
+pub fn knot<T: Field>((a, b): (&T, &T), n: usize, k: usize) -> T {
     let ctx = a.ctx();
     a.clone() + &((b.clone() - a) * &T::from_i64(k as i64, &ctx) / &T::from_i64(n as i64, &ctx))
 }

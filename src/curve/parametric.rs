@@ -472,7 +472,7 @@ pub fn quadrature_arc_length<T: Real, const D: usize, C: ParamCurve<T, D> + ?Siz
                 .derivative(&u, 1)
                 .map_or_else(|_| zero.clone(), |d| norm(&d))
         };
-        total += &rule.integrate(&w[0], &w[1], speed, &tol, &zero).value;
+        total += &rule.integrate((&w[0], &w[1]), speed, &tol, &zero).value;
     }
     Ok(total)
 }

@@ -150,14 +150,13 @@ impl Ord for Piece {
 /// };
 /// let (a, b) = (Float::with_val(128, 0), Float::with_val(128, 1));
 /// let options = SearchOptions { tolerance: 1e-9, ..SearchOptions::default() };
-/// let max = proven_maximum(f, &a, &b, &options).unwrap();
+/// let max = proven_maximum(f, (&a, &b), &options).unwrap();
 /// assert!(max.lower <= 0.25 && max.upper >= 0.25);
 /// assert!(max.upper.to_f64() - max.lower.to_f64() <= 1e-9);
 /// ```
 pub fn proven_maximum<F>(
     f: F,
-    start: &Float,
-    end: &Float,
+    (start, end): (&Float, &Float),
     options: &SearchOptions,
 ) -> Result<MaximumEnclosure, SearchError>
 where
@@ -289,15 +288,14 @@ pub fn midpoint(x: &Ball) -> Ball {
 /// As [`proven_maximum`], for either search.
 pub fn proven_range<F>(
     f: F,
-    start: &Float,
-    end: &Float,
+    (start, end): (&Float, &Float),
     options: &SearchOptions,
 ) -> Result<(MaximumEnclosure, MaximumEnclosure), SearchError>
 where
     F: Fn(&Ball) -> Result<Ball, String>,
 {
-    let max = proven_maximum(&f, start, end, options)?;
-    let negated = proven_maximum(|x: &Ball| f(x).map(|v| -v), start, end, options)?;
+    let max = proven_maximum(&f, (start, end), options)?;
+    let negated = proven_maximum(|x: &Ball| f(x).map(|v| -v), (start, end), options)?;
     let min = MaximumEnclosure {
         lower: -negated.upper,
         upper: -negated.lower,
@@ -334,7 +332,7 @@ mod tests {
             tolerance: 1e-20,
             ..SearchOptions::default()
         };
-        let max = proven_maximum(f, &a, &b, &options).unwrap();
+        let max = proven_maximum(f, (&a, &b), &options).unwrap();
         assert!(max.lower <= 1.0 && max.upper >= 1.0);
         assert!(Float::with_val(128, &max.upper - &max.lower) <= 1e-20);
     }
@@ -348,17 +346,16 @@ mod tests {
         };
         let (min, max) = proven_range(
             |x: &Ball| Ok(x.clone() - &Ball::from_f64(0.5, &128)),
-            &a,
-            &b,
+            (&a, &b),
             &options,
         )
         .unwrap();
         assert!(min.lower <= -0.5 && min.upper >= -0.5);
         assert!(max.lower <= 0.5 && max.upper >= 0.5);
-        let failing = proven_maximum(|_: &Ball| Err("no value".to_string()), &a, &b, &options);
+        let failing = proven_maximum(|_: &Ball| Err("no value".to_string()), (&a, &b), &options);
         assert!(matches!(failing, Err(SearchError::Evaluation { .. })));
         assert!(matches!(
-            proven_maximum(|x: &Ball| Ok(x.clone()), &b, &a, &options),
+            proven_maximum(|x: &Ball| Ok(x.clone()), (&b, &a), &options),
             Err(SearchError::BadInterval { .. })
         ));
     }
@@ -373,7 +370,7 @@ mod tests {
             bits: 128,
         };
         let f = |x: &Ball| -> Result<Ball, String> { Ok(x.clone() * &(Ball::one_in(&128) - x)) };
-        let max = proven_maximum(f, &a, &b, &options).unwrap();
+        let max = proven_maximum(f, (&a, &b), &options).unwrap();
         assert!(max.lower <= 0.25 && max.upper >= 0.25);
         assert!(max.boxes <= 12);
     }

@@ -31,13 +31,12 @@ pub struct Quadrature<T> {
 /// ∫_a^b f, f called as f(x − a, b − x), to relative tolerance `tol` (at most `max_level`
 /// halvings of the step, h = 2^−level). Builds a one-off [`TanhSinh`] rule.
 pub fn tanh_sinh<T: Real>(
-    a: &T,
-    b: &T,
+    (a, b): (&T, &T),
     f: impl Fn(&T, &T) -> T,
     tol: &T,
     max_level: usize,
 ) -> Quadrature<T> {
-    TanhSinh::new(&a.ctx(), max_level).integrate(a, b, f, tol, &T::zero_in(&a.ctx()))
+    TanhSinh::new(&a.ctx(), max_level).integrate((a, b), f, tol, &T::zero_in(&a.ctx()))
 }
 
 /// One node of the rule on [−1, 1], for the half-width 1: the distances of x to the near
@@ -111,8 +110,7 @@ impl<T: Real> TanhSinh<T> {
     /// total they will be divided by), or at the last level.
     pub fn integrate(
         &self,
-        a: &T,
-        b: &T,
+        (a, b): (&T, &T),
         f: impl Fn(&T, &T) -> T,
         tol: &T,
         scale: &T,
@@ -238,8 +236,7 @@ mod tests {
     fn integrates_flat_and_singular_ends() {
         // ∫_0^1 exp(−1/(x(1−x))) dx = 0.00702985840661… (flat at both ends).
         let q = tanh_sinh(
-            &0.0,
-            &1.0,
+            (&0.0, &1.0),
             |l: &f64, r: &f64| (-1.0 / (l * r)).exp(),
             &1e-14,
             12,
@@ -252,8 +249,7 @@ mod tests {
         // ∫_0^1 1/√x dx = 2 (singular at 0), in MPFR-200.
         let ctx = 200u32;
         let q = tanh_sinh(
-            &Float::with_val(ctx, 0),
-            &Float::with_val(ctx, 1),
+            (&Float::with_val(ctx, 0), &Float::with_val(ctx, 1)),
             |l: &Float, _: &Float| Float::with_val(ctx, 1) / l.clone().sqrt(),
             &default_tolerance::<Float>(&ctx),
             14,

@@ -363,7 +363,7 @@ impl<T: Real> Erbs<T> {
                 .get(j - 1)
                 .cloned()
                 .unwrap_or_else(|| T::zero_in(&ctx));
-            total += &self.rule.integrate(p, q, f, &tol, &scale).value;
+            total += &self.rule.integrate((p, q), f, &tol, &scale).value;
         }
         total
     }

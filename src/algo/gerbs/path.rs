@@ -949,7 +949,7 @@ impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
                 };
                 (d[0].clone() * &d[0] + &(d[1].clone() * &d[1])).sqrt()
             };
-            total += &rule.integrate(&w[0], &w[1], speed, tol, &zero).value;
+            total += &rule.integrate((&w[0], &w[1]), speed, tol, &zero).value;
         }
         total
     }

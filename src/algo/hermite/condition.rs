@@ -32,8 +32,8 @@ use crate::scalar::{BigRational, Field, Float, Real};
 use rug::float::Round;
 
 /// The start block B: rows and columns 0…m of the transform matrix.
-pub fn start_block<T: Field>(m: usize, t0: &T, t1: &T, kind: TransformKind) -> Matrix<T> {
-    let a = transform_matrix(m, t0, t1, kind);
+pub fn start_block<T: Field>(m: usize, (t0, t1): (&T, &T), kind: TransformKind) -> Matrix<T> {
+    let a = transform_matrix(m, (t0, t1), kind);
     Matrix::from_fn(m + 1, m + 1, |j, k| a[(j, k)].clone())
 }
 
@@ -41,11 +41,10 @@ pub fn start_block<T: Field>(m: usize, t0: &T, t1: &T, kind: TransformKind) -> M
 /// and the end block equals D·B with its columns in reverse order.
 pub fn has_block_structure(
     m: usize,
-    t0: &BigRational,
-    t1: &BigRational,
+    (t0, t1): (&BigRational, &BigRational),
     kind: TransformKind,
 ) -> bool {
-    let a = transform_matrix(m, t0, t1, kind);
+    let a = transform_matrix(m, (t0, t1), kind);
     let n = 2 * m + 1;
     (0..=n).all(|r| {
         (0..=n).all(|c| {
@@ -72,11 +71,10 @@ pub fn has_block_structure(
 /// ([`singular_values`]).
 pub fn condition<T: Real>(
     m: usize,
-    t0: &T,
-    t1: &T,
+    (t0, t1): (&T, &T),
     kind: TransformKind,
 ) -> Result<T, NoConvergence> {
-    condition_number(&start_block(m, t0, t1, kind))
+    condition_number(&start_block(m, (t0, t1), kind))
 }
 
 /// κ₂ of the whole (2m+2)×(2m+2) matrix, without using its block structure.
@@ -86,11 +84,10 @@ pub fn condition<T: Real>(
 /// ([`singular_values`]).
 pub fn condition_full<T: Real>(
     m: usize,
-    t0: &T,
-    t1: &T,
+    (t0, t1): (&T, &T),
     kind: TransformKind,
 ) -> Result<T, NoConvergence> {
-    condition_number(&transform_matrix(m, t0, t1, kind))
+    condition_number(&transform_matrix(m, (t0, t1), kind))
 }
 
 /// κ₂ in MPFR at `bits` and `2·bits`, certified by their agreement; also the 2·bits value.
@@ -99,16 +96,14 @@ pub fn condition_full<T: Real>(
 /// [`NoConvergence`] as [`condition`], at `bits` (`2·bits` is then not tried) or at `2·bits`.
 pub fn certified(
     m: usize,
-    t0: &BigRational,
-    t1: &BigRational,
+    (t0, t1): (&BigRational, &BigRational),
     kind: TransformKind,
     bits: u32,
 ) -> Result<(Certified, Float), NoConvergence> {
     at_two_precisions(bits, |p| {
         condition::<Float>(
             m,
-            &Float::from_rational(t0, &p),
-            &Float::from_rational(t1, &p),
+            (&Float::from_rational(t0, &p), &Float::from_rational(t1, &p)),
             kind,
         )
     })
@@ -172,14 +167,13 @@ pub fn f64_out_of_range(m: usize, (low, high): (f64, f64)) -> Option<&'static st
 /// nalgebra's σ_min comes out as 0.
 pub fn f64_reference(
     m: usize,
-    t0: &BigRational,
-    t1: &BigRational,
+    (t0, t1): (&BigRational, &BigRational),
     kind: TransformKind,
 ) -> Option<f64> {
     if f64_out_of_range(m, scale_exponents(m, &(t1.clone() - t0), kind)).is_some() {
         return None;
     }
-    let exact = transform_matrix(m, t0, t1, kind);
+    let exact = transform_matrix(m, (t0, t1), kind);
     let a = exact.map(|q| q.to_f64());
     if a.entries().iter().any(|x| !x.is_finite()) {
         return None;
@@ -194,13 +188,12 @@ pub fn f64_reference(
 /// estimate is not that close). `None` if the brackets could not be decided.
 pub fn proven(
     m: usize,
-    t0: &BigRational,
-    t1: &BigRational,
+    (t0, t1): (&BigRational, &BigRational),
     kind: TransformKind,
     bits: u32,
     relative: f64,
 ) -> Option<(Float, Float)> {
-    let b = start_block::<BigRational>(m, t0, t1, kind);
+    let b = start_block::<BigRational>(m, (t0, t1), kind);
     let gram = IntegerSymmetric::gram(&b)?;
     let sigma = singular_values(&b.map(|q| Float::from_rational(q, &bits))).ok()?;
     let square = |s: &Float| Float::with_val(bits, s * s);
@@ -233,13 +226,13 @@ mod tests {
         );
         for m in 0..=8 {
             for kind in [TransformKind::Transform, TransformKind::Binomial] {
-                assert!(has_block_structure(m, &t0, &t1, kind), "m = {m}");
+                assert!(has_block_structure(m, (&t0, &t1), kind), "m = {m}");
                 let (a, b) = (
                     Float::from_rational(&t0, &256),
                     Float::from_rational(&t1, &256),
                 );
-                let block = condition(m, &a, &b, kind).unwrap();
-                let full = condition_full(m, &a, &b, kind).unwrap();
+                let block = condition(m, (&a, &b), kind).unwrap();
+                let full = condition_full(m, (&a, &b), kind).unwrap();
                 let agree = crate::scalar::certify::agreeing_digits(&block, &full);
                 assert!(agree >= 60, "m = {m}: {agree} digits");
             }
@@ -256,10 +249,10 @@ mod tests {
     #[test]
     fn m0_transform_is_identity() {
         let (t0, t1) = unit_interval();
-        let (c, _) = certified(0, &t0, &t1, TransformKind::Transform, 64).unwrap();
+        let (c, _) = certified(0, (&t0, &t1), TransformKind::Transform, 64).unwrap();
         assert_eq!(c.text, "1.000000000000000000");
         assert_eq!(
-            f64_reference(0, &t0, &t1, TransformKind::Transform),
+            f64_reference(0, (&t0, &t1), TransformKind::Transform),
             Some(1.0)
         );
     }
@@ -269,7 +262,7 @@ mod tests {
         // A is two copies of [[1,0],[-3,3]] (up to column order), whose squared singular
         // values are (19 ± √325)/2, so κ = √((19+√325)/(19−√325)).
         let (t0, t1) = unit_interval();
-        let (c, _) = certified(1, &t0, &t1, TransformKind::Transform, 128).unwrap();
+        let (c, _) = certified(1, (&t0, &t1), TransformKind::Transform, 128).unwrap();
         let root = (325f64).sqrt();
         let expected = ((19.0 + root) / (19.0 - root)).sqrt();
         assert!(

@@ -187,7 +187,7 @@ impl<T: Field> HermiteData<T> {
     pub fn solve(&self) -> Result<Bernstein<T>, HermiteError> {
         self.check()?;
         let m = self.derivatives();
-        let scales = derivative_scales(m, &self.t0, &self.t1)?;
+        let scales = derivative_scales(m, (&self.t0, &self.t1))?;
         let scaled =
             |x: &[T]| -> Vec<T> { x.iter().zip(&scales).map(|(v, s)| v.clone() * s).collect() };
         let head = anti_difference(&scaled(&self.start)); // p₀…pₘ
@@ -308,7 +308,7 @@ pub fn hermite_curve<T: Field, const D: usize>(
 /// [`HermiteError::ScaleNotRepresentable`] for the first j whose n!/(n−j)! is not finite,
 /// or whose scale (t₁ − t₀)ʲ(n−j)!/n! is not finite or is zero (overflow, underflow, or
 /// t₁ = t₀ for j ≥ 1).
-pub fn derivative_scales<T: Field>(m: usize, t0: &T, t1: &T) -> Result<Vec<T>, HermiteError> {
+pub fn derivative_scales<T: Field>(m: usize, (t0, t1): (&T, &T)) -> Result<Vec<T>, HermiteError> {
     let ctx = t0.ctx();
     let n = 2 * m + 1;
     let width = t1.clone() - t0;
@@ -341,7 +341,7 @@ pub enum TransformKind {
 /// The (2m+2)×(2m+2) matrix taking (p₀…pₙ) to H (Eqs. 14–15): row j is
 /// n!/(n−j)!/Tʲ times row j of A1 (on p₀…pⱼ); row m+1+j is the same factor times
 /// ∇ʲpₙ = Σₖ (−1)ᵏ C(j,k) pₙ₋ₖ. [`TransformKind::Binomial`] omits the factors.
-pub fn transform_matrix<T: Field>(m: usize, t0: &T, t1: &T, kind: TransformKind) -> Matrix<T> {
+pub fn transform_matrix<T: Field>(m: usize, (t0, t1): (&T, &T), kind: TransformKind) -> Matrix<T> {
     let ctx = t0.ctx();
     let n = 2 * m + 1;
     let width = t1.clone() - t0;
@@ -373,7 +373,7 @@ pub fn transform_matrix<T: Field>(m: usize, t0: &T, t1: &T, kind: TransformKind)
 /// # Errors
 /// [`HermiteError::EmptyInterval`] unless t₀ < t₁; [`HermiteError::ScaleNotRepresentable`] as
 /// [`derivative_scales`].
-pub fn hermite_matrix<T: Field>(m: usize, t0: &T, t1: &T) -> Result<Matrix<T>, HermiteError> {
+pub fn hermite_matrix<T: Field>(m: usize, (t0, t1): (&T, &T)) -> Result<Matrix<T>, HermiteError> {
     let ctx = t0.ctx();
     let size = 2 * m + 2;
     let mut columns = Vec::with_capacity(size);
@@ -432,8 +432,8 @@ mod tests {
     fn matrices_are_mutually_inverse() {
         for m in 0..6 {
             let (t0, t1) = (q(-1, 3), q(5, 2));
-            let a = transform_matrix(m, &t0, &t1, TransformKind::Transform);
-            let h = hermite_matrix(m, &t0, &t1).unwrap();
+            let a = transform_matrix(m, (&t0, &t1), TransformKind::Transform);
+            let h = hermite_matrix(m, (&t0, &t1)).unwrap();
             assert_eq!(a.mul(&h), Matrix::identity(2 * m + 2, &()));
         }
     }

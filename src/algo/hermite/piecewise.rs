@@ -61,7 +61,7 @@ pub fn interpolate_curve<T: Real, C: Curve<T> + ?Sized>(
         .into_par_iter()
         .map(carried(|k| {
             let mut scale = T::one_in(&ctx);
-            let jet = curve.jet(&knot(a, b, segments, k), m);
+            let jet = curve.jet(&knot((a, b), segments, k), m);
             jet.into_iter()
                 .enumerate()
                 .map(|(j, v)| {

@@ -87,7 +87,7 @@ impl<T: Real> PiecewisePh<T> {
                 max: n,
             });
         }
-        Ok(knot(&self.a, &self.b, n, k))
+        Ok(knot((&self.a, &self.b), n, k))
     }
     /// The segment containing t ∈ [a, b] and the local parameter ξ ∈ [0, 1] (at a joint, the
     /// segment that starts there; at b, the last one).
@@ -146,7 +146,7 @@ pub fn segment_data<T: Real, C: Curve<T> + ?Sized>(
     let jets: Vec<Vec<[T; 3]>> = (0..=segments)
         .into_par_iter()
         .map(carried(|k| {
-            segment_jet(curve, &knot(a, b, segments, k), &h, m)
+            segment_jet(curve, &knot((a, b), segments, k), &h, m)
         }))
         .collect();
     // Every jet holds m + 1 ≥ 1 vectors, so from_jets cannot refuse one.
@@ -584,9 +584,9 @@ pub(super) fn segment_at<C: Curve<Float>>(
 ) -> Result<(PhCurve<Float>, Float, Float), PhHermiteError> {
     let free = free.map(|x| Float::from_rational(x, &bits));
     let h = (b.clone() - a) / &Float::from_i64(segments as i64, &bits);
-    let jet_at = |j: usize| segment_jet(curve, &knot(a, b, segments, j), &h, m);
+    let jet_at = |j: usize| segment_jet(curve, &knot((a, b), segments, j), &h, m);
     let seg = interpolate(&HermiteData::from_jets(&jet_at(k), &jet_at(k + 1))?, &free)?;
-    Ok((seg, knot(a, b, segments, k), h))
+    Ok((seg, knot((a, b), segments, k), h))
 }
 
 /// The observed convergence between two refinement levels (segments doubled): the ratio

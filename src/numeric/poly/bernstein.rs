@@ -37,7 +37,7 @@ pub struct Bernstein<T> {
 }
 
 /// The value at `t` of the basis polynomial b̄ₖⁿ on [t₀, t₁] (Eq. 4).
-pub fn basis<T: Field>(n: usize, k: usize, t: &T, t0: &T, t1: &T) -> T {
+pub fn basis<T: Field>(n: usize, k: usize, t: &T, (t0, t1): (&T, &T)) -> T {
     let ctx = t.ctx();
     let c: T = int_in(&binomial(n, k), &ctx);
     let left = t1.clone() - t;
@@ -401,7 +401,7 @@ mod tests {
         let b = sample();
         for t in [q(1, 1), q(3, 2), q(7, 3), q(3, 1)] {
             let direct = (0..=3).fold(q(0, 1), |acc, k| {
-                acc + basis(3, k, &t, &b.t0, &b.t1) * &b.control_points[k]
+                acc + basis(3, k, &t, (&b.t0, &b.t1)) * &b.control_points[k]
             });
             assert_eq!(b.eval(&t), direct);
         }

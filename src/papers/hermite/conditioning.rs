@@ -83,9 +83,9 @@ pub fn certified_kappa(m: usize, t1: &BigRational, kind: TransformKind) -> Optio
     let t0 = ratio(0, 1);
     let mut bits = 128;
     loop {
-        let (value, exact) = condition::certified(m, &t0, t1, kind, bits).ok()?;
+        let (value, exact) = condition::certified(m, (&t0, t1), kind, bits).ok()?;
         if value.digits >= TARGET_DIGITS || bits >= 2048 {
-            let proven = condition::proven(m, &t0, t1, kind, bits, PROVEN_RELATIVE);
+            let proven = condition::proven(m, (&t0, t1), kind, bits, PROVEN_RELATIVE);
             return Some(Kappa {
                 value,
                 exact,
@@ -103,7 +103,7 @@ pub fn table() -> Vec<KappaRow> {
         .into_par_iter()
         .map(|m| {
             let one = ratio(1, 1);
-            let f64_matrix = transform_matrix(m, &ratio(0, 1), &one, TransformKind::Transform)
+            let f64_matrix = transform_matrix(m, (&ratio(0, 1), &one), TransformKind::Transform)
                 .map(|q| q.to_f64());
             let unit = certified_kappa(m, &one, TransformKind::Transform);
             let proven = unit.as_ref().and_then(|k| k.proven.clone());
@@ -116,7 +116,11 @@ pub fn table() -> Vec<KappaRow> {
                     .iter()
                     .map(|&(n, d)| certified_kappa(m, &ratio(n, d), TransformKind::Transform))
                     .collect(),
-                nalgebra: condition::f64_reference(m, &ratio(0, 1), &one, TransformKind::Transform),
+                nalgebra: condition::f64_reference(
+                    m,
+                    (&ratio(0, 1), &one),
+                    TransformKind::Transform,
+                ),
                 jacobi_f64: linalg::condition_number(&f64_matrix)
                     .ok()
                     .filter(|k| k.is_finite()),
@@ -125,15 +129,13 @@ pub fn table() -> Vec<KappaRow> {
                     .all(|t1| {
                         condition::has_block_structure(
                             m,
-                            &ratio(0, 1),
-                            t1,
+                            (&ratio(0, 1), t1),
                             TransformKind::Transform,
                         )
                     })
                     && condition::has_block_structure(
                         m,
-                        &ratio(0, 1),
-                        &one,
+                        (&ratio(0, 1), &one),
                         TransformKind::Binomial,
                     ),
             }

@@ -74,8 +74,7 @@ pub fn eq18_vector() -> Outcome {
         let data = random_problem(&mut rng, m);
         let a = transform_matrix(
             m,
-            data.interval().0,
-            data.interval().1,
+            (data.interval().0, data.interval().1),
             TransformKind::Transform,
         );
         let solved = solve(&a, &data.boundary_vector());
@@ -101,7 +100,7 @@ pub fn eq16_17_index_ranges() -> (Outcome, String) {
     let mut first_bad: Option<String> = None;
     let mut all_split_at_m = true;
     for m in 1..=20 {
-        let h = match hermite_matrix(m, &q(0), &q(1)) {
+        let h = match hermite_matrix(m, (&q(0), &q(1))) {
             Ok(h) => h,
             Err(_) => {
                 return (

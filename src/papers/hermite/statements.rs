@@ -160,7 +160,7 @@ fn acceleration_range(c: &Bernstein<Q>) -> Result<(Ball, Ball), String> {
         bits: RANGE_BITS,
         ..SearchOptions::default()
     };
-    let (min, max) = proven_range(f, &start, &end, &options).map_err(|e| e.to_string())?;
+    let (min, max) = proven_range(f, (&start, &end), &options).map_err(|e| e.to_string())?;
     Ok((min.ball(), max.ball()))
 }
 
@@ -375,7 +375,7 @@ pub fn triangular() -> Outcome {
         let n = 2 * m + 1;
         for t1 in [q(1), Q::new(3.into(), 7.into()), q(5)] {
             cases += 1;
-            let a = transform_matrix(m, &q(0), &t1, TransformKind::Transform);
+            let a = transform_matrix(m, (&q(0), &t1), TransformKind::Transform);
             let zero = q(0);
             let shaped = (0..=m).all(|j| {
                 (0..=n).all(|k| {

@@ -99,7 +99,7 @@ impl Polygons {
             bits: BITS,
         };
         let (a, b) = (Float::with_val(BITS, 0), Float::with_val(BITS, 1));
-        proven_maximum(g, &a, &b, &options)
+        proven_maximum(g, (&a, &b), &options)
             .map(|m| m.ball())
             .map_err(|e| e.to_string())
     }

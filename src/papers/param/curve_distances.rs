@@ -67,8 +67,7 @@ pub fn panel_range(spline: &NaturalCubicSpline<Ball>, order: usize) -> Result<Ba
     let tolerance = 1e-6 * scale(spline, order);
     let (min, max) = proven_range(
         |x: &Ball| Ok(derivative_over(spline, order, x)),
-        &a,
-        &b,
+        (&a, &b),
         &options(tolerance, bits),
     )
     .map_err(|e| e.to_string())?;
@@ -93,7 +92,7 @@ pub fn max_difference(
         let slope = a.enclose_over(x)[order + 1].clone() - &b.enclose_over(x)[order + 1];
         Ok(mean_value(&at_mid, &slope, x).abs())
     };
-    proven_maximum(difference, &start, &end, &options(tolerance, bits)).map_err(|e| e.to_string())
+    proven_maximum(difference, (&start, &end), &options(tolerance, bits)).map_err(|e| e.to_string())
 }
 
 /// A plane curve: its x and y splines on one parametrization.
@@ -148,7 +147,7 @@ pub fn matched_distance(a: &PlaneCurve, b: &PlaneCurve) -> Result<MaximumEnclosu
         hull.ok_or_else(|| "no piece meets the box".to_string())
     };
     let tolerance = 1e-6 * extent(a);
-    proven_maximum(distance, &start, &end, &options(tolerance, bits)).map_err(|e| e.to_string())
+    proven_maximum(distance, (&start, &end), &options(tolerance, bits)).map_err(|e| e.to_string())
 }
 
 /// The larger side of the bounding box of a curve's data points (a scale for tolerances).
@@ -196,7 +195,7 @@ pub fn max_distance_from_polygon(
         .ok_or_else(|| "the polygon has fewer than two vertices".to_string())
     };
     let tolerance = 1e-6 * extent(curve);
-    proven_maximum(distance, &start, &end, &options(tolerance, bits)).map_err(|e| e.to_string())
+    proven_maximum(distance, (&start, &end), &options(tolerance, bits)).map_err(|e| e.to_string())
 }
 
 /// A ratio of two enclosures as a percentage.
@@ -229,7 +228,7 @@ pub fn speed_range(splines: &[NaturalCubicSpline<Ball>]) -> Result<(Ball, Ball),
         Ok(mean_value(&at_mid, &slope, x))
     };
     let scale: f64 = splines.iter().map(|s| scale(s, 1).powi(2)).sum();
-    let (min, max) = proven_range(squared_speed, &start, &end, &options(1e-9 * scale, bits))
+    let (min, max) = proven_range(squared_speed, (&start, &end), &options(1e-9 * scale, bits))
         .map_err(|e| e.to_string())?;
     // The squared speed is never negative: a box reaching below 0 is only overestimated.
     let root = |b: Ball| {
