@@ -133,7 +133,7 @@ impl<T: Real> PiecewiseBernstein<T> {
     /// [`crate::numeric::poly::bernstein::BernsteinError::Empty`] without a piece or for a
     /// piece without a control point, [`crate::numeric::poly::bernstein::BernsteinError::Interval`]
     /// unless a < b, both finite.
-    pub fn new(a: T, b: T, segments: Vec<Vec<[T; 3]>>) -> Result<Self, BernsteinError> {
+    pub fn new(segments: Vec<Vec<[T; 3]>>, (a, b): (T, T)) -> Result<Self, BernsteinError> {
         if segments.is_empty() || segments.iter().any(Vec::is_empty) {
             return Err(BernsteinError::Empty);
         }

@@ -28,7 +28,7 @@
 //! let bits = 128;
 //! let exp = |t: &Ball, order: usize| Some(Taylor::variable(t.clone(), order).exp());
 //! let (a, b) = (Ball::zero_in(&bits), Ball::one_in(&bits));
-//! let result = integrate(&exp, &a, &b, &IntegralOptions::default()).unwrap();
+//! let result = integrate(&exp, (&a, &b), &IntegralOptions::default()).unwrap();
 //! let e_minus_1 = Ball::one_in(&bits).exp() - &Ball::one_in(&bits);
 //! assert!(result.value.rad() < 1e-30);
 //! assert!(result.value.contains(e_minus_1.mid()));
@@ -130,11 +130,10 @@ impl Ord for Piece {
 /// of the interval still has no finite enclosure.
 pub fn integrate(
     f: &impl Fn(&Ball, usize) -> Option<Taylor<Ball>>,
-    a: &Ball,
-    b: &Ball,
+    (a, b): (&Ball, &Ball),
     options: &IntegralOptions,
 ) -> Result<ProvenIntegral, IntegralError> {
-    integrate_with(f, &|_, _| None, a, b, options)
+    integrate_with(f, &|_, _| None, (a, b), options)
 }
 
 /// [`integrate`] for an integrand whose Taylor models fail on some pieces (an essential
@@ -149,8 +148,7 @@ pub fn integrate(
 pub fn integrate_with(
     f: &impl Fn(&Ball, usize) -> Option<Taylor<Ball>>,
     bound: &dyn Fn(&Float, &Float) -> Option<Ball>,
-    a: &Ball,
-    b: &Ball,
+    (a, b): (&Ball, &Ball),
     options: &IntegralOptions,
 ) -> Result<ProvenIntegral, IntegralError> {
     if options.order == 0 {
@@ -164,7 +162,7 @@ pub fn integrate_with(
     if hi < lo {
         return Err(IntegralError::Invalid("b < a".into()));
     }
-    let ends = ends_contribution(f, a, b)?;
+    let ends = ends_contribution(f, (a, b))?;
     let integrand = Integrand { series: f, bound };
     if lo == hi {
         return Ok(ProvenIntegral {
@@ -256,8 +254,7 @@ fn refine<F: Fn(&Ball, usize) -> Option<Taylor<Ball>>>(
 /// the radius times a bound of |f| over the end's ball, as a ball around 0.
 fn ends_contribution(
     f: &impl Fn(&Ball, usize) -> Option<Taylor<Ball>>,
-    a: &Ball,
-    b: &Ball,
+    (a, b): (&Ball, &Ball),
 ) -> Result<Ball, IntegralError> {
     let mut ends = Ball::zero_in(&a.ctx().max(b.ctx()));
     for end in [a, b] {
@@ -389,7 +386,7 @@ mod tests {
         // ∫₀^π sin = 2, with π a ball (an end known only as an enclosure).
         let sin = series(|t| t.sin());
         let (a, b) = (Ball::zero_in(&bits), Ball::pi(&bits));
-        let r = integrate(&sin, &a, &b, &IntegralOptions::default()).unwrap();
+        let r = integrate(&sin, (&a, &b), &IntegralOptions::default()).unwrap();
         assert!(r.reached, "{r:?}");
         assert!(r.value.contains(&Float::with_val(bits, 2)), "{r:?}");
         assert!(r.value.rad() < 1e-60, "{r:?}");
@@ -400,8 +397,7 @@ mod tests {
         });
         let r = integrate(
             &arctan_slope,
-            &a,
-            &Ball::one_in(&bits),
+            (&a, &Ball::one_in(&bits)),
             &IntegralOptions::default(),
         )
         .unwrap();
@@ -421,8 +417,7 @@ mod tests {
         };
         let r = integrate(
             &exp,
-            &Ball::zero_in(&bits),
-            &Ball::from_i64(3, &bits),
+            (&Ball::zero_in(&bits), &Ball::from_i64(3, &bits)),
             &options,
         )
         .unwrap();
@@ -438,15 +433,13 @@ mod tests {
         let reciprocal = series(|t| Taylor::constant(Ball::one_in(&bits)) / &t);
         let e = integrate(
             &reciprocal,
-            &Ball::from_i64(-1, &bits),
-            &Ball::one_in(&bits),
+            (&Ball::from_i64(-1, &bits), &Ball::one_in(&bits)),
             &IntegralOptions::default(),
         );
         assert!(matches!(e, Err(IntegralError::NotFinite { .. })), "{e:?}");
         let e = integrate(
             &reciprocal,
-            &Ball::from_i64(2, &bits),
-            &Ball::one_in(&bits),
+            (&Ball::from_i64(2, &bits), &Ball::one_in(&bits)),
             &IntegralOptions::default(),
         );
         assert!(matches!(e, Err(IntegralError::Invalid(_))), "{e:?}");

@@ -153,7 +153,7 @@ pub fn certificate<T: Field>(
         cuts.push(bounds[k + 1].clone());
         let integral = cuts.windows(2).fold(i(0), |acc, w| {
             let piece = usize::from(w[0] >= two);
-            acc + &pieces[piece].integrate(&w[0], &w[1])
+            acc + &pieces[piece].integrate((&w[0], &w[1]))
         });
         norm += &match signs[k] {
             Ordering::Less => -integral,

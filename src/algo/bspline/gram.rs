@@ -19,7 +19,7 @@ pub fn gram_entries<T: Field>(k: usize, ctx: &T::Ctx) -> Vec<T> {
         .map(|m| {
             // On [j, j+1], B(t) is piece j and B(t − m) is piece j − m, both in s = t − j.
             (m..=k).fold(zero.clone(), |acc, j| {
-                acc + &d.piece(j).mul(d.piece(j - m)).integrate(&zero, &one)
+                acc + &d.piece(j).mul(d.piece(j - m)).integrate((&zero, &one))
             })
         })
         .collect()

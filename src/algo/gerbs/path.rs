@@ -1088,7 +1088,7 @@ impl<B: Blend<Ball>> GerbsPath<Ball, B> {
         }
         cuts.push(Ball::exact(hi));
         for w in cuts.windows(2) {
-            let piece = integrate_with(&speed, &bound, &w[0], &w[1], options)
+            let piece = integrate_with(&speed, &bound, (&w[0], &w[1]), options)
                 .map_err(|e| not_proven(e.to_string()))?;
             total += &piece.value;
         }
@@ -1160,7 +1160,7 @@ impl<B: Blend<Ball>> GerbsPath<Ball, B> {
         cuts.push(b.clone());
         for w in cuts.windows(2) {
             let piece =
-                integrate(&speed, &w[0], &w[1], options).map_err(|e| GerbsError::Parameter {
+                integrate(&speed, (&w[0], &w[1]), options).map_err(|e| GerbsError::Parameter {
                     field: "waypoints",
                     message: format!("the path's length is not proven on knot interval {j}: {e}"),
                 })?;

@@ -122,7 +122,7 @@ fn proven_integral(
     cuts.push(hi.clone());
     let mut total = Ball::zero_in(&bits).widen(slack * (1.0 + 1e-15));
     for w in cuts.windows(2) {
-        match integrate_with(&series, &bound, &w[0], &w[1], options) {
+        match integrate_with(&series, &bound, (&w[0], &w[1]), options) {
             Ok(piece) => total += &piece.value,
             Err(_) => return unbounded(),
         }

@@ -84,7 +84,7 @@ pub fn interpolate_curve<T: Real, C: Curve<T> + ?Sized>(
                 .collect())
         }))
         .collect::<Result<Vec<_>, HermiteError>>()?;
-    PiecewiseBernstein::new(a.clone(), b.clone(), pieces).map_err(|_| HermiteError::EmptyInterval)
+    PiecewiseBernstein::new(pieces, (a.clone(), b.clone())).map_err(|_| HermiteError::EmptyInterval)
 }
 
 #[cfg(test)]

@@ -145,7 +145,7 @@ impl<T: Field> Poly<T> {
     }
 
     /// ∫ₐᵇ p(x) dx.
-    pub fn integrate(&self, a: &T, b: &T) -> T {
+    pub fn integrate(&self, (a, b): (&T, &T)) -> T {
         let anti = self.antiderivative();
         anti.eval(b) - &anti.eval(a)
     }
@@ -186,7 +186,7 @@ mod tests {
         assert_eq!(a.add(&b), p(&[0, 2, 3]));
         assert_eq!(a.sub(&a), Poly::zero());
         assert_eq!(b.derivative(), p(&[0, 6]));
-        assert_eq!(b.integrate(&q(0, 1), &q(1, 1)), q(0, 1));
+        assert_eq!(b.integrate((&q(0, 1), &q(1, 1))), q(0, 1));
         assert_eq!(p(&[0, 0, 1]).shift(&q(1, 1)), p(&[1, 2, 1]));
         assert_eq!(p(&[5, 0, 0, 0]).degree(), Some(0));
         assert_eq!(b.eval(&q(2, 1)), q(11, 1));

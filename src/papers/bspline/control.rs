@@ -141,7 +141,7 @@ pub fn geometric_steps() -> Outcome {
         eq3_eq4 &= at2(&pieces[2], 1) == -(q(2) * &c) - &(q(2) * &d);
         // B_3(t) = ∫_0^t B_3' on [3, 4]: the first three integrals plus ∫_3^t.
         let before: Q = (0..3).fold(q(0), |acc, j| {
-            acc + &pieces[j].integrate(&q(j as i64), &q(j as i64 + 1))
+            acc + &pieces[j].integrate((&q(j as i64), &q(j as i64 + 1)))
         });
         let last = pieces[3].antiderivative();
         let integrated = last

@@ -39,7 +39,7 @@ pub fn beta_kernel() -> Outcome {
     for p in 1..=5usize {
         for qq in 1..=5usize {
             let kernel = eq9_kernel(p, qq, &a, &b);
-            let integral = kernel.integrate(&a, &b);
+            let integral = kernel.integrate((&a, &b));
             if integral != delta.clone() / q((p + qq + 1) as i64, 1) {
                 failures.push(format!("(i_k, i_k+1) = ({p}, {qq}): ∫Ψ = {integral}"));
                 continue;

@@ -663,7 +663,7 @@ fn proven_length(bits: u32) -> Result<Ball, crate::curve::integral::IntegralErro
         speed.c.iter().all(Field::is_finite).then_some(speed)
     };
     let (a, b) = (Ball::zero_in(&bits), Ball::one_in(&bits));
-    integrate(&speed, &a, &b, &IntegralOptions::default()).map(|r| r.value)
+    integrate(&speed, (&a, &b), &IntegralOptions::default()).map(|r| r.value)
 }
 
 /// Eq. (13b): κ = ‖p′ × p″‖/‖p′‖³, against the definition κ = ‖dT/ds‖ = ‖dT/dξ‖/‖p′‖ with
