@@ -9,7 +9,7 @@ use std::time::Duration;
 use trajverify::algo::ph::hermite::{interpolate, FreeParameters, HermiteData};
 use trajverify::algo::ph::piecewise::segment_jet;
 use trajverify::algo::ph::piecewise::{certified_error, convert};
-use trajverify::curve::enclosure::proven_error;
+use trajverify::curve::enclosure::{proven_error, ProofOptions};
 use trajverify::curve::interval::Interval;
 use trajverify::curve::{Curve, ExprCurve};
 use trajverify::scalar::ball::Ball;
@@ -112,7 +112,15 @@ fn error_search(c: &mut Criterion) {
                 false,
             )
             .expect("converts");
-            proven_error(&cb, &pw, 1e-6, 1_000_000).expect("a positive target")
+            proven_error(
+                &cb,
+                &pw,
+                &ProofOptions {
+                    max_boxes: 1_000_000,
+                    ..ProofOptions::default()
+                },
+            )
+            .expect("a positive target")
         })
     });
     g.finish();

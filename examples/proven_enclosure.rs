@@ -6,7 +6,7 @@
 
 use rug::float::Round;
 use trajverify::algo::ph::piecewise::{fit, FitOptions};
-use trajverify::curve::enclosure::proven_error;
+use trajverify::curve::enclosure::{proven_error, ProofOptions};
 use trajverify::curve::ExprCurve;
 use trajverify::scalar::ball::{tally, Ball};
 use trajverify::scalar::Field;
@@ -25,7 +25,7 @@ fn main() {
     // `tally` counts the comparisons of balls that could not be decided in this computation.
     let (result, undecided) = tally(|| {
         let spline = fit(&curve, (&a, &b), &options).map_err(|e| e.to_string())?;
-        proven_error(&curve, &spline, 1e-6, 200_000).map_err(|e| e.to_string())
+        proven_error(&curve, &spline, &ProofOptions::default()).map_err(|e| e.to_string())
     });
     let e = match result {
         Ok(e) => e,

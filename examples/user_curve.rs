@@ -12,7 +12,7 @@ use trajverify::algo::convergence::{study, StudyOptions};
 use trajverify::algo::ph::piecewise::{fit, FitOptions};
 use trajverify::curve::adapter::AsCurve;
 use trajverify::curve::bezier::BezierCurve;
-use trajverify::curve::enclosure::proven_error;
+use trajverify::curve::enclosure::{proven_error, ProofOptions};
 use trajverify::curve::function::{CurveFn, FnCurve};
 use trajverify::curve::interval::Interval;
 use trajverify::curve::parametric::ParamCurve;
@@ -61,7 +61,14 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             ..FitOptions::default()
         },
     )?;
-    let e = proven_error(&curve, &proven, 1e-3, 200_000)?;
+    let e = proven_error(
+        &curve,
+        &proven,
+        &ProofOptions {
+            target: 1e-3,
+            ..ProofOptions::default()
+        },
+    )?;
     // Bounds printed rounded outward, so the printed interval still encloses E.
     let lower = bound(e.lower.to_f64_round(Round::Down), 5, Round::Down);
     let upper = bound(e.upper.to_f64_round(Round::Up), 5, Round::Up);

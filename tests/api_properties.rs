@@ -181,7 +181,7 @@ proptest! {
     #[test]
     fn interpolants_and_proofs(x in hostile_f64(), t0 in hostile_f64(), t1 in hostile_f64(), segments in hostile_count(), m in hostile_count(), degree in 0usize..8, target in hostile_f64()) {
         use trajverify::algo::hermite::piecewise::interpolate_curve;
-        use trajverify::curve::enclosure::proven_error;
+        use trajverify::curve::enclosure::{proven_error, ProofOptions};
         use trajverify::curve::spline::ClampedSpline;
         use trajverify::scalar::ball::Ball;
         use trajverify::scalar::Field;
@@ -199,7 +199,7 @@ proptest! {
         let cb = curve.compile::<Ball>(&64);
         let (a, b) = (Ball::from_i64(0, &64), Ball::from_i64(1, &64));
         let Ok(pw) = fit(&cb, (&a, &b), &FitOptions { segments: 1, ..FitOptions::default() }) else { return Ok(()) };
-        if let Ok(e) = no_panic("proven_error", || proven_error(&cb, &pw, target, 2000))? {
+        if let Ok(e) = no_panic("proven_error", || proven_error(&cb, &pw, &ProofOptions { target: target, max_boxes: 2000, ..ProofOptions::default() }))? {
             prop_assert!(e.lower.is_finite() && e.upper.is_finite() && e.lower <= e.upper, "{e:?}");
         }
     }

@@ -4,7 +4,7 @@
 
 use trajverify::algo::ph::hermite::FreeParameters;
 use trajverify::algo::ph::piecewise::{certified_error, convert};
-use trajverify::curve::enclosure::proven_error;
+use trajverify::curve::enclosure::{proven_error, ProofOptions};
 use trajverify::curve::interval::Interval;
 use trajverify::curve::{Curve, ExprCurve};
 use trajverify::scalar::ball::Ball;
@@ -53,7 +53,7 @@ fn the_enclosure_contains_the_certified_maximum_and_is_narrow() {
     // 128 segments: the whole-segment remainders come from shared bounds of γ^(18).
     for n in [1usize, 4, 64, 128] {
         let (curve, pw) = in_balls(n);
-        let e = proven_error(&curve, &pw, 1e-6, 200_000).unwrap();
+        let e = proven_error(&curve, &pw, &ProofOptions::default()).unwrap();
         let certified = certified_error(
             |bits| c.compile::<Float>(&bits),
             &Interval::new(a.clone(), b.clone()).unwrap(),
@@ -118,7 +118,7 @@ fn a_splines_enclosure_contains_the_certified_maximum_only_with_its_seams() {
             false,
         )
         .unwrap();
-        proven_error(curve, &pw, 1e-6, 200_000).unwrap()
+        proven_error(curve, &pw, &ProofOptions::default()).unwrap()
     };
     let mut hidden_excludes = false;
     for n in [1usize, 8] {
@@ -167,7 +167,7 @@ fn a_hermite_interpolants_enclosure_contains_its_certified_maximum() {
         let curve = c.compile::<Ball>(&256);
         let (a, b) = (Ball::from_i64(0, &256), Ball::from_i64(1, &256));
         let fit = interpolate_curve(&curve, (&a, &b), n, m).unwrap();
-        let e = proven_error(&curve, &fit, 1e-6, 200_000).unwrap();
+        let e = proven_error(&curve, &fit, &ProofOptions::default()).unwrap();
         assert!(
             e.lower <= certified && certified <= e.upper,
             "m = {m}, n = {n}: [{}, {}] misses {certified}",

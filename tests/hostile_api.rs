@@ -186,7 +186,7 @@ fn constructors_refuse_nan_and_infinite_data() {
 fn conversions_cap_their_segments_and_check_their_arguments() {
     use trajverify::algo::hermite::piecewise::interpolate_curve;
     use trajverify::algo::ph::piecewise::{fit, FitOptions};
-    use trajverify::curve::enclosure::proven_error;
+    use trajverify::curve::enclosure::{proven_error, ProofOptions};
     use trajverify::curve::ExprCurve;
     use trajverify::scalar::ball::Ball;
     use trajverify::scalar::Field;
@@ -217,7 +217,15 @@ fn conversions_cap_their_segments_and_check_their_arguments() {
     .expect("a fit");
     for target in [f64::NAN, -1.0, 0.0] {
         let e = message(no_panic("proven_error", || {
-            proven_error(&cb, &pw, target, 1000)
+            proven_error(
+                &cb,
+                &pw,
+                &ProofOptions {
+                    target: target,
+                    max_boxes: 1000,
+                    ..ProofOptions::default()
+                },
+            )
         }));
         assert!(e.starts_with("target:"), "target {target}: {e}");
     }

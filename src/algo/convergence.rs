@@ -65,7 +65,7 @@
 use crate::curve::approx::{
     certified_max_error, conversion_error, BernsteinPieces, PiecewiseBernstein, DEFAULT_SAMPLES,
 };
-use crate::curve::enclosure::proven_error;
+use crate::curve::enclosure::{proven_error, ProofOptions};
 use crate::curve::interval::Interval;
 use crate::curve::regularity::{self, Irregular, Regularity};
 use crate::curve::spline::{ClampedSpline, PeriodicSpline};
@@ -659,8 +659,16 @@ fn level<C: StudyCurve + ?Sized>(
         let pw = method
             .fit(&*c, (&a, &b), segments)
             .map_err(failed("ball conversion"))?;
-        let e = proven_error(&*c, &pw, TARGET_WIDTH, MAX_BOXES)
-            .map_err(|e| failed("proven error")(e.to_string()))?;
+        let e = proven_error(
+            &*c,
+            &pw,
+            &ProofOptions {
+                target: TARGET_WIDTH,
+                max_boxes: MAX_BOXES,
+                ..ProofOptions::default()
+            },
+        )
+        .map_err(|e| failed("proven error")(e.to_string()))?;
         Some((e.lower, e.upper))
     } else {
         None

@@ -10,7 +10,7 @@ use crate::algo::ph::piecewise::{
     conversion_error, convert, observed_order, phodcos, DEFAULT_SAMPLES,
 };
 use crate::algo::ph::PhCurve;
-use crate::curve::enclosure::proven_error_until;
+use crate::curve::enclosure::{proven_error, ProofOptions};
 use crate::curve::{Curve, ExprCurve};
 use crate::scalar::ball::Ball;
 use crate::scalar::certify::format_float_digits;
@@ -343,8 +343,16 @@ impl PhodcosJob {
         // alone: it is searched on the conversion before the roll, whose balls the chained
         // rotations do not widen; the printed preimages are that conversion rolled.
         let mut pw = convert(&c, (&a, &b), n, 4, &free, false).map_err(ph_error)?;
-        let e = proven_error_until(&c, &pw, 1e-6, 4_000_000, Some(budget::search_deadline()))
-            .map_err(|e| RunError::Internal(e.to_string()))?;
+        let e = proven_error(
+            &c,
+            &pw,
+            &ProofOptions {
+                max_boxes: 4_000_000,
+                deadline: Some(budget::search_deadline()),
+                ..ProofOptions::default()
+            },
+        )
+        .map_err(|e| RunError::Internal(e.to_string()))?;
         pw.align_roll();
         Ok(Out::object(vec![
             ("segments", Out::Int(n as i64)),
@@ -521,8 +529,16 @@ impl ProvenJob for ConvergenceJob {
             check_finite(&c, &a, &b, segments)?;
             // The error depends on positions only, which the roll correction leaves alone.
             let pw = convert(&c, (&a, &b), segments, 4, &free, false).map_err(ph_error)?;
-            let e = proven_error_until(&c, &pw, 1e-6, 4_000_000, Some(budget::search_deadline()))
-                .map_err(|e| RunError::Internal(e.to_string()))?;
+            let e = proven_error(
+                &c,
+                &pw,
+                &ProofOptions {
+                    max_boxes: 4_000_000,
+                    deadline: Some(budget::search_deadline()),
+                    ..ProofOptions::default()
+                },
+            )
+            .map_err(|e| RunError::Internal(e.to_string()))?;
             Ok(Out::MaybeZero(
                 Ball::from_bounds(&e.lower, &e.upper),
                 Ball::zero_in(&bits),

@@ -531,21 +531,45 @@ fn first_boxes(models: &[Model], bits: u32) -> (BinaryHeap<Candidate>, (f64, usi
     (heap, best)
 }
 
+/// How far a proven error search goes.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ProofOptions {
+    /// Stop when (upper − lower)/lower ≤ this relative width. Default 10⁻⁶.
+    pub target: f64,
+    /// Or after this many boxes. Default 200 000.
+    pub max_boxes: usize,
+    /// Or at this instant: the bounds found by then are returned, still proven (a piece left
+    /// unsplit keeps its whole remainder in both bounds), only wider than `target`; the
+    /// caller reads the width achieved from the result. Default: none.
+    pub deadline: Option<Instant>,
+}
+
+impl Default for ProofOptions {
+    fn default() -> Self {
+        ProofOptions {
+            target: 1e-6,
+            max_boxes: 200_000,
+            deadline: None,
+        }
+    }
+}
+
 /// Proven bounds lower ≤ E ≤ upper of the conversion error of `pw` against `curve`,
-/// searched until (upper − lower)/lower ≤ `target`, or upper − lower is below the precision
-/// floor (about √(2^−p) times the size of the control points, where the squared norm the
-/// bounds come from is rounding noise: an error the method does not resolve at p bits, such
-/// as that of a curve it reproduces exactly), or `max_boxes` boxes were evaluated.
+/// searched until (upper − lower)/lower ≤ `options.target`, or upper − lower is below the
+/// precision floor (about √(2^−p) times the size of the control points, where the squared
+/// norm the bounds come from is rounding noise: an error the method does not resolve at p
+/// bits, such as that of a curve it reproduces exactly), or `options.max_boxes` boxes were
+/// evaluated, or `options.deadline` passed.
 ///
 /// # Examples
 /// ```
 /// use trajverify::algo::ph::piecewise::{fit, FitOptions};
-/// use trajverify::curve::{enclosure::proven_error, ExprCurve};
+/// use trajverify::curve::{enclosure::{proven_error, ProofOptions}, ExprCurve};
 /// use trajverify::scalar::{ball::Ball, Field};
 /// let curve = ExprCurve::parse("[cos(t), sin(t), t]").unwrap().compile::<Ball>(&128);
 /// let (a, b) = (Ball::from_i64(0, &128), Ball::from_i64(1, &128));
 /// let spline = fit(&curve, (&a, &b), &FitOptions { segments: 2, ..FitOptions::default() }).unwrap();
-/// let e = proven_error(&curve, &spline, 1e-6, 100_000).unwrap();
+/// let e = proven_error(&curve, &spline, &ProofOptions::default()).unwrap();
 /// assert!(e.lower <= e.upper && e.upper < 1e-6);
 /// ```
 ///
@@ -555,10 +579,20 @@ fn first_boxes(models: &[Model], bits: u32) -> (BinaryHeap<Candidate>, (f64, usi
 pub fn proven_error<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
     curve: &C,
     pw: &P,
-    target: f64,
-    max_boxes: usize,
+    options: &ProofOptions,
 ) -> Result<ErrorEnclosure, EnclosureError> {
-    proven_error_until(curve, pw, target, max_boxes, None)
+    let ProofOptions {
+        target,
+        max_boxes,
+        deadline,
+    } = *options;
+    if !(target.is_finite() && target > 0.0) {
+        return Err(EnclosureError::Target(target));
+    }
+    if max_boxes == 0 {
+        return Err(EnclosureError::MaxBoxes);
+    }
+    Ok(ErrorModels::build(curve, pw, target, deadline).enclose(target, max_boxes, deadline))
 }
 
 /// Why a proven error search cannot start.
@@ -575,28 +609,6 @@ pub enum EnclosureError {
 /// Whether the deadline (if any) has passed.
 fn passed(deadline: Option<Instant>) -> bool {
     deadline.is_some_and(|d| Instant::now() >= d)
-}
-
-/// [`proven_error`] that also stops refining at `deadline`: the bounds found by then are
-/// returned, still proven (a piece left unsplit keeps its whole remainder in both bounds),
-/// only wider than `target`; the caller reads the width achieved from the result.
-///
-/// # Errors
-/// As [`proven_error`].
-pub fn proven_error_until<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
-    curve: &C,
-    pw: &P,
-    target: f64,
-    max_boxes: usize,
-    deadline: Option<Instant>,
-) -> Result<ErrorEnclosure, EnclosureError> {
-    if !(target.is_finite() && target > 0.0) {
-        return Err(EnclosureError::Target(target));
-    }
-    if max_boxes == 0 {
-        return Err(EnclosureError::MaxBoxes);
-    }
-    Ok(ErrorModels::build(curve, pw, target, deadline).enclose(target, max_boxes, deadline))
 }
 
 /// The Taylor models of the error d = γ − p over every segment, each piece's remainder below

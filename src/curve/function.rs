@@ -22,7 +22,7 @@ use crate::scalar::Real;
 /// The helix (cos t, sin t, t/5), fitted by a PH spline in f64 and its error proven in balls:
 /// ```
 /// use trajverify::algo::ph::piecewise::{fit, FitOptions};
-/// use trajverify::curve::enclosure::proven_error;
+/// use trajverify::curve::enclosure::{proven_error, ProofOptions};
 /// use trajverify::curve::function::{CurveFn, FnCurve};
 /// use trajverify::scalar::{ball::Ball, Field, Real};
 ///
@@ -39,7 +39,7 @@ use crate::scalar::Real;
 ///
 /// let (a, b) = (Ball::from_i64(0, &128), Ball::from_i64(6, &128));
 /// let proven = fit(&helix, (&a, &b), &FitOptions { segments: 8, ..FitOptions::default() }).unwrap();
-/// let e = proven_error(&helix, &proven, 1e-3, 100_000).unwrap();
+/// let e = proven_error(&helix, &proven, &ProofOptions { target: 1e-3, max_boxes: 100_000, ..ProofOptions::default() }).unwrap();
 /// assert!(e.lower <= e.upper && e.upper < 1e-3);
 /// ```
 pub trait CurveFn: Sync {
