@@ -180,7 +180,7 @@ proptest! {
 
     #[test]
     fn interpolants_and_proofs(x in hostile_f64(), t0 in hostile_f64(), t1 in hostile_f64(), segments in hostile_count(), m in hostile_count(), degree in 0usize..8, target in hostile_f64()) {
-        use trajverify::algo::hermite::piecewise::interpolate_curve;
+        use trajverify::algo::hermite::piecewise::{interpolate_curve, InterpolationOptions};
         use trajverify::curve::enclosure::{proven_error, ProofOptions};
         use trajverify::curve::spline::ClampedSpline;
         use trajverify::scalar::ball::Ball;
@@ -188,7 +188,7 @@ proptest! {
         let curve = ExprCurve::parse("[cos(t), sin(t), t]").expect("a curve");
         let c = curve.compile::<f64>(&());
         let small = |n: usize| if n <= 64 || n > 1 << 20 { n } else { 8 };
-        if let Ok(pw) = no_panic("interpolate_curve", || interpolate_curve(&c, (&t0, &t1), small(segments), m.min(40)))? {
+        if let Ok(pw) = no_panic("interpolate_curve", || interpolate_curve(&c, (&t0, &t1), &InterpolationOptions { segments: small(segments), derivatives: m.min(40) }))? {
             let (lo, hi) = pw.domain();
             if let Ok(p) = no_panic("point", || pw.point(&((lo + hi) / 2.0)))? {
                 prop_assert!(p.iter().all(|v| v.is_finite()), "Ok holding {p:?}");
@@ -199,7 +199,7 @@ proptest! {
         let cb = curve.compile::<Ball>(&64);
         let (a, b) = (Ball::from_i64(0, &64), Ball::from_i64(1, &64));
         let Ok(pw) = fit(&cb, (&a, &b), &FitOptions { segments: 1, ..FitOptions::default() }) else { return Ok(()) };
-        if let Ok(e) = no_panic("proven_error", || proven_error(&cb, &pw, &ProofOptions { target: target, max_boxes: 2000, ..ProofOptions::default() }))? {
+        if let Ok(e) = no_panic("proven_error", || proven_error(&cb, &pw, &ProofOptions { target, max_boxes: 2000, ..ProofOptions::default() }))? {
             prop_assert!(e.lower.is_finite() && e.upper.is_finite() && e.lower <= e.upper, "{e:?}");
         }
     }

@@ -149,7 +149,7 @@ fn a_splines_enclosure_contains_the_certified_maximum_only_with_its_seams() {
 
 #[test]
 fn a_hermite_interpolants_enclosure_contains_its_certified_maximum() {
-    use trajverify::algo::hermite::piecewise::interpolate_curve;
+    use trajverify::algo::hermite::piecewise::{interpolate_curve, InterpolationOptions};
     use trajverify::curve::approx::certified_max_error;
     let c = ExprCurve::parse("[1.5*sin(7.2*t), cos(9*t), exp(cos(1.8*t))]").unwrap();
     for (m, n) in [(2usize, 1usize), (3, 8), (8, 2)] {
@@ -157,7 +157,14 @@ fn a_hermite_interpolants_enclosure_contains_its_certified_maximum() {
             |bits| c.compile::<Float>(&bits),
             |curve, bits| {
                 let (a, b) = (Float::with_val(bits, 0), Float::with_val(bits, 1));
-                interpolate_curve(curve, (&a, &b), n, m)
+                interpolate_curve(
+                    curve,
+                    (&a, &b),
+                    &InterpolationOptions {
+                        segments: n,
+                        derivatives: m,
+                    },
+                )
             },
             128,
             256,
@@ -166,7 +173,15 @@ fn a_hermite_interpolants_enclosure_contains_its_certified_maximum() {
         .hi;
         let curve = c.compile::<Ball>(&256);
         let (a, b) = (Ball::from_i64(0, &256), Ball::from_i64(1, &256));
-        let fit = interpolate_curve(&curve, (&a, &b), n, m).unwrap();
+        let fit = interpolate_curve(
+            &curve,
+            (&a, &b),
+            &InterpolationOptions {
+                segments: n,
+                derivatives: m,
+            },
+        )
+        .unwrap();
         let e = proven_error(&curve, &fit, &ProofOptions::default()).unwrap();
         assert!(
             e.lower <= certified && certified <= e.upper,

@@ -184,7 +184,7 @@ fn constructors_refuse_nan_and_infinite_data() {
 
 #[test]
 fn conversions_cap_their_segments_and_check_their_arguments() {
-    use trajverify::algo::hermite::piecewise::interpolate_curve;
+    use trajverify::algo::hermite::piecewise::{interpolate_curve, InterpolationOptions};
     use trajverify::algo::ph::piecewise::{fit, FitOptions};
     use trajverify::curve::enclosure::{proven_error, ProofOptions};
     use trajverify::curve::ExprCurve;
@@ -201,7 +201,14 @@ fn conversions_cap_their_segments_and_check_their_arguments() {
         assert!(e.starts_with("segments:"), "{e}");
     }
     let e = message(no_panic("interpolate_curve", || {
-        interpolate_curve(&c, (&0.0, &1.0), usize::MAX, 2)
+        interpolate_curve(
+            &c,
+            (&0.0, &1.0),
+            &InterpolationOptions {
+                segments: usize::MAX,
+                derivatives: 2,
+            },
+        )
     }));
     assert!(e.starts_with("segments:"), "{e}");
     let cb = helix.compile::<Ball>(&128);

@@ -221,8 +221,15 @@ impl Method {
                 )
             }
             Method::Hermite(m) => Fitted::Hermite(
-                crate::algo::hermite::piecewise::interpolate_curve(curve, (a, b), segments, m)
-                    .map_err(|e| e.to_string())?,
+                crate::algo::hermite::piecewise::interpolate_curve(
+                    curve,
+                    (a, b),
+                    &crate::algo::hermite::piecewise::InterpolationOptions {
+                        segments,
+                        derivatives: m,
+                    },
+                )
+                .map_err(|e| e.to_string())?,
             ),
         })
     }

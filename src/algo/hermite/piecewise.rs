@@ -25,8 +25,35 @@ pub const MAX_SEGMENTS: usize = 1 << 19;
 /// The most derivatives per joint [`interpolate_curve`] matches (degree 2m + 1 ≤ 61).
 pub const MAX_JOINT_DERIVATIVES: usize = 30;
 
-/// The interpolant of `curve` on `segments` uniform pieces of [a, b] matching m derivatives
-/// at every joint (degree 2m + 1).
+/// The shape of a piecewise Hermite interpolant.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct InterpolationOptions {
+    /// The number of uniform segments. Default 8.
+    pub segments: usize,
+    /// The derivatives m matched at every joint (degree 2m + 1). Default 2 (quintic, C²).
+    pub derivatives: usize,
+}
+
+impl Default for InterpolationOptions {
+    fn default() -> Self {
+        InterpolationOptions {
+            segments: 8,
+            derivatives: 2,
+        }
+    }
+}
+
+/// The interpolant of `curve` on `options.segments` uniform pieces of [a, b] matching
+/// m = `options.derivatives` derivatives at every joint (degree 2m + 1).
+///
+/// # Examples
+/// ```
+/// use trajverify::algo::hermite::piecewise::{interpolate_curve, InterpolationOptions};
+/// use trajverify::curve::{approx::conversion_error, ExprCurve};
+/// let helix = ExprCurve::parse("[cos(t), sin(t), t/5]").unwrap().compile::<f64>(&());
+/// let pw = interpolate_curve(&helix, (&0.0, &1.0), &InterpolationOptions::default()).unwrap();
+/// assert!(conversion_error(&helix, &pw, 16).max < 1e-8);
+/// ```
 ///
 /// # Errors
 /// [`HermiteError::NoSegments`] for `segments` = 0, [`HermiteError::TooManySegments`] above
@@ -36,9 +63,12 @@ pub const MAX_JOINT_DERIVATIVES: usize = 30;
 pub fn interpolate_curve<T: Real, C: Curve<T> + ?Sized>(
     curve: &C,
     (a, b): (&T, &T),
-    segments: usize,
-    m: usize,
+    options: &InterpolationOptions,
 ) -> Result<PiecewiseBernstein<T>, HermiteError> {
+    let InterpolationOptions {
+        segments,
+        derivatives: m,
+    } = *options;
     if segments == 0 {
         return Err(HermiteError::NoSegments);
     }
@@ -100,7 +130,15 @@ mod tests {
             .unwrap()
             .compile::<f64>(&());
         for m in [1usize, 2] {
-            let fit = interpolate_curve(&curve, (&0.0, &1.0), 4, m).unwrap();
+            let fit = interpolate_curve(
+                &curve,
+                (&0.0, &1.0),
+                &InterpolationOptions {
+                    segments: 4,
+                    derivatives: m,
+                },
+            )
+            .unwrap();
             assert_eq!(fit.control_points(0).len(), 2 * m + 2);
             // The end of piece 1 has the curve's jet at t = 0.5, scaled by h = 1/4.
             let end = bernstein_jet(&fit.control_points(1), &1.0, m);
@@ -113,7 +151,15 @@ mod tests {
                 );
             }
             let error = |n: usize| {
-                let fit = interpolate_curve(&curve, (&0.0, &1.0), n, m).unwrap();
+                let fit = interpolate_curve(
+                    &curve,
+                    (&0.0, &1.0),
+                    &InterpolationOptions {
+                        segments: n,
+                        derivatives: m,
+                    },
+                )
+                .unwrap();
                 conversion_error(&curve, &fit, DEFAULT_SAMPLES).max
             };
             let order = (error(8) / error(16)).log2();
