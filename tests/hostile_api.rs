@@ -228,7 +228,7 @@ fn conversions_cap_their_segments_and_check_their_arguments() {
                 &cb,
                 &pw,
                 &ProofOptions {
-                    target: target,
+                    target,
                     max_boxes: 1000,
                     ..ProofOptions::default()
                 },
