@@ -68,8 +68,10 @@ impl Bfbs {
         Bfbs::new(vec![i; n])
     }
 
-    /// The exponent i_j of knot t_j (1-based).
-    pub fn exponent(&self, j: usize) -> u32 {
+    /// The exponent i_j of knot t_j in the paper's 1-based numbering of Eq. (7), clamped to
+    /// the basis functions' range 2 … n + 1 (the API's 0-based list is [`Bfbs::exponents`]:
+    /// entry k is i_{k+2}).
+    pub(crate) fn exponent(&self, j: usize) -> u32 {
         let n = self.exponents.len();
         self.exponents[j.clamp(2, n + 1) - 2]
     }
