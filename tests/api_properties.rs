@@ -204,3 +204,105 @@ proptest! {
         }
     }
 }
+
+proptest! {
+    #![proptest_config(config())]
+
+    /// Studies: hostile precisions, methods and intervals are refused naming the field; a
+    /// study that runs has finite errors.
+    #[test]
+    fn studies_and_intervals(bits_pick in 0usize..8, m in hostile_count(), a in hostile_f64(), b in hostile_f64(), proof in any::<bool>()) {
+        use trajverify::algo::convergence::{study, Method, StudyOptions};
+        use trajverify::curve::interval::Interval;
+        let bits = [0u32, 1, 15, 16, 64, 4096, 4097, u32::MAX][bits_pick];
+        let Ok(interval) = no_panic("Interval::from_f64", || Interval::from_f64(a, b))? else {
+            return Ok(());
+        };
+        // Only cheap studies run to the end: short intervals, two coarse levels, low precision.
+        if bits > 256 || (b - a) > 8.0 {
+            return Ok(());
+        }
+        let method = if m % 2 == 0 { Method::Phodcos } else { Method::Hermite(m) };
+        let options = StudyOptions { method, levels: vec![0, 1], bits, proof };
+        let curve = ExprCurve::parse("[cos(t), sin(t), t/5]").expect("a curve");
+        match no_panic("study", || study(&curve, &interval, &options, &mut |_, _| {}))? {
+            Ok(s) => {
+                for r in &s.rows {
+                    prop_assert!(r.value().is_finite(), "a row holds {:?}", r.sampled);
+                    if let Some((lo, hi)) = &r.proven {
+                        prop_assert!(lo.is_finite() && hi.is_finite() && lo <= hi, "{lo} > {hi}");
+                    }
+                }
+            }
+            Err(e) => {
+                let text = e.to_string();
+                prop_assert!(!text.is_empty());
+            }
+        }
+    }
+
+    /// B-spline fits, periodic splines, Bernstein polynomials and the Hermite map: a
+    /// constructor refuses what it cannot represent; what it returns is finite.
+    #[test]
+    fn splines_bernstein_and_the_hermite_map(degree in hostile_count(), controls in hostile_count(), x in hostile_f64(), w in hostile_f64(), t0 in hostile_f64(), t1 in hostile_f64(), t in hostile_f64()) {
+        use trajverify::algo::bspline::fit::SplineSpace;
+        use trajverify::algo::hermite::HermiteData;
+        use trajverify::curve::spline::PeriodicSpline;
+        use trajverify::numeric::poly::bernstein::Bernstein;
+        if degree <= 60 && controls <= 200 {
+            if let Ok(space) = no_panic("SplineSpace::new", || SplineSpace::<f64>::new(degree, controls, &()))? {
+                let times = [0.0, 0.5, x, 2.0];
+                let values = [1.0, x, 0.0, -1.0];
+                if let Ok(c) = no_panic("interpolate", || space.interpolate(&times, &values))? {
+                    prop_assert!(c.iter().all(|v| v.is_finite()), "Ok holding {c:?}");
+                }
+                if let Ok(c) = no_panic("smooth", || space.smooth(&times, &values, &[1.0, w, 1.0, 1.0]))? {
+                    prop_assert!(c.iter().all(|v| v.is_finite()), "Ok holding {c:?}");
+                }
+            }
+        }
+        let times = [0.0, 1.0, 2.0, x, 4.0, 5.0];
+        let _ = no_panic("PeriodicSpline", || PeriodicSpline::interpolate(degree.min(9), &times, 6.0, &[[x, 0.0, 1.0]; 6]))?;
+        // `Bernstein` is an arithmetic kernel (its evaluators return T, not Result: a width of
+        // 5e-324 gives derivatives beyond f64's range); its constructor refuses non-finite
+        // data, and the checked evaluation is `BezierCurve`'s (`bezier_and_hermite_curves`).
+        if let Ok(p) = no_panic("Bernstein::new", || Bernstein::new(vec![0.0, x, 1.0], (t0, t1)))? {
+            prop_assert!(p.control_points().iter().all(|v| v.is_finite()));
+            let _ = no_panic("derivative_at_start", || p.derivative_at_start(1))?;
+            let _ = no_panic("eval", || p.eval(&t))?;
+        }
+        if let Ok(data) = no_panic("HermiteData::new", || HermiteData::new(vec![0.0, x], vec![1.0, w], (t0, t1)))? {
+            if let Ok(b) = no_panic("solve", || data.solve())? {
+                prop_assert!(b.control_points().iter().all(|v| v.is_finite()), "Ok holding {:?}", b.control_points());
+            }
+        }
+    }
+
+    /// Dubins poses, PH frames and the everyday queries on hostile parameters.
+    #[test]
+    fn poses_frames_and_queries(a in hostile_f64(), s in hostile_f64(), t in hostile_f64(), q in hostile_f64()) {
+        use trajverify::algo::gerbs::dubins::shortest;
+        use trajverify::curve::parametric::ParamCurveFrame;
+        use trajverify::curve::query::{extrema, nearest_point, points_at, Subsegment};
+        if let Some(d) = shortest(&[0.0, 0.0, 0.3], &[40.0, 10.0, a], &5.0) {
+            if let Ok(p) = no_panic("pose_at", || d.pose_at(&s))? {
+                prop_assert!(p.iter().all(|v| v.is_finite()), "Ok holding {p:?}");
+            }
+        }
+        let curve = ExprCurve::parse("[cos(t), sin(t), t/5]").expect("a curve").compile::<f64>(&());
+        let Ok(pw) = fit(&curve, (&0.0, &3.0), &FitOptions { segments: 4, ..FitOptions::default() }) else { return Ok(()) };
+        if let Ok(f) = no_panic("frame", || pw.frame(&t))? {
+            prop_assert!(f.omega.iter().all(|v| v.is_finite()), "Ok holding {f:?}");
+        }
+        if let Ok(p) = no_panic("points_at", || points_at(&pw, &[t, 1.0]))? {
+            prop_assert!(all_finite(&p), "Ok holding {p:?}");
+        }
+        if let Ok(n) = no_panic("nearest_point", || nearest_point(&pw, &[q, 0.0, 0.5]))? {
+            prop_assert!(n.distance.is_finite() && n.t.is_finite(), "Ok holding {n:?}");
+        }
+        if let Ok(part) = no_panic("Subsegment::new", || Subsegment::new(&pw, (t, s)))? {
+            let e = no_panic("extrema", || extrema(&part))?;
+            prop_assert!(e.is_ok(), "{e:?}");
+        }
+    }
+}

@@ -932,6 +932,8 @@ fn dubins_error(e: &DubinsError) -> InputError {
         DubinsError::Degenerate { leg, .. }
         | DubinsError::Undecided { leg, .. }
         | DubinsError::Tie { leg, .. } => *leg,
+        // Not raised by the planner (only by `pose_at`).
+        DubinsError::Argument { .. } => return InputError(format!("field \"waypoints\": {e}")),
     };
     InputError(format!(
         "field \"waypoints\": no Dubins path from waypoint {} to {}: {e}",

@@ -285,7 +285,13 @@ pub fn nearest_point<T: Real, const D: usize, C: ParamCurve<T, D> + ?Sized>(
         }
         for t in candidates {
             let point = curve.point(&t)?;
-            let distance = dot(&offset(&point), &offset(&point)).sqrt();
+            let distance = scaled_norm(&offset(&point));
+            if !distance.is_finite() {
+                return Err(CurveError::Argument {
+                    field: "q",
+                    message: "its distance to the curve is not representable".into(),
+                });
+            }
             if best.as_ref().is_none_or(|b| distance < b.distance) {
                 best = Some(Nearest { t, point, distance });
             }
@@ -298,6 +304,18 @@ pub fn nearest_point<T: Real, const D: usize, C: ParamCurve<T, D> + ?Sized>(
             end: end.to_f64(),
         }
     })
+}
+
+/// |v| without overflow or underflow in the squares: the largest |vᵢ| times the norm of v
+/// divided by it.
+fn scaled_norm<T: Real, const D: usize>(v: &[T; D]) -> T {
+    let zero = T::zero_in(&v[0].ctx());
+    let largest = v.iter().fold(zero.clone(), |m, x| m.max_with(&x.abs()));
+    if largest.is_zero() || !largest.is_finite() {
+        return largest;
+    }
+    let scaled: [T; D] = std::array::from_fn(|c| v[c].clone() / &largest);
+    largest * &dot(&scaled, &scaled).sqrt()
 }
 
 /// The pieces between the domain's ends and its break points.

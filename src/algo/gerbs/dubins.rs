@@ -97,6 +97,15 @@ pub enum DubinsError {
         /// Another word of the same length.
         second: String,
     },
+    /// An argument outside what the function is defined for (an arc length that is not a
+    /// number or lies outside the path).
+    #[error("{field}: {message}")]
+    Argument {
+        /// The argument.
+        field: &'static str,
+        /// What is wrong.
+        message: String,
+    },
 }
 
 /// A heading of a Dubins leg, as the exact planner needs it: its angle relative to the
@@ -706,11 +715,41 @@ impl<T: Real> DubinsPath<T> {
         name(&self.word)
     }
 
-    /// The pose (x, y, heading) after arc length `s` from the start. Each step advances by
+    /// The pose (x, y, heading) after arc length `s` from the start, 0 ≤ s ≤ the path's
+    /// length.
+    ///
+    /// # Errors
+    /// [`DubinsError::Argument`] (field `s`) for an `s` that is not finite or lies (provably)
+    /// outside [0, length].
+    pub fn pose_at(&self, s: &T) -> Result<[T; 3], DubinsError> {
+        let zero = T::zero_in(&s.ctx());
+        let length = self.total();
+        if !s.is_finite() || s.decide_lt(&zero) == Some(true) || length.decide_lt(s) == Some(true) {
+            return Err(DubinsError::Argument {
+                field: "s",
+                message: format!(
+                    "{} is not an arc length along the path [0, {}]",
+                    s.to_f64(),
+                    length.to_f64()
+                ),
+            });
+        }
+        let pose = self.pose_along(s);
+        if pose.iter().all(Field::is_finite) {
+            Ok(pose)
+        } else {
+            Err(DubinsError::Argument {
+                field: "s",
+                message: "the pose there is not finite".into(),
+            })
+        }
+    }
+
+    /// The pose after arc length `s`, clamped to the path. Each step advances by
     /// min(max(left, 0), its length): continuous in `s`, so no comparison decides a branch
     /// (a sample on a junction gives the same pose from either step), and a step of length
     /// 0 is passed over.
-    pub fn pose_at(&self, s: &T) -> [T; 3] {
+    pub(crate) fn pose_along(&self, s: &T) -> [T; 3] {
         let zero = T::zero_in(&s.ctx());
         let mut pose = self.start.clone();
         let mut left = s.clone();
@@ -731,7 +770,7 @@ impl<T: Real> DubinsPath<T> {
         let last = count.max(2) as i64 - 1;
         let length = self.total();
         (0..=last)
-            .map(|k| self.pose_at(&(length.clone() * &T::from_ratio(k, last, &ctx))))
+            .map(|k| self.pose_along(&(length.clone() * &T::from_ratio(k, last, &ctx))))
             .collect()
     }
 
@@ -791,7 +830,7 @@ mod tests {
         ];
         for (s, g) in poses {
             let path = shortest(&s, &g, &80.0).expect("decided");
-            let end = path.pose_at(&path.total());
+            let end = path.pose_at(&path.total()).expect("the end of the path");
             let dh = reduce2pi(end[2] - g[2] + 1.0) - 1.0;
             assert!(
                 (end[0] - g[0]).abs() < 1e-9 && (end[1] - g[1]).abs() < 1e-9 && dh.abs() < 1e-9,

@@ -29,6 +29,12 @@ pub enum BernsteinError {
 }
 
 /// A scalar polynomial of degree n = `control_points.len() − 1` on [t₀, t₁].
+///
+/// An arithmetic kernel: its constructor refuses non-finite data, but evaluation and the
+/// derivatives are plain arithmetic in `T` and are not checked for overflow (the j-th
+/// derivative carries 1/(t₁ − t₀)ʲ, beyond f64's range on a tiny interval). The checked
+/// curve, whose every evaluation is an error rather than NaN or ∞, is
+/// [`crate::curve::bezier::BezierCurve`].
 #[derive(Clone, Debug, PartialEq)]
 pub struct Bernstein<T> {
     control_points: Vec<T>,
@@ -51,7 +57,8 @@ impl<T: Field> Bernstein<T> {
     ///
     /// # Errors
     /// [`BernsteinError::Empty`] without a control point; [`BernsteinError::Interval`] unless
-    /// t₀ < t₁ (equal ends would divide by zero, NaN compares neither way).
+    /// t₀ < t₁ with a finite width t₁ − t₀ (equal ends would divide by zero, NaN compares
+    /// neither way); [`BernsteinError::NotFinite`] for a control point that is NaN or ±∞.
     ///
     /// # Examples
     /// ```
@@ -68,8 +75,13 @@ impl<T: Field> Bernstein<T> {
         if control_points.is_empty() {
             return Err(BernsteinError::Empty);
         }
-        if t0.partial_cmp(&t1) != Some(std::cmp::Ordering::Less) {
+        // Finite ends a finite width apart (the derivatives divide by t₁ − t₀).
+        let width = t1.clone() - &t0;
+        if t0.partial_cmp(&t1) != Some(std::cmp::Ordering::Less) || !width.is_finite() {
             return Err(BernsteinError::Interval);
+        }
+        if let Some(k) = control_points.iter().position(|p| !p.is_finite()) {
+            return Err(BernsteinError::NotFinite(k));
         }
         Ok(Bernstein {
             control_points,

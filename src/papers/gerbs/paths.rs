@@ -437,7 +437,7 @@ pub fn dubins_points(legs: &[DubinsPath<f64>], step: f64) -> Vec<[f64; 2]> {
     for leg in legs {
         let n = (leg.total() / step).ceil() as usize;
         for i in 0..=n {
-            let p = leg.pose_at(&(leg.total() * i as f64 / n as f64));
+            let p = leg.pose_along(&(leg.total() * i as f64 / n as f64));
             pts.push([p[0], p[1]]);
         }
     }
