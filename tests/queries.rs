@@ -107,3 +107,38 @@ fn queries_run_in_every_real_number_type() {
     assert!(off < 1e-55, "{off:e}");
     assert!((e[1].max.clone() - &q(1)).abs().to_f64() < 1e-55);
 }
+
+/// Any library curve built in each number type is studied like an expression: a natural
+/// spline through Marin's knots (piecewise: sampled, its proven bounds would be unbounded at
+/// the knots) and a Bézier curve (one piece: proven).
+#[test]
+fn library_curves_are_studied_through_their_family() {
+    use trajverify::algo::convergence::{study, CurveFamily, Family, Smoothness, StudyOptions};
+    use trajverify::algo::param::natural::NaturalSplineCurve;
+    use trajverify::curve::interval::Interval;
+    use trajverify::scalar::Real;
+    struct Plane;
+    impl CurveFamily<2> for Plane {
+        type Member<T: Real> = NaturalSplineCurve<T, 2>;
+        fn build<T: Real>(&self, ctx: &T::Ctx) -> Option<NaturalSplineCurve<T, 2>> {
+            let p = |x: i64, y: i64| [T::from_i64(x, ctx), T::from_i64(y, ctx)];
+            let knots = [(0, 1), (1, 3), (2, 3), (1, 1)].map(|(n, d)| T::from_ratio(n, d, ctx));
+            NaturalSplineCurve::new(knots.to_vec(), &[p(0, 0), p(1, 2), p(3, 3), p(4, 1)]).ok()
+        }
+        fn smoothness(&self) -> Smoothness {
+            Smoothness::Piecewise { continuity: 2 }
+        }
+    }
+    let options = StudyOptions {
+        levels: vec![2, 3, 4, 5],
+        proof: false,
+        ..StudyOptions::default()
+    };
+    let result = study(&Family(Plane), &Interval::unit(), &options, &mut |_, _| {})
+        .expect("a sampled study");
+    assert_eq!(result.rows.len(), 4);
+    // Each doubling shrinks the error (the cubic pieces' third derivative jumps at the knots).
+    for w in result.rows.windows(2) {
+        assert!(w[1].value() < w[0].value(), "{:?}", result.rows);
+    }
+}

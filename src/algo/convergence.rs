@@ -62,11 +62,13 @@
 //! assert!(result.rows.iter().all(|r| r.proven.is_some()));
 //! ```
 
+use crate::curve::adapter::OwnedCurve;
 use crate::curve::approx::{
     certified_max_error, conversion_error, BernsteinPieces, PiecewiseBernstein, DEFAULT_SAMPLES,
 };
 use crate::curve::enclosure::{proven_error, ProofOptions};
 use crate::curve::interval::Interval;
+use crate::curve::parametric::ParamCurve;
 use crate::curve::regularity::{self, Irregular, Regularity};
 use crate::curve::spline::{ClampedSpline, PeriodicSpline};
 use crate::curve::{Curve, ExprCurve};
@@ -283,6 +285,105 @@ impl<F: crate::curve::function::CurveFn> StudyCurve for crate::curve::function::
     }
     fn smoothness(&self) -> Smoothness {
         Smoothness::Analytic
+    }
+}
+
+/// A library curve (any [`ParamCurve`] of dimension D ≤ 3: a Bézier curve, a GERBS path, a
+/// natural spline, …) built by the caller in each number type a study needs, so that it can be
+/// studied like an expression. `build` rounds the curve's data into the context once; a
+/// member that cannot be built there becomes a curve without values, which the study's
+/// conversions refuse ("not finite") rather than use.
+///
+/// A curve made of several polynomial pieces is proven through
+/// [`crate::curve::adapter::OwnedCurve`], whose seam bound at a breakpoint is infinite: its
+/// proven errors are unbounded above (never wrong), so study such a curve sampled
+/// (`proof: false`), or prove a curve of one piece.
+///
+/// # Examples
+/// A cubic Bézier curve studied like an expression: its PH conversion converges at order 6.
+/// ```
+/// use trajverify::algo::convergence::{study, CurveFamily, Family, Smoothness, StudyOptions};
+/// use trajverify::curve::bezier::BezierCurve;
+/// use trajverify::curve::interval::Interval;
+/// use trajverify::scalar::Real;
+///
+/// struct Arc;
+/// impl CurveFamily<2> for Arc {
+///     type Member<T: Real> = BezierCurve<T, 2>;
+///     fn build<T: Real>(&self, ctx: &T::Ctx) -> Option<BezierCurve<T, 2>> {
+///         let p = |x: i64, y: i64| [T::from_i64(x, ctx), T::from_i64(y, ctx)];
+///         let (a, b) = (T::from_i64(0, ctx), T::from_i64(1, ctx));
+///         BezierCurve::new(vec![p(0, 0), p(1, 2), p(3, 3), p(4, 1)], (a, b)).ok()
+///     }
+///     fn smoothness(&self) -> Smoothness {
+///         Smoothness::Analytic
+///     }
+/// }
+/// let options = StudyOptions { levels: vec![1, 2, 3, 4], ..StudyOptions::default() };
+/// let result = study(&Family(Arc), &Interval::unit(), &options, &mut |_, _| {}).unwrap();
+/// assert!(result.rows.iter().all(|r| r.proven.is_some()));
+/// ```
+pub trait CurveFamily<const D: usize>: Sync {
+    /// The curve in the number type `T`.
+    type Member<T: Real>: ParamCurve<T, D> + Sync;
+    /// The curve with its data rounded into `ctx`; `None` where it cannot be built.
+    fn build<T: Real>(&self, ctx: &T::Ctx) -> Option<Self::Member<T>>;
+    /// Its smoothness (for the expected order).
+    fn smoothness(&self) -> Smoothness;
+}
+
+/// A [`CurveFamily`] as a study's curve.
+pub struct Family<F, const D: usize>(pub F);
+
+/// A member that could not be built: no values.
+struct Unbuilt;
+
+impl<T: Real> Curve<T> for Unbuilt {
+    fn jet(&self, t: &T, order: usize) -> Vec<[T; 3]> {
+        vec![std::array::from_fn(|_| T::from_f64(f64::NAN, &t.ctx())); order + 1]
+    }
+}
+
+fn member<'a, T: Real + 'a, F: CurveFamily<D>, const D: usize>(
+    family: &F,
+    ctx: &T::Ctx,
+) -> Box<dyn Curve<T> + 'a>
+where
+    F::Member<T>: 'a,
+{
+    match family.build::<T>(ctx) {
+        Some(c) => Box::new(OwnedCurve::<_, D>(c)),
+        None => Box::new(Unbuilt),
+    }
+}
+
+impl<F: CurveFamily<D>, const D: usize> StudyCurve for Family<F, D> {
+    fn in_f64(&self) -> Box<dyn Curve<f64> + '_> {
+        member::<f64, F, D>(&self.0, &())
+    }
+    fn in_mpfr(&self, bits: u32) -> Box<dyn Curve<Float> + '_> {
+        member::<Float, F, D>(&self.0, &bits)
+    }
+    fn in_ball(&self, bits: u32) -> Box<dyn Curve<Ball> + '_> {
+        member::<Ball, F, D>(&self.0, &bits)
+    }
+    fn smoothness(&self) -> Smoothness {
+        self.0.smoothness()
+    }
+    fn regularity(
+        &self,
+        interval: &Interval,
+        order: usize,
+        bits: u32,
+    ) -> Result<Option<Regularity>, Irregular> {
+        // A box across a breakpoint would be evaluated on one piece only: the regularity
+        // proof covers curves of one piece, and a piecewise one is not proven regular.
+        match self.0.build::<Ball>(&bits) {
+            Some(c) if c.breakpoints().is_empty() => {
+                regularity::check(&OwnedCurve::<_, D>(c), interval, order, bits).map(Some)
+            }
+            _ => Ok(None),
+        }
     }
 }
 

@@ -2,7 +2,8 @@
 //! dimension 1, 2 or 3 (a Bézier curve, a natural spline, a GERBS path, a PH spline, a B-spline
 //! fit) be what [`Curve`] stands for — the curve a PH spline is fitted to
 //! ([`crate::algo::ph::piecewise::fit`]), measured against ([`crate::curve::approx`],
-//! [`crate::curve::enclosure::proven_error`]) or studied — so one library curve can be
+//! [`crate::curve::enclosure::proven_error`]) or studied (built in each number type,
+//! `algo::convergence::CurveFamily`, through [`OwnedCurve`]) — so one library curve can be
 //! converted and compared with another without hand-written jets.
 //!
 //! A curve of fewer than three coordinates is embedded in ℝ³ with zeros (a plane curve lies in
@@ -50,47 +51,91 @@ impl<'a, C: ?Sized, const D: usize> AsCurve<'a, C, D> {
 
 impl<T: Real, C: ParamCurve<T, D> + Sync + ?Sized, const D: usize> Curve<T> for AsCurve<'_, C, D> {
     fn jet(&self, t: &T, order: usize) -> Vec<[T; 3]> {
-        let ctx = t.ctx();
-        let embed = |p: &[T; D]| -> [T; 3] {
-            std::array::from_fn(|c| {
-                if c < D {
-                    p[c].clone()
-                } else {
-                    T::zero_in(&ctx)
-                }
-            })
-        };
-        match self.curve.derivatives(t, order) {
-            Ok(jet) if D <= 3 => jet.iter().map(embed).collect(),
-            // Outside the domain, or more than three coordinates: not a value to convert.
-            _ => vec![std::array::from_fn(|_| T::from_f64(f64::NAN, &ctx)); order + 1],
-        }
+        embedded_jet(self.curve, t, order)
     }
 
     fn seam_bound(&self, lo: f64, _centre: (f64, f64), hi: f64) -> f64 {
-        // A breakpoint inside the piece or on its ends (its f64 rounding may sit an ulp
-        // from the true one): the curve's other polynomial piece may reach into [lo, hi], and
-        // no generic bound of that seam is known here, so the bound is infinite.
-        let slack = 1e-9 * (hi - lo).abs();
-        let touches = self
-            .curve
-            .breakpoints()
-            .iter()
-            .map(|b| b.to_f64())
-            .any(|b| lo - slack <= b && b <= hi + slack);
-        if touches {
-            f64::INFINITY
-        } else {
-            0.0
-        }
+        seam_bound_of(self.curve, lo, hi)
     }
 
     fn breakpoints(&self, lo: f64, hi: f64) -> Vec<f64> {
-        self.curve
-            .breakpoints()
-            .iter()
-            .map(|b| b.to_f64())
-            .filter(|b| lo < *b && *b < hi)
-            .collect()
+        breakpoints_of(self.curve, lo, hi)
     }
+}
+
+/// [`AsCurve`] that owns its curve (for a curve built on demand, e.g. in each number type of
+/// a convergence study).
+pub struct OwnedCurve<C, const D: usize>(pub C);
+
+impl<T: Real, C: ParamCurve<T, D> + Sync, const D: usize> Curve<T> for OwnedCurve<C, D> {
+    fn jet(&self, t: &T, order: usize) -> Vec<[T; 3]> {
+        embedded_jet(&self.0, t, order)
+    }
+
+    fn seam_bound(&self, lo: f64, _centre: (f64, f64), hi: f64) -> f64 {
+        seam_bound_of(&self.0, lo, hi)
+    }
+
+    fn breakpoints(&self, lo: f64, hi: f64) -> Vec<f64> {
+        breakpoints_of(&self.0, lo, hi)
+    }
+}
+
+/// The curve's jet embedded in ℝ³; NaN where the curve gives none.
+fn embedded_jet<T: Real, C: ParamCurve<T, D> + ?Sized, const D: usize>(
+    curve: &C,
+    t: &T,
+    order: usize,
+) -> Vec<[T; 3]> {
+    let ctx = t.ctx();
+    let embed = |p: &[T; D]| -> [T; 3] {
+        std::array::from_fn(|c| {
+            if c < D {
+                p[c].clone()
+            } else {
+                T::zero_in(&ctx)
+            }
+        })
+    };
+    match curve.derivatives(t, order) {
+        Ok(jet) if D <= 3 => jet.iter().map(embed).collect(),
+        // Outside the domain, or more than three coordinates: not a value to convert.
+        _ => vec![std::array::from_fn(|_| T::from_f64(f64::NAN, &ctx)); order + 1],
+    }
+}
+
+/// Infinite on a piece that touches a breakpoint, zero elsewhere.
+fn seam_bound_of<T: Real, C: ParamCurve<T, D> + ?Sized, const D: usize>(
+    curve: &C,
+    lo: f64,
+    hi: f64,
+) -> f64 {
+    // A breakpoint inside the piece or on its ends (its f64 rounding may sit an ulp from the
+    // true one): the curve's other polynomial piece may reach into [lo, hi], and no generic
+    // bound of that seam is known here, so the bound is infinite.
+    let slack = 1e-9 * (hi - lo).abs();
+    let touches = curve
+        .breakpoints()
+        .iter()
+        .map(|b| b.to_f64())
+        .any(|b| lo - slack <= b && b <= hi + slack);
+    if touches {
+        f64::INFINITY
+    } else {
+        0.0
+    }
+}
+
+/// The curve's breakpoints inside (lo, hi).
+fn breakpoints_of<T: Real, C: ParamCurve<T, D> + ?Sized, const D: usize>(
+    curve: &C,
+    lo: f64,
+    hi: f64,
+) -> Vec<f64> {
+    curve
+        .breakpoints()
+        .iter()
+        .map(|b| b.to_f64())
+        .filter(|b| lo < *b && *b < hi)
+        .collect()
 }

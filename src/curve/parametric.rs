@@ -195,12 +195,19 @@ pub fn check_order(order: usize) -> Result<(), CurveError> {
     Ok(())
 }
 
-/// `Ok` when t₀ ≤ t ≤ t₁ (false for NaN), else [`CurveError::OutsideDomain`].
+/// `Ok` when t₀ ≤ t ≤ t₁, else [`CurveError::OutsideDomain`] (also for NaN and ±∞). For an
+/// enclosure (a ball over a box of parameters) only a box provably outside is refused: a box
+/// that reaches past an end by its rounding is evaluated, the curve's polynomial continued.
 ///
 /// # Errors
 /// [`CurveError::OutsideDomain`] as stated.
 pub fn check_domain<T: Field>(t: &T, (start, end): (&T, &T)) -> Result<(), CurveError> {
-    if *start <= *t && *t <= *end {
+    let inside = if T::ENCLOSURE {
+        t.is_finite() && t.decide_lt(start) != Some(true) && end.decide_lt(t) != Some(true)
+    } else {
+        *start <= *t && *t <= *end
+    };
+    if inside {
         Ok(())
     } else {
         Err(CurveError::OutsideDomain {
