@@ -84,6 +84,13 @@ fn first_not_finite(times: &[f64], points: &[[f64; 3]]) -> Option<usize> {
 
 impl PeriodicSpline {
     /// Interpolate points x_i at times t_i (i < N) with period end `period_end` > t_{N−1}.
+    ///
+    /// # Errors
+    /// [`SplineError::EvenDegree`] for an even degree; [`SplineError::TooFewPoints`] for fewer
+    /// than p + 2 points or one point per time missing; [`SplineError::NotFinite`] for a NaN
+    /// or infinite time, coordinate or period end; [`SplineError::NotIncreasing`] for times
+    /// that do not increase strictly or a period end not after the last time;
+    /// [`SplineError::Singular`] if the collocation system is.
     pub fn interpolate(
         degree: usize,
         times: &[f64],
@@ -475,6 +482,19 @@ impl ClampedSpline {
     /// than p + 1 points or one point per time missing; [`SplineError::NotFinite`] for a NaN
     /// or infinite time or coordinate; [`SplineError::NotIncreasing`] for times that do not
     /// increase strictly; [`SplineError::Singular`] if the collocation system is.
+    ///
+    /// # Examples
+    /// A quintic spline through eight samples of a helix, evaluated through the curve
+    /// interface: it passes through the samples.
+    /// ```
+    /// use trajverify::curve::parametric::ParamCurve;
+    /// use trajverify::curve::spline::ClampedSpline;
+    /// let times: Vec<f64> = (0..8).map(f64::from).collect();
+    /// let points: Vec<[f64; 3]> = times.iter().map(|&t| [t.cos(), t.sin(), t / 5.0]).collect();
+    /// let spline = ClampedSpline::interpolate(5, &times, &points).unwrap();
+    /// let p = spline.on::<f64>(&()).point(&3.0).unwrap();
+    /// assert!((p[0] - 3f64.cos()).abs() < 1e-12 && (p[1] - 3f64.sin()).abs() < 1e-12);
+    /// ```
     pub fn interpolate(
         degree: usize,
         times: &[f64],

@@ -60,6 +60,14 @@ pub struct NoSolution;
 /// # Errors
 /// [`NoSolution`] when a Newton step's Jacobian is singular, when 200 steps do not bring the
 /// largest step to 64ε, or when the converged times are not ordered 0 < t₁ < t₂ < t₃ < 4.
+///
+/// # Examples
+/// ```
+/// use trajverify::algo::bspline::bang_bang::{switching_times, terminal_residuals};
+/// let t: [f64; 3] = switching_times(&()).unwrap();
+/// assert!(0.0 < t[0] && t[0] < t[1] && t[1] < t[2] && t[2] < 4.0);
+/// assert!(terminal_residuals(&t).iter().all(|r| r.abs() < 1e-12));
+/// ```
 pub fn switching_times<T: Real>(ctx: &T::Ctx) -> Result<[T; 3], NoSolution> {
     let i = |v: i64| T::from_i64(v, ctx);
     let mut t = [i(1), i(2), i(3)];

@@ -94,6 +94,11 @@ fn roots_given_one<T: Field>(q: &Poly<T>, known: &T) -> Result<Vec<T>, Certifica
 }
 
 /// The dual certificate for the bang-bang control with these switching times and x(2) = ξ.
+///
+/// # Errors
+/// [`CertificateError::Singular`] when the conditions Ya(tᵢ) = 0 have no unique solution;
+/// [`CertificateError::ExtraRoot`] when a piece of Ya holds no switching time or changes
+/// sign between switches; [`CertificateError::Degenerate`] when Ya vanishes on a piece.
 pub fn certificate<T: Field>(
     switches: &[T; 3],
     xi: &T,

@@ -647,6 +647,9 @@ fn exact<T: Field>(x: &T) -> Option<BigRational> {
 /// The shortest Dubins path of radius `radius` from each pose (W_i, heading_i) to the next,
 /// decided exactly on the values as given (see the module doc); `Err(i)` when leg i (0-based)
 /// has no decidable shortest path, or one whose lengths overflow the number type.
+///
+/// # Errors
+/// `Err(i)`, the first such leg.
 pub fn through_poses<T: Real>(
     w: &[[T; 2]],
     headings: &[T],
@@ -682,6 +685,17 @@ pub fn through_poses<T: Real>(
 
 /// The shortest of the six words from pose `start` = (x, y, heading) to `goal`, decided
 /// exactly on the values as given; `None` when it cannot be decided (see [`plan`]).
+///
+/// # Examples
+/// Two poses on the x axis, both heading along it: the shortest word is the straight line.
+/// ```
+/// use trajverify::algo::gerbs::dubins::shortest;
+/// let path = shortest(&[0.0, 0.0, 0.0], &[10.0, 0.0, 0.0], &1.0).unwrap();
+/// assert!((path.total() - 10.0).abs() < 1e-12);
+/// let middle = path.pose_at(&5.0).unwrap();
+/// assert!((middle[0] - 5.0).abs() < 1e-12 && middle[1].abs() < 1e-12);
+/// assert!(path.pose_at(&11.0).is_err()); // beyond the path's length
+/// ```
 pub fn shortest<T: Real>(start: &[T; 3], goal: &[T; 3], radius: &T) -> Option<DubinsPath<T>> {
     through_poses(
         &[

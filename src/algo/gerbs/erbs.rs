@@ -194,6 +194,21 @@ impl<T: Real> Erbs<T> {
     /// # Errors
     /// [`GerbsError::Parameter`] (`params`) unless one set or one per knot interval is given; the
     /// sets themselves are not checked ([`ErbsParams::new`] does that).
+    ///
+    /// # Examples
+    /// A path through five waypoints blended by the ERBS with the default parameters
+    /// (α = β = γ = σ = 1, λ = ½): it passes through each waypoint at its knot.
+    /// ```
+    /// use trajverify::algo::gerbs::erbs::{CentreReading, Erbs, ErbsParams};
+    /// use trajverify::algo::gerbs::path::{GerbsPath, PathSpec};
+    /// use trajverify::algo::gerbs::{Knots, Side};
+    /// let waypoints = vec![[0.0, 0.0], [300.0, 100.0], [600.0, -50.0], [900.0, 150.0], [1200.0, 0.0]];
+    /// let knots = Knots::<f64>::uniform(5, &()).unwrap();
+    /// let erbs = Erbs::new(&knots, vec![ErbsParams::default()], CentreReading::Cited).unwrap();
+    /// let path = GerbsPath::new(&PathSpec::new(waypoints, 80.0, &()), erbs).unwrap();
+    /// let w2 = path.at_knot(2, Side::Right).unwrap(); // knot 2 carries waypoint W2
+    /// assert!((w2.point[0] - 300.0).abs() < 1e-9 && (w2.point[1] - 100.0).abs() < 1e-9);
+    /// ```
     pub fn new(
         knots: &Knots<T>,
         params: Vec<ErbsParams<T>>,
