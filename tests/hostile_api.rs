@@ -427,7 +427,10 @@ fn every_library_curve_can_be_fitted_through_the_adapter() {
     use trajverify::curve::taylor::Taylor;
     assert!(Taylor::<f64>::from_coeffs(vec![]).is_none());
     let params = ErbsParams::<f64>::default();
-    assert_eq!((params.alpha, params.sigma, params.lambda), (1.0, 1.0, 0.5));
+    assert_eq!(
+        (*params.alpha(), *params.sigma(), *params.lambda()),
+        (1.0, 1.0, 0.5)
+    );
     // The GERBS path (2-D, C² with the BFBS) fitted by a C² PH spline in z = 0.
     let path = bfbs_path();
     let adapted = AsCurve::new(&path);

@@ -142,3 +142,29 @@ fn library_curves_are_studied_through_their_family() {
         assert!(w[1].value() < w[0].value(), "{:?}", result.rows);
     }
 }
+
+/// The largest distance between a PH fit and its target curve, found by the generic query,
+/// agrees with the conversion error the library measures its own way (sampled maximum
+/// refined by Newton's method on each segment).
+#[test]
+fn the_largest_distance_between_two_library_curves_is_the_conversion_error() {
+    use trajverify::curve::approx::conversion_error;
+    use trajverify::curve::parametric::CurveOn;
+    use trajverify::curve::query::largest_distance;
+    let spline = helix_spline();
+    let helix = ExprCurve::parse("[cos(t), sin(t), t/5]")
+        .expect("a curve")
+        .compile::<f64>(&());
+    let tau = 2.0 * std::f64::consts::PI;
+    let target = CurveOn::new(&helix, (0.0, tau)).expect("a domain");
+    let far = largest_distance(&spline, &target).expect("overlapping domains");
+    let measured = conversion_error(&helix, &spline, 16).max;
+    // Both are differences of points of size 1 evaluated in f64: they can agree only to the
+    // rounding of those points, a few ulps of 1 (the error itself is 5e-9).
+    assert!(
+        (far.distance - measured).abs() <= 1e-14,
+        "{far:?} against {measured:e}"
+    );
+    let elsewhere = CurveOn::new(&helix, (10.0, 11.0)).expect("a domain");
+    assert!(largest_distance(&spline, &elsewhere).is_err());
+}

@@ -1,13 +1,15 @@
 //! Everyday questions about any [`ParamCurve`], in any number type: the points at many
 //! parameters at once ([`points_at`]), a part of the curve as a curve ([`Subsegment`]), the
 //! extreme values of each coordinate and the bounding box ([`extrema`], [`bounding_box`]),
-//! and the point nearest to a given one ([`nearest_point`]) — what kurbo's `ParamCurveExtrema`,
+//! the point nearest to a given one ([`nearest_point`]) and the largest distance between two
+//! curves ([`largest_distance`]) — what kurbo's `ParamCurveExtrema`,
 //! `ParamCurveNearest` and `subsegment` and scipy's vectorised `__call__` give.
 //!
 //! # How the searches work, and what they promise
 //! An extremum of coordinate c on a piece (between two [`ParamCurve::breakpoints`]) is an end
 //! of the piece or a zero of γ_c′; the point nearest to q is an end or a zero of
-//! g(t) = (γ(t) − q)·γ′(t) where g changes sign from − to +. Each piece is sampled at
+//! g(t) = (γ(t) − q)·γ′(t) where g changes sign from − to +; two curves are farthest apart at
+//! an end or where (γ₁ − γ₂)·(γ₁′ − γ₂′) changes sign from + to −. Each piece is sampled at
 //! [`SAMPLES_PER_PIECE`] + 1 equally spaced parameters; every sign change of the function
 //! between two samples is bisected to the working precision (at most
 //! 4 × its bits steps), and the best candidate is kept. The values are computed in the curve's
@@ -316,6 +318,102 @@ fn scaled_norm<T: Real, const D: usize>(v: &[T; D]) -> T {
     }
     let scaled: [T; D] = std::array::from_fn(|c| v[c].clone() / &largest);
     largest * &dot(&scaled, &scaled).sqrt()
+}
+
+/// The largest distance max_t |γ₁(t) − γ₂(t)| between two curves of the same parameter over
+/// their common domain, and where it is taken (an estimate: see the module doc): how far one
+/// library curve is from another — a fit from its target, one number type from another.
+///
+/// # Errors
+/// [`CurveError::Domain`] when the domains do not overlap in an interval; the first error of
+/// [`ParamCurve::derivatives`] at a sample; [`CurveError::Argument`] (field `other`) when the
+/// distance is not representable.
+///
+/// # Examples
+/// ```
+/// use trajverify::curve::bezier::BezierCurve;
+/// use trajverify::curve::query::largest_distance;
+/// // Two parabolas 2t(1 − t) apart in y: farthest at t = 1/2, by 1/2.
+/// let a = BezierCurve::new(vec![[0.0, 0.0], [1.0, 2.0], [2.0, 0.0]], (0.0, 1.0)).unwrap();
+/// let b = BezierCurve::new(vec![[0.0, 0.0], [1.0, 1.0], [2.0, 0.0]], (0.0, 1.0)).unwrap();
+/// let far = largest_distance(&a, &b).unwrap();
+/// assert!((far.distance - 0.5).abs() < 1e-15 && (far.t - 0.5).abs() < 1e-8);
+/// ```
+pub fn largest_distance<T, const D: usize, A, B>(
+    one: &A,
+    other: &B,
+) -> Result<Farthest<T>, CurveError>
+where
+    T: Real,
+    A: ParamCurve<T, D> + ?Sized,
+    B: ParamCurve<T, D> + ?Sized,
+{
+    let ((s1, e1), (s2, e2)) = (one.domain(), other.domain());
+    let start = if s1 > s2 { s1 } else { s2 };
+    let end = if e1 < e2 { e1 } else { e2 };
+    if start.decide_lt(&end) != Some(true) {
+        return Err(CurveError::Domain {
+            start: start.to_f64(),
+            end: end.to_f64(),
+        });
+    }
+    let mut cuts = vec![start.clone()];
+    let mut inner: Vec<T> = one
+        .breakpoints()
+        .into_iter()
+        .chain(other.breakpoints())
+        .filter(|b| *b > start && *b < end)
+        .collect();
+    inner.sort_by(|a, b| a.partial_cmp(b).unwrap_or(std::cmp::Ordering::Equal));
+    cuts.extend(inner);
+    cuts.push(end);
+    let difference = |t: &T| -> Result<[[T; D]; 2], CurveError> {
+        let (p, q) = (one.derivatives(t, 1)?, other.derivatives(t, 1)?);
+        Ok([
+            std::array::from_fn(|c| p[0][c].clone() - &q[0][c]),
+            std::array::from_fn(|c| p[1][c].clone() - &q[1][c]),
+        ])
+    };
+    // g = (γ₁ − γ₂)·(γ₁′ − γ₂′) falls through zero at a local maximum of the distance.
+    let slope = |t: &T| difference(t).map(|[d, v]| dot(&d, &v));
+    let mut best: Option<Farthest<T>> = None;
+    for w in cuts.windows(2).filter(|w| w[0] < w[1]) {
+        let grid = samples(&w[0], &w[1]);
+        let g = grid.iter().map(&slope).collect::<Result<Vec<_>, _>>()?;
+        let zero = T::zero_in(&w[0].ctx());
+        let mut candidates = vec![w[0].clone(), w[1].clone()];
+        for (i, pair) in g.windows(2).enumerate() {
+            if pair[0] > zero && pair[1] <= zero {
+                candidates.push(bisect(&slope, &grid[i], &grid[i + 1])?);
+            }
+        }
+        for t in candidates {
+            let [d, _] = difference(&t)?;
+            let distance = scaled_norm(&d);
+            if !distance.is_finite() {
+                return Err(CurveError::Argument {
+                    field: "other",
+                    message: "the distance between the curves is not representable".into(),
+                });
+            }
+            if best.as_ref().is_none_or(|b| distance > b.distance) {
+                best = Some(Farthest { t, distance });
+            }
+        }
+    }
+    best.ok_or(CurveError::Domain {
+        start: f64::NAN,
+        end: f64::NAN,
+    })
+}
+
+/// Where two curves are farthest apart.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Farthest<T> {
+    /// The parameter.
+    pub t: T,
+    /// |γ₁(t) − γ₂(t)|.
+    pub distance: T,
 }
 
 /// The pieces between the domain's ends and its break points.

@@ -38,19 +38,21 @@ impl Default for ErbsParams<f64> {
     }
 }
 
-/// The intrinsic parameters of one knot interval.
+/// The intrinsic parameters of one knot interval. The fields are read through accessors:
+/// a set is made by [`ErbsParams::new`] (checked against Eq. (4)'s ranges), [`ErbsParams::smooth`]
+/// or `Default`, or, outside those ranges on purpose, [`ErbsParams::unchecked`].
 #[derive(Clone, Debug, PartialEq)]
 pub struct ErbsParams<T> {
     /// α: the exponent of the denominator (t − t_k)(t_{k+1} − t)^γ of Eq. (4).
-    pub alpha: T,
+    pub(crate) alpha: T,
     /// β: the scale of the exponent of Eq. (4).
-    pub beta: T,
+    pub(crate) beta: T,
     /// γ: the exponent of (t_{j+1} − t) in Eq. (4).
-    pub gamma: T,
+    pub(crate) gamma: T,
     /// λ: the centre c_k = (1 − λ)t_k + λt_{k+1} of the kernel (the cited definition).
-    pub lambda: T,
+    pub(crate) lambda: T,
     /// σ: the exponent of |t − c| in Eq. (4).
-    pub sigma: T,
+    pub(crate) sigma: T,
 }
 
 impl<T: Real> ErbsParams<T> {
@@ -114,6 +116,27 @@ impl<T: Real> ErbsParams<T> {
             lambda,
             sigma,
         }
+    }
+
+    /// α.
+    pub fn alpha(&self) -> &T {
+        &self.alpha
+    }
+    /// β.
+    pub fn beta(&self) -> &T {
+        &self.beta
+    }
+    /// γ.
+    pub fn gamma(&self) -> &T {
+        &self.gamma
+    }
+    /// λ.
+    pub fn lambda(&self) -> &T {
+        &self.lambda
+    }
+    /// σ.
+    pub fn sigma(&self) -> &T {
+        &self.sigma
     }
 
     /// The same parameters in another number type, each mapped by `f`.
