@@ -174,7 +174,7 @@ proptest! {
             }
         }
         if let Some(d) = no_panic("Dubins", || shortest(&[0.0, 0.0, a], &[b, 1.0, 0.0], &lambda))? {
-            prop_assert!(d.total().is_finite() && d.lengths.iter().all(|l| l.is_finite()), "Some holding {:?}", d.lengths);
+            prop_assert!(d.total().is_finite() && d.lengths().iter().all(|l| l.is_finite()), "Some holding {:?}", d.lengths());
         }
     }
 

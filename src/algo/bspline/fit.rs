@@ -92,9 +92,9 @@ pub enum FitError {
 /// The spline space S_k with M control points: basis, Gram matrix, collocation.
 pub struct SplineSpace<T: Field> {
     /// The cardinal B-spline B_k of the basis.
-    pub basis: CardinalBSpline<T>,
+    pub(crate) basis: CardinalBSpline<T>,
     /// The number of control points (shifted basis functions) M.
-    pub controls: usize,
+    pub(crate) controls: usize,
     gram_entries: Vec<T>,
     ctx: T::Ctx,
 }
@@ -118,6 +118,16 @@ impl<T: Field> SplineSpace<T> {
             gram_entries: gram_entries(degree, ctx),
             ctx: ctx.clone(),
         })
+    }
+
+    /// The cardinal B-spline B_k of the basis.
+    pub fn basis(&self) -> &CardinalBSpline<T> {
+        &self.basis
+    }
+
+    /// The number of control points (shifted basis functions) M.
+    pub fn controls(&self) -> usize {
+        self.controls
     }
 
     /// The degree k of the basis.

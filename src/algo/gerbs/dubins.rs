@@ -55,17 +55,18 @@ pub const WORDS: [[Step; 3]; 6] = [
 /// The highest precision at which [`plan`] tries to decide a comparison.
 pub const PLAN_BITS_CAP: u32 = 4096;
 
-/// One Dubins word and its three segment lengths.
+/// One Dubins word and its three segment lengths (read through accessors; made by the
+/// planner, [`shortest`] and [`through_poses`], which decide the word exactly).
 #[derive(Clone, Debug)]
 pub struct DubinsPath<T> {
     /// The start pose (x, y, heading).
-    pub start: [T; 3],
+    pub(crate) start: [T; 3],
     /// The turning radius R.
-    pub radius: T,
+    pub(crate) radius: T,
     /// The three steps of the word (e.g. L S R).
-    pub word: [Step; 3],
+    pub(crate) word: [Step; 3],
     /// Segment lengths in path units (angle × R for arcs).
-    pub lengths: [T; 3],
+    pub(crate) lengths: [T; 3],
 }
 
 /// Why no Dubins path was chosen for a leg.
@@ -722,6 +723,26 @@ impl<T: Real> DubinsPath<T> {
     /// The total length of the three steps.
     pub fn total(&self) -> T {
         self.lengths[0].clone() + &self.lengths[1] + &self.lengths[2]
+    }
+
+    /// The start pose (x, y, heading).
+    pub fn start(&self) -> &[T; 3] {
+        &self.start
+    }
+
+    /// The turning radius R.
+    pub fn radius(&self) -> &T {
+        &self.radius
+    }
+
+    /// The three steps of the word (e.g. L S R).
+    pub fn word(&self) -> &[Step; 3] {
+        &self.word
+    }
+
+    /// The segment lengths in path units (angle × R for arcs).
+    pub fn lengths(&self) -> &[T; 3] {
+        &self.lengths
     }
 
     /// The word as letters, e.g. "LSR".

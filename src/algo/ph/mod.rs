@@ -65,13 +65,14 @@ pub fn product_weight<T: Field>(n: usize, i: usize, j: usize, ctx: &T::Ctx) -> T
     T::from_ratio(binom(n, i) * binom(n, j), binom(2 * n, i + j), ctx)
 }
 
-/// A spatial PH curve on ξ ∈ [0, 1]: its preimage control points and its start point.
+/// A spatial PH curve on ξ ∈ [0, 1]: its preimage control points and its start point (read
+/// through accessors; made by [`PhCurve::new`], which checks the preimage's degree).
 #[derive(Clone, Debug, PartialEq)]
 pub struct PhCurve<T> {
     /// A_0 … A_n.
-    pub preimage: Vec<Quat<T>>,
+    pub(crate) preimage: Vec<Quat<T>>,
     /// p(0) = p_0.
-    pub start: [T; 3],
+    pub(crate) start: [T; 3],
 }
 
 /// Position, frame and angular velocity of a PH curve at one parameter value.
@@ -98,6 +99,14 @@ impl<T: Field> PhCurve<T> {
             return Err(hermite::PhHermiteError::PreimageDegree(preimage.len()));
         }
         Ok(PhCurve { preimage, start })
+    }
+    /// The preimage control points A_0 … A_n.
+    pub fn preimage(&self) -> &[Quat<T>] {
+        &self.preimage
+    }
+    /// The start point p(0) = p_0.
+    pub fn start(&self) -> &[T; 3] {
+        &self.start
     }
     /// The same curve with every coefficient mapped by `f`: e.g. a curve computed in f64 as
     /// exact balls (`|x| Ball::from_f64(*x, &bits)`), to bound its own error in ball
