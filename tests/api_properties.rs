@@ -1,7 +1,8 @@
 //! A property test over the public API (issue 38): arbitrary f64 — NaN, ±∞, ±1e±300, −0,
 //! subnormals and ordinary values — and extreme counts into the public constructors and
-//! evaluators. A case fails on any panic and on any `Ok` holding NaN or ∞; an error is
-//! always an acceptable answer. The hand-picked calls of `hostile_api.rs` are its seeds.
+//! evaluators. A case fails on any panic, on any `Ok` holding NaN or ∞, and on a call that
+//! runs past [`HANG`]; an error is always an acceptable answer. The hand-picked calls of
+//! `hostile_api.rs` (each call the issue lists) are its seeds, and its strategies reach them.
 
 use proptest::prelude::*;
 use proptest::test_runner::RngSeed;
@@ -45,9 +46,24 @@ fn hostile_count() -> impl Strategy<Value = usize> {
     ]
 }
 
-/// `f` must not panic; the answer is returned for the finiteness checks.
+/// A call that runs this long has hung: the slowest call of these tests takes about a tenth
+/// of a second on two cores, and every long computation of the API has a work budget or a
+/// documented cost cap that refuses it first. Not a speed test: two orders of magnitude of
+/// room.
+const HANG: std::time::Duration = std::time::Duration::from_secs(20);
+
+/// `f` must not panic or hang; the answer is returned for the finiteness checks.
 fn no_panic<R>(what: &str, f: impl FnOnce() -> R) -> Result<R, TestCaseError> {
-    catch_unwind(AssertUnwindSafe(f)).map_err(|_| TestCaseError::fail(format!("{what} panicked")))
+    let start = std::time::Instant::now();
+    let r = catch_unwind(AssertUnwindSafe(f))
+        .map_err(|_| TestCaseError::fail(format!("{what} panicked")))?;
+    let took = start.elapsed();
+    if took > HANG {
+        return Err(TestCaseError::fail(format!(
+            "{what} ran {took:?}, past its budget"
+        )));
+    }
+    Ok(r)
 }
 
 fn all_finite<const D: usize>(points: &[[f64; D]]) -> bool {
@@ -93,7 +109,12 @@ proptest! {
     }
 
     #[test]
-    fn natural_splines_and_marins_knots(a in hostile_f64(), b in hostile_f64(), t in hostile_f64()) {
+    fn natural_splines_and_marins_knots(a in hostile_f64(), b in hostile_f64(), t in hostile_f64(), count in hostile_count()) {
+        // Many points (3000 took 106 s before the cap): refused at once, or a converged result.
+        let many: Vec<[f64; 2]> = (0..count.min(3000)).map(|i| [i as f64, ((i * 7) % 13) as f64]).collect();
+        if let Ok(m) = no_panic("parametrize many", || parametrize(&many, &ParametrizeOptions::default()))? {
+            prop_assert!(m.knots.iter().all(|k| k.is_finite()), "Ok holding {:?}", m.knots);
+        }
         let points = [[0.0, 0.0], [a, 1.0], [2.0, b], [3.0, 0.5]];
         if let Ok(c) = no_panic("NaturalSplineCurve::new", || NaturalSplineCurve::new(vec![0.0, 1.0, a.abs() + 2.0, 9.0], &points))? {
             if let Ok(p) = no_panic("point", || c.point(&t))? {
