@@ -178,16 +178,8 @@ pub fn real_in<T: crate::scalar::Real>(
 /// A number, or a string holding a number or a constant expression (`"pi/8"`), at `path`.
 pub fn real(v: &Value, path: &str) -> Result<RealInput, InputError> {
     match v {
-        Value::String(text) if parse_rational(text).is_err() => {
-            let e = crate::curve::expr::parse_expr(text)
-                .map_err(|e| InputError(format!("field \"{path}\": {e}")))?;
-            if e.mentions_t() {
-                return fail(format!(
-                    "field \"{path}\": expected a constant, found an expression in t"
-                ));
-            }
-            Ok(RealInput::Expr(e))
-        }
+        Value::String(text) if parse_rational(text).is_err() => RealInput::parse(text)
+            .map_err(|message| InputError(format!("field \"{path}\": {message}"))),
         _ => number(v, path).map(RealInput::Exact),
     }
 }

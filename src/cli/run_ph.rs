@@ -188,6 +188,16 @@ fn read_curve(
     Ok((curve, a, b))
 }
 
+/// How far a `run` proves a conversion error: to the default relative width, within a box
+/// budget, stopping at the run's search deadline (the bounds found by then are printed).
+fn run_proof() -> ProofOptions {
+    ProofOptions {
+        max_boxes: 4_000_000,
+        deadline: Some(budget::search_deadline()),
+        ..ProofOptions::default()
+    }
+}
+
 /// Check that the curve is finite with its derivatives at the ends of every segment; return
 /// its scale, the largest |coordinate| there, against which a conversion error is noise.
 fn check_finite<T: Real, C: Curve<T>>(
@@ -343,16 +353,8 @@ impl PhodcosJob {
         // alone: it is searched on the conversion before the roll, whose balls the chained
         // rotations do not widen; the printed preimages are that conversion rolled.
         let mut pw = convert(&c, (&a, &b), n, 4, &free, false).map_err(ph_error)?;
-        let e = proven_error(
-            &c,
-            &pw,
-            &ProofOptions {
-                max_boxes: 4_000_000,
-                deadline: Some(budget::search_deadline()),
-                ..ProofOptions::default()
-            },
-        )
-        .map_err(|e| RunError::Internal(e.to_string()))?;
+        let e =
+            proven_error(&c, &pw, &run_proof()).map_err(|e| RunError::Internal(e.to_string()))?;
         pw.align_roll();
         Ok(Out::object(vec![
             ("segments", Out::Int(n as i64)),
@@ -529,16 +531,8 @@ impl ProvenJob for ConvergenceJob {
             check_finite(&c, &a, &b, segments)?;
             // The error depends on positions only, which the roll correction leaves alone.
             let pw = convert(&c, (&a, &b), segments, 4, &free, false).map_err(ph_error)?;
-            let e = proven_error(
-                &c,
-                &pw,
-                &ProofOptions {
-                    max_boxes: 4_000_000,
-                    deadline: Some(budget::search_deadline()),
-                    ..ProofOptions::default()
-                },
-            )
-            .map_err(|e| RunError::Internal(e.to_string()))?;
+            let e = proven_error(&c, &pw, &run_proof())
+                .map_err(|e| RunError::Internal(e.to_string()))?;
             Ok(Out::MaybeZero(
                 Ball::from_bounds(&e.lower, &e.upper),
                 Ball::zero_in(&bits),

@@ -145,6 +145,23 @@ impl From<i64> for ExactReal {
 }
 
 impl ExactReal {
+    /// A number read exactly ([`parse_rational`]: `"0.25"`, `"1/3"`, `"1e-3"`), else a constant
+    /// expression in the curve language (`"4*pi"`, `"sqrt(2)/2"`).
+    ///
+    /// # Errors
+    /// The parser's message for text that is neither, or "expected a constant, found an
+    /// expression in t" for an expression that mentions t.
+    pub fn parse(text: &str) -> Result<Self, String> {
+        if let Ok(q) = parse_rational(text) {
+            return Ok(ExactReal::Exact(q));
+        }
+        let e = parse_expr(text).map_err(|e| e.to_string())?;
+        if e.mentions_t() {
+            return Err("expected a constant, found an expression in t".into());
+        }
+        Ok(ExactReal::Expr(e))
+    }
+
     /// A double taken exactly (every finite double is a rational); `None` for NaN and ±∞.
     pub fn from_f64(x: f64) -> Option<Self> {
         BigRational::from_float(x).map(ExactReal::Exact)

@@ -15,9 +15,8 @@
 //! Ends that agree to 4096 bits (`pi` and `4*atan(1)`) are refused as undecided rather than
 //! ordered by a rounding.
 
-use super::expr::{parse_expr, ExactReal, Expr};
+use super::expr::ExactReal;
 use crate::scalar::ball::Ball;
-use crate::scalar::parse::parse_rational;
 use crate::scalar::{BigRational, Field, Float, Real};
 
 /// The precisions at which a < b is tried, in bits.
@@ -173,31 +172,23 @@ fn decide_less(a: &ExactReal, b: &ExactReal) -> Result<bool, IntervalError> {
     Err(IntervalError::Undecided)
 }
 
-/// One end from its text: a number read exactly, else a constant expression.
+/// One end from its text ([`ExactReal::parse`]).
 fn parse_end(text: &str, end: &'static str) -> Result<ExactReal, IntervalError> {
-    if let Ok(q) = parse_rational(text) {
-        return Ok(ExactReal::Exact(q));
-    }
-    let failed = |message: String| IntervalError::Parse {
+    ExactReal::parse(text).map_err(|message| IntervalError::Parse {
         end,
         text: text.to_string(),
         message,
-    };
-    let e: Expr = parse_expr(text).map_err(|e| failed(e.to_string()))?;
-    if e.mentions_t() {
-        return Err(failed(
-            "expected a constant, found an expression in t".into(),
-        ));
-    }
-    Ok(ExactReal::Expr(e))
+    })
 }
 
 impl std::fmt::Display for Interval {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        let (a, b) = self.to_f64();
         match self.rational_ends() {
             Some((a, b)) => write!(f, "[{a}, {b}]"),
-            None => write!(f, "[{a}, {b}] (to the nearest double)"),
+            None => {
+                let (a, b) = self.to_f64();
+                write!(f, "[{a}, {b}] (to the nearest double)")
+            }
         }
     }
 }

@@ -25,6 +25,7 @@
 use super::path::tangents;
 use super::GerbsError;
 use crate::curve::expr::ExactReal;
+use crate::curve::parametric::check_domain;
 use crate::scalar::ball::Ball;
 use crate::scalar::{BigRational, Field, Real};
 use rug::Float;
@@ -759,7 +760,7 @@ impl<T: Real> DubinsPath<T> {
     pub fn pose_at(&self, s: &T) -> Result<[T; 3], DubinsError> {
         let zero = T::zero_in(&s.ctx());
         let length = self.total();
-        if !s.is_finite() || s.decide_lt(&zero) == Some(true) || length.decide_lt(s) == Some(true) {
+        if check_domain(s, (&zero, &length)).is_err() {
             return Err(DubinsError::Argument {
                 field: "s",
                 message: format!(

@@ -814,7 +814,7 @@ impl<T: Real, B: Blend<T>> GerbsPath<T, B> {
         let (a, b) = self.check_interval(i)?;
         // Provably outside only (decided without counting an undecided comparison): a ball
         // that touches the interval is evaluated there.
-        if !t.is_finite() || t.decide_lt(a) == Some(true) || b.decide_lt(t) == Some(true) {
+        if check_domain(t, (a, b)).is_err() {
             return Err(GerbsError::Parameter {
                 field: "t",
                 message: format!("not finite or outside knot interval {i}"),
