@@ -15,7 +15,12 @@ use super::input::{fail, RunError};
 use super::output::Out;
 use super::Rendered;
 use crate::scalar::ball::{tally, Ball};
-use crate::scalar::{BigRational, Field, Real, ScalarKind};
+use crate::scalar::{Field, Real, ScalarKind};
+
+/// The exact number type of `--scalar rational`: GMP's rationals, 20–30× faster than
+/// num-rational's [`BigRational`](crate::scalar::BigRational) where fractions grow (both are
+/// a [`Field`] and give the same values; `docs/benchmarks.md`).
+pub type Exact = rug::Rational;
 
 /// A computation that needs only `+ − × ÷`: runs in f64, rationals, MPFR and balls.
 pub trait FieldJob {
@@ -159,7 +164,7 @@ pub fn run_field(job: &impl FieldJob, scalar: ScalarKind) -> Result<Rendered, Ru
         ScalarKind::F64 => f64_output(job.run::<f64>(&())?, job.checks_f64(), |bits| {
             job.run::<Ball>(&bits)
         }),
-        ScalarKind::Rational => Ok(Rendered::plain(named(job.run::<BigRational>(&())?, scalar))),
+        ScalarKind::Rational => Ok(Rendered::plain(named(job.run::<Exact>(&())?, scalar))),
         ScalarKind::Mpfr(bits) => proven_digits(scalar, || job.run::<Ball>(&bits)),
         ScalarKind::Ball(bits) => proven(scalar, || job.run::<Ball>(&bits)),
     }
@@ -171,15 +176,15 @@ pub fn run_real(
     scalar: ScalarKind,
     rational_refusal: &str,
 ) -> Result<Rendered, RunError> {
-    run_real_or_exact(job, scalar, || fail(rational_refusal))
+    run_real_or_exact::<Exact>(job, scalar, || fail(rational_refusal))
 }
 
 /// `job` in f64, MPFR or balls, and for `--scalar rational` the computation's exact form
 /// `exact`, for the inputs that have one (it returns the refusal for the others).
-pub fn run_real_or_exact(
+pub fn run_real_or_exact<E: Field>(
     job: &impl RealJob,
     scalar: ScalarKind,
-    exact: impl FnOnce() -> Result<Out<BigRational>, RunError>,
+    exact: impl FnOnce() -> Result<Out<E>, RunError>,
 ) -> Result<Rendered, RunError> {
     match scalar {
         ScalarKind::F64 => f64_output(job.run::<f64>(&())?, job.checks_f64(), |bits| {

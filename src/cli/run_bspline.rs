@@ -1,7 +1,7 @@
 //! `run bspline-basis`, `bspline-gram`, `spline-fit` and `bang-bang`: the JSON shapes that `docs/commands.md` documents.
 
 use super::budget::Rates;
-use super::dispatch::{run_field, run_real, FieldJob, RealJob};
+use super::dispatch::{run_field, run_real, Exact, FieldJob, RealJob};
 use super::input::{self, fail, InputError, RunError};
 use super::output::Out;
 use super::Rendered;
@@ -32,7 +32,7 @@ fn degree(doc: &Map<String, Value>, minimum: usize) -> Result<usize, InputError>
 pub fn run_basis(doc: &Map<String, Value>) -> Result<Rendered, RunError> {
     input::only_fields(doc, &["degree"])?;
     let k = degree(doc, 0)?;
-    let b = CardinalBSpline::<BigRational>::from_algorithm1(k, &());
+    let b = CardinalBSpline::<Exact>::from_algorithm1(k, &());
     let pieces = b
         .pieces()
         .iter()
@@ -50,7 +50,7 @@ pub fn run_gram(doc: &Map<String, Value>) -> Result<Rendered, RunError> {
     let k = degree(doc, 1)?;
     Ok(Rendered::plain(Out::object(vec![
         ("degree", Out::Int(k as i64)),
-        ("entries", Out::nums(gram_entries::<BigRational>(k, &()))),
+        ("entries", Out::nums(gram_entries::<Exact>(k, &()))),
     ])))
 }
 

@@ -41,15 +41,15 @@ impl<T: Field> CardinalBSpline<T> {
                 .map(|j| {
                     if j == 0 {
                         // (1 − s)/k · N_{0,k−1}
-                        Poly::linear(i(1), i(-1)).mul(&prev[0]).scale(&inv_k)
+                        Poly::linear(i(1), i(-1)).mul(&prev[0]).times(&inv_k)
                     } else if j == kk {
                         // s/k · N_{k−1,k−1}
-                        Poly::linear(i(0), i(1)).mul(&prev[kk - 1]).scale(&inv_k)
+                        Poly::linear(i(0), i(1)).mul(&prev[kk - 1]).times(&inv_k)
                     } else {
                         // (k − j + s)/k · N_{j−1,k−1} + (1 + j − s)/k · N_{j,k−1}
                         let left = Poly::linear(i((kk - j) as i64), i(1)).mul(&prev[j - 1]);
                         let right = Poly::linear(i(1 + j as i64), i(-1)).mul(&prev[j]);
-                        left.add(&right).scale(&inv_k)
+                        left.plus(&right).times(&inv_k)
                     }
                 })
                 .collect();

@@ -82,6 +82,26 @@ impl<T: Field> Poly<T> {
         Poly::new(c)
     }
 
+    /// The sum, reusing this polynomial's storage (the same operations as [`Poly::add`]).
+    pub fn plus(mut self, other: &Poly<T>) -> Poly<T> {
+        if self.coeffs.len() < other.coeffs.len() {
+            return other.add(&self);
+        }
+        for (a, b) in self.coeffs.iter_mut().zip(&other.coeffs) {
+            *a += b;
+        }
+        Poly::new(self.coeffs)
+    }
+
+    /// The polynomial times a scalar, in its own storage (the same operations as
+    /// [`Poly::scale`]).
+    pub fn times(mut self, s: &T) -> Poly<T> {
+        for c in &mut self.coeffs {
+            *c *= s;
+        }
+        Poly::new(self.coeffs)
+    }
+
     /// The polynomial times a scalar.
     pub fn scale(&self, s: &T) -> Poly<T> {
         Poly::new(self.coeffs.iter().map(|c| c.clone() * s).collect())
