@@ -15,12 +15,7 @@ use super::input::{fail, RunError};
 use super::output::Out;
 use super::Rendered;
 use crate::scalar::ball::{tally, Ball};
-use crate::scalar::{Field, Real, ScalarKind};
-
-/// The exact number type of `--scalar rational`: GMP's rationals, 20–30× faster than
-/// num-rational's [`BigRational`](crate::scalar::BigRational) where fractions grow (both are
-/// a [`Field`] and give the same values; `docs/benchmarks.md`).
-pub type Exact = rug::Rational;
+use crate::scalar::{Exact, Field, Real, ScalarKind};
 
 /// A computation that needs only `+ − × ÷`: runs in f64, rationals, MPFR and balls.
 pub trait FieldJob {

@@ -4,8 +4,8 @@
 //! built with `arbitrary_precision`, so a JSON number keeps its decimal text and `0.1` means
 //! 1/10, not the double nearest to it).
 
-use crate::scalar::parse::parse_rational;
-use crate::scalar::BigRational;
+use crate::scalar::parse::parse_exact;
+use crate::scalar::Exact;
 use serde_json::{Map, Value};
 
 /// A user-facing input error: one line, naming the field.
@@ -143,11 +143,12 @@ pub fn only_fields(obj: &Map<String, Value>, known: &[&str]) -> Result<(), Input
     }
 }
 
-/// A number (JSON number or numeric string) at `path`, read exactly.
-pub fn number(v: &Value, path: &str) -> Result<BigRational, InputError> {
+/// A number (JSON number or numeric string) at `path`, read exactly. The path is any
+/// `Display` (`format_args!("at[{i}]")`), formatted only for an error message.
+pub fn number(v: &Value, path: impl std::fmt::Display) -> Result<Exact, InputError> {
     let text = match v {
-        Value::Number(n) => n.to_string(),
-        Value::String(s) => s.clone(),
+        Value::Number(n) => n.as_str(),
+        Value::String(s) => s.as_str(),
         other => {
             return fail(format!(
                 "field \"{path}\": expected a number or a numeric string, found {}",
@@ -155,7 +156,7 @@ pub fn number(v: &Value, path: &str) -> Result<BigRational, InputError> {
             ))
         }
     };
-    parse_rational(&text).map_err(|e| InputError(format!("field \"{path}\": {e}")))
+    parse_exact(text).map_err(|e| InputError(format!("field \"{path}\": {e}")))
 }
 
 /// A real input: an exact number, or a constant expression such as `"pi/8"` (the curve
@@ -178,9 +179,9 @@ pub fn real_in<T: crate::scalar::Real>(
 /// A number, or a string holding a number or a constant expression (`"pi/8"`), at `path`.
 pub fn real(v: &Value, path: &str) -> Result<RealInput, InputError> {
     match v {
-        Value::String(text) if parse_rational(text).is_err() => RealInput::parse(text)
+        Value::String(text) if parse_exact(text).is_err() => RealInput::parse(text)
             .map_err(|message| InputError(format!("field \"{path}\": {message}"))),
-        _ => number(v, path).map(RealInput::Exact),
+        _ => number(v, path).map(|q| RealInput::Exact(crate::scalar::big_rational(&q))),
     }
 }
 
@@ -214,7 +215,7 @@ pub fn choice<T: Copy>(
 }
 
 /// A point [x_1, …, x_N] of exactly N numbers at `path`.
-pub fn point<const N: usize>(v: &Value, path: &str) -> Result<[BigRational; N], InputError> {
+pub fn point<const N: usize>(v: &Value, path: &str) -> Result<[Exact; N], InputError> {
     let items = array(v, path)?;
     if items.len() != N {
         let names = ["x", "y", "z"];
@@ -230,7 +231,7 @@ pub fn point<const N: usize>(v: &Value, path: &str) -> Result<[BigRational; N], 
     }
     let mut out = Vec::with_capacity(N);
     for (k, x) in items.iter().enumerate() {
-        out.push(number(x, &format!("{path}[{k}]"))?);
+        out.push(number(x, format_args!("{path}[{k}]"))?);
     }
     out.try_into()
         .map_err(|_| InputError(format!("internal: field \"{path}\" has {N} entries")))
@@ -239,7 +240,7 @@ pub fn point<const N: usize>(v: &Value, path: &str) -> Result<[BigRational; N], 
 /// A non-negative whole number at `path`, at most `max`.
 pub fn count(v: &Value, path: &str, max: usize) -> Result<usize, InputError> {
     let q = number(v, path)?;
-    let n = crate::scalar::parse::denotes_integer(&q)
+    let n = crate::scalar::parse::exact_integer(&q)
         .filter(|n| *n >= 0)
         .ok_or_else(|| {
             InputError(format!(
@@ -265,7 +266,7 @@ pub fn array<'a>(v: &'a Value, path: &str) -> Result<&'a Vec<Value>, InputError>
 }
 
 /// An interval [a, b] with b > a at `path`.
-pub fn interval(v: &Value, path: &str) -> Result<(BigRational, BigRational), InputError> {
+pub fn interval(v: &Value, path: &str) -> Result<(Exact, Exact), InputError> {
     let items = array(v, path)?;
     if items.len() != 2 {
         return fail(format!(
@@ -273,8 +274,8 @@ pub fn interval(v: &Value, path: &str) -> Result<(BigRational, BigRational), Inp
             items.len()
         ));
     }
-    let a = number(&items[0], &format!("{path}[0]"))?;
-    let b = number(&items[1], &format!("{path}[1]"))?;
+    let a = number(&items[0], format_args!("{path}[0]"))?;
+    let b = number(&items[1], format_args!("{path}[1]"))?;
     if b <= a {
         return fail(format!(
             "field \"{path}\": t1 = {b} must be greater than t0 = {a}"
@@ -286,13 +287,13 @@ pub fn interval(v: &Value, path: &str) -> Result<(BigRational, BigRational), Inp
 /// A value that is either a number or a point (an array of numbers).
 #[derive(Clone, Debug, PartialEq)]
 pub enum NumOrPoint {
-    Number(BigRational),
-    Point(Vec<BigRational>),
+    Number(Exact),
+    Point(Vec<Exact>),
 }
 
 /// A list whose entries are all numbers or all points of one dimension d ≥ 1. Returns the
 /// entries as points (a number is a point of dimension 1) and whether they were points.
-pub fn uniform_values(v: &Value, path: &str) -> Result<(Vec<Vec<BigRational>>, bool), InputError> {
+pub fn uniform_values(v: &Value, path: &str) -> Result<(Vec<Vec<Exact>>, bool), InputError> {
     let items = array(v, path)?;
     if items.is_empty() {
         return fail(format!(
@@ -302,7 +303,7 @@ pub fn uniform_values(v: &Value, path: &str) -> Result<(Vec<Vec<BigRational>>, b
     let mut out = Vec::with_capacity(items.len());
     let mut shape: Option<Option<usize>> = None; // Some(None): numbers, Some(Some(d)): points
     for (i, item) in items.iter().enumerate() {
-        let p = format!("{path}[{i}]");
+        let p = format_args!("{path}[{i}]");
         let value = match item {
             Value::Array(coords) => {
                 if coords.is_empty() {
@@ -313,11 +314,11 @@ pub fn uniform_values(v: &Value, path: &str) -> Result<(Vec<Vec<BigRational>>, b
                 let c = coords
                     .iter()
                     .enumerate()
-                    .map(|(k, x)| number(x, &format!("{p}[{k}]")))
+                    .map(|(k, x)| number(x, format_args!("{path}[{i}][{k}]")))
                     .collect::<Result<Vec<_>, _>>()?;
                 NumOrPoint::Point(c)
             }
-            other => NumOrPoint::Number(number(other, &p)?),
+            other => NumOrPoint::Number(number(other, p)?),
         };
         let this = match &value {
             NumOrPoint::Number(_) => None,
@@ -355,18 +356,9 @@ mod tests {
     #[test]
     fn numbers_are_exact_from_json_and_strings() {
         let doc = parse_document(r#"{"a": 0.1, "b": "3/5", "c": 1e-3}"#).unwrap();
-        assert_eq!(
-            number(&doc["a"], "a").unwrap(),
-            BigRational::new(1.into(), 10.into())
-        );
-        assert_eq!(
-            number(&doc["b"], "b").unwrap(),
-            BigRational::new(3.into(), 5.into())
-        );
-        assert_eq!(
-            number(&doc["c"], "c").unwrap(),
-            BigRational::new(1.into(), 1000.into())
-        );
+        assert_eq!(number(&doc["a"], "a").unwrap(), Exact::from((1, 10)));
+        assert_eq!(number(&doc["b"], "b").unwrap(), Exact::from((3, 5)));
+        assert_eq!(number(&doc["c"], "c").unwrap(), Exact::from((1, 1000)));
     }
 
     #[test]

@@ -460,15 +460,47 @@ fn says_not_finite(text: &str) -> bool {
 /// The last check before anything is printed, whatever path built the output (typed
 /// [`Out`] trees or JSON assembled directly): a non-finite result is never printed.
 pub fn check_finite(value: &Value, path: &str, scalar: &str) -> Result<(), RunError> {
+    let mut steps = Vec::new();
+    let Some(text) = first_not_finite(value, &mut steps) else {
+        return Ok(());
+    };
+    // The path is spelt out only for the refusal: no string per number on the way.
+    let mut at = path.to_string();
+    for step in steps {
+        at = match step {
+            Step::Index(i) => format!("{at}[{i}]"),
+            Step::Key(k) => field_path(&at, k),
+        };
+    }
+    Err(not_finite(&at, text, scalar))
+}
+
+/// One step from a JSON node to a child.
+enum Step<'a> {
+    Index(usize),
+    Key(&'a str),
+}
+
+/// The first string of `value` that says NaN or an infinity, with the steps to it in `steps`.
+fn first_not_finite<'a>(value: &'a Value, steps: &mut Vec<Step<'a>>) -> Option<&'a str> {
     match value {
-        Value::String(s) if says_not_finite(s) => Err(not_finite(path, s, scalar)),
-        Value::Array(items) => items
-            .iter()
-            .enumerate()
-            .try_for_each(|(i, v)| check_finite(v, &format!("{path}[{i}]"), scalar)),
-        Value::Object(map) => map
-            .iter()
-            .try_for_each(|(k, v)| check_finite(v, &field_path(path, k), scalar)),
-        _ => Ok(()),
+        Value::String(s) if says_not_finite(s) => Some(s),
+        Value::Array(items) => items.iter().enumerate().find_map(|(i, v)| {
+            steps.push(Step::Index(i));
+            let found = first_not_finite(v, steps);
+            if found.is_none() {
+                steps.pop();
+            }
+            found
+        }),
+        Value::Object(map) => map.iter().find_map(|(k, v)| {
+            steps.push(Step::Key(k));
+            let found = first_not_finite(v, steps);
+            if found.is_none() {
+                steps.pop();
+            }
+            found
+        }),
+        _ => None,
     }
 }

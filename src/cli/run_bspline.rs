@@ -1,7 +1,7 @@
 //! `run bspline-basis`, `bspline-gram`, `spline-fit` and `bang-bang`: the JSON shapes that `docs/commands.md` documents.
 
 use super::budget::Rates;
-use super::dispatch::{run_field, run_real, Exact, FieldJob, RealJob};
+use super::dispatch::{run_field, run_real, FieldJob, RealJob};
 use super::input::{self, fail, InputError, RunError};
 use super::output::Out;
 use super::Rendered;
@@ -11,7 +11,7 @@ use crate::algo::bspline::gram::gram_entries;
 use crate::algo::bspline::CardinalBSpline;
 use crate::scalar::ball::Ball;
 use crate::scalar::qsqrt2::QSqrt2;
-use crate::scalar::{BigRational, Field, Real, ScalarKind};
+use crate::scalar::{Exact, Field, Real, ScalarKind};
 use serde_json::{Map, Value};
 
 /// The highest degree accepted by the basis and Gram commands (exact polynomials of degree k).
@@ -57,10 +57,10 @@ pub fn run_gram(doc: &Map<String, Value>) -> Result<Rendered, RunError> {
 struct FitInput {
     degree: usize,
     controls: usize,
-    times: Vec<BigRational>,
-    values: Vec<Vec<BigRational>>,
+    times: Vec<Exact>,
+    values: Vec<Vec<Exact>>,
     is_point: bool,
-    weights: Option<Vec<BigRational>>,
+    weights: Option<Vec<Exact>>,
 }
 
 fn read_fit(doc: &Map<String, Value>) -> Result<FitInput, InputError> {
@@ -71,7 +71,7 @@ fn read_fit(doc: &Map<String, Value>) -> Result<FitInput, InputError> {
     let times = times_value
         .iter()
         .enumerate()
-        .map(|(i, t)| input::number(t, &format!("times[{i}]")))
+        .map(|(i, t)| input::number(t, format_args!("times[{i}]")))
         .collect::<Result<Vec<_>, _>>()?;
     let (values, is_point) = input::uniform_values(input::field(doc, "values")?, "values")?;
     if times.is_empty() {
@@ -91,7 +91,7 @@ fn read_fit(doc: &Map<String, Value>) -> Result<FitInput, InputError> {
             let parsed = list
                 .iter()
                 .enumerate()
-                .map(|(i, x)| input::number(x, &format!("weights[{i}]")))
+                .map(|(i, x)| input::number(x, format_args!("weights[{i}]")))
                 .collect::<Result<Vec<_>, _>>()?;
             if parsed.len() != times.len() {
                 return fail(format!(
@@ -100,10 +100,7 @@ fn read_fit(doc: &Map<String, Value>) -> Result<FitInput, InputError> {
                     times.len()
                 ));
             }
-            if let Some(i) = parsed
-                .iter()
-                .position(|w| *w < BigRational::from_integer(0.into()))
-            {
+            if let Some(i) = parsed.iter().position(|w| w.cmp0().is_lt()) {
                 return fail(format!(
                     "field \"weights[{i}]\": a weight must not be negative"
                 ));
@@ -114,11 +111,8 @@ fn read_fit(doc: &Map<String, Value>) -> Result<FitInput, InputError> {
     if weights.is_none() && times.len() > controls {
         return fail(format!("field \"controls\": {controls} control points cannot interpolate {} data (M must be at least N)", times.len()));
     }
-    let end = BigRational::from_integer(((controls + degree) as i64).into());
-    if let Some(i) = times
-        .iter()
-        .position(|t| *t <= BigRational::from_integer(0.into()) || *t >= end)
-    {
+    let end = Exact::from(controls + degree);
+    if let Some(i) = times.iter().position(|t| t.cmp0().is_le() || *t >= end) {
         return fail(format!("field \"times[{i}]\": {} lies outside the support (0, {end}) of the spline, where every basis function vanishes", times[i]));
     }
     if weights.is_none() {
@@ -137,13 +131,13 @@ fn read_fit(doc: &Map<String, Value>) -> Result<FitInput, InputError> {
 }
 
 fn fit_in<T: Field>(data: &FitInput, ctx: &T::Ctx) -> Result<Out<T>, InputError> {
-    let conv = |q: &BigRational| T::from_rational(q, ctx);
+    let conv = |q: &Exact| T::from_exact(q, ctx);
     let space = SplineSpace::<T>::new(data.degree, data.controls, ctx)
         .map_err(|e| InputError(format!("field \"degree\": {e}")))?;
-    let collocation = SplineSpace::<BigRational>::new(data.degree, data.controls, &())
+    let collocation = SplineSpace::<Exact>::new(data.degree, data.controls, &())
         .map_err(|e| InputError(format!("field \"degree\": {e}")))?
         .collocation_of(&data.times)
-        .map(|q| T::from_rational(q, ctx));
+        .map(|q| T::from_exact(q, ctx));
     let weights: Option<Vec<T>> = data.weights.as_ref().map(|w| w.iter().map(conv).collect());
     let dims = data.values[0].len();
     let mut per_coordinate = Vec::with_capacity(dims);
@@ -258,7 +252,7 @@ pub fn run_bang_bang(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Ren
             "the exact switching times failed their check",
         ));
     };
-    let exact_u = bang_bang::amplitude(&exact_times, &QSqrt2::from_rational(&xi, &()));
+    let exact_u = bang_bang::amplitude(&exact_times, &QSqrt2::from_exact(&xi, &()));
     let exact = Out::object(vec![
         ("switching_times", Out::nums(exact_times.to_vec())),
         ("amplitude", Out::Num(exact_u)),
@@ -291,7 +285,7 @@ fn bounds_of(exact: &Out<QSqrt2>, bits: u32) -> Out<Ball> {
 /// The switching times by Newton's method and the amplitude for x(2) = ξ, in one number type;
 /// in balls, the exact values in Q(√2) enclosed.
 struct BangBangJob {
-    xi: BigRational,
+    xi: Exact,
     exact: Out<QSqrt2>,
 }
 
@@ -299,7 +293,7 @@ impl RealJob for BangBangJob {
     fn run<T: Real>(&self, ctx: &T::Ctx) -> Result<Out<T>, RunError> {
         // The switching times do not depend on ξ: a failure here is the method's, not the input's.
         let t = bang_bang::switching_times::<T>(ctx).map_err(RunError::internal)?;
-        let u = bang_bang::amplitude(&t, &T::from_rational(&self.xi, ctx));
+        let u = bang_bang::amplitude(&t, &T::from_exact(&self.xi, ctx));
         Ok(Out::object(vec![
             ("switching_times", Out::nums(t.to_vec())),
             ("amplitude", Out::Num(u)),

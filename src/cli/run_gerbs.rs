@@ -26,7 +26,7 @@ use crate::algo::gerbs::quadrature::default_tolerance;
 use crate::algo::gerbs::{basis_derivatives_located, Blend, GerbsError, Knots, Located, Side};
 use crate::curve::integral::IntegralOptions;
 use crate::scalar::ball::Ball;
-use crate::scalar::{BigRational, Field, Real, ScalarKind};
+use crate::scalar::{big_rational, mpfr_rational, BigRational, Exact, Field, Real, ScalarKind};
 use serde_json::{Map, Value};
 
 /// The highest derivative order `run gerbs-basis` accepts.
@@ -187,7 +187,10 @@ fn erbs_params(params: &Map<String, Value>, nonempty: &[bool]) -> Result<BasisPa
         let path = format!("params.{name}");
         match params.get(*name) {
             None => {
-                single.push(RealInput::Exact(BigRational::new(n.into(), d.into())));
+                single.push(RealInput::Exact(crate::scalar::BigRational::new(
+                    n.into(),
+                    d.into(),
+                )));
                 columns.push(None);
             }
             Some(Value::Array(items)) => {
@@ -237,7 +240,9 @@ fn array5(v: Vec<RealInput>) -> [RealInput; 5] {
     let mut it = v.into_iter();
     std::array::from_fn(|_| {
         it.next()
-            .unwrap_or(RealInput::Exact(BigRational::from_integer(0.into())))
+            .unwrap_or(RealInput::Exact(crate::scalar::BigRational::from_integer(
+                0.into(),
+            )))
     })
 }
 
@@ -319,12 +324,12 @@ impl BasisParams {
 }
 
 /// A list of knots read exactly and checked (`field "knots": …`).
-fn knots(doc: &Map<String, Value>) -> Result<Knots<BigRational>, InputError> {
+fn knots(doc: &Map<String, Value>) -> Result<Knots<Exact>, InputError> {
     let items = input::array(input::field(doc, "knots")?, "knots")?;
     let t = items
         .iter()
         .enumerate()
-        .map(|(k, v)| input::number(v, &format!("knots[{k}]")))
+        .map(|(k, v)| input::number(v, format_args!("knots[{k}]")))
         .collect::<Result<Vec<_>, _>>()?;
     Knots::new(t).map_err(gerbs_error)
 }
@@ -344,9 +349,9 @@ fn side(doc: &Map<String, Value>) -> Result<Side, InputError> {
 
 /// What `run gerbs-basis` asks for.
 struct BasisJob {
-    knots: Knots<BigRational>,
+    knots: Knots<Exact>,
     params: BasisParams,
-    at: Vec<BigRational>,
+    at: Vec<Exact>,
     derivatives: usize,
     side: Side,
 }
@@ -368,10 +373,10 @@ impl BasisJob {
             };
             // The distances to the interval's ends exact, rounded once.
             let at = Located {
-                t: T::from_rational(q, &ctx),
+                t: T::from_exact(q, &ctx),
                 interval: j,
-                after_start: T::from_rational(&(q.clone() - self.knots.at(j)), &ctx),
-                before_end: T::from_rational(&(self.knots.at(j + 1).clone() - q), &ctx),
+                after_start: T::from_exact(&(q.clone() - self.knots.at(j)), &ctx),
+                before_end: T::from_exact(&(self.knots.at(j + 1).clone() - q), &ctx),
             };
             let mut row = Vec::new();
             for (b, derivatives) in basis_derivatives_located(knots, blend, &at, self.derivatives)
@@ -407,7 +412,7 @@ impl BasisJob {
     /// Whether derivative `k` of the ERBS does not exist at the exact point q of interval j:
     /// q is exactly the centre c_j, 2σ is not an even integer (Ψ holds |t − c|^{2σ}) and
     /// k − 1 ≥ 2σ. Decided only on rational parameters; `false` otherwise (and for a BFBS).
-    fn derivative_missing(&self, q: &BigRational, j: usize, k: usize) -> bool {
+    fn derivative_missing(&self, q: &Exact, j: usize, k: usize) -> bool {
         let BasisParams::Erbs { sets, centre } = &self.params else {
             return false;
         };
@@ -419,17 +424,22 @@ impl BasisJob {
         let (RealInput::Exact(lambda), RealInput::Exact(sigma)) = (&set[3], &set[4]) else {
             return false;
         };
+        let (lambda, sigma) = (mpfr_rational(lambda), mpfr_rational(sigma));
         let (a, b) = (self.knots.at(j), self.knots.at(j + 1));
-        let one = BigRational::from_integer(1.into());
+        let left = (Exact::from(1) - &lambda) * a;
+        let right = lambda * b;
         let c = match centre {
-            CentreReading::Cited => (one - lambda) * a + lambda * b,
-            CentreReading::AsPrinted => (one - lambda) * a - lambda * b,
+            CentreReading::Cited => left + right,
+            CentreReading::AsPrinted => left - right,
         };
-        let two_sigma = sigma * BigRational::from_integer(2.into());
-        let even =
-            two_sigma.is_integer() && num_traits::Zero::is_zero(&(two_sigma.to_integer() % 2u32));
+        let two_sigma = sigma * Exact::from(2);
+        let even = *two_sigma.denom() == 1 && two_sigma.numer().is_even();
         // B^(k) = Ψ^(k−1)/S, and the m-th derivative of |t − c|^{2σ} exists at c iff m < 2σ.
-        *q == c && !even && k >= 1 && BigRational::from_integer((k - 1).into()) >= two_sigma
+        // (2σ is rational: m ≥ 2σ is not m + 1 > 2σ.)
+        k >= 1 && {
+            let m = k - 1;
+            *q == c && !even && two_sigma <= m
+        }
     }
 
     fn knots_in<T: Field>(&self, ctx: &T::Ctx) -> Result<Knots<T>, InputError> {
@@ -512,8 +522,8 @@ pub fn run_gerbs_basis(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<R
 /// The points `at`, each inside the knots, read exactly.
 fn evaluation_points(
     doc: &Map<String, Value>,
-    knots: &Knots<BigRational>,
-) -> Result<Vec<BigRational>, InputError> {
+    knots: &Knots<Exact>,
+) -> Result<Vec<Exact>, InputError> {
     let items = input::array(input::field(doc, "at")?, "at")?;
     if items.len() > MAX_POINTS {
         return fail(format!(
@@ -527,7 +537,7 @@ fn evaluation_points(
     );
     let mut at = Vec::with_capacity(items.len());
     for (k, v) in items.iter().enumerate() {
-        let t = input::number(v, &format!("at[{k}]"))?;
+        let t = input::number(v, format_args!("at[{k}]"))?;
         if t < *first || t > last {
             return fail(format!(
                 "field \"at[{k}]\": {t} is outside the knots [{first}, {last}]"
@@ -540,7 +550,7 @@ fn evaluation_points(
 
 /// The work budget of `gerbs-basis`: `points` points, every basis function, `derivatives`.
 fn basis_budget(
-    knots: &Knots<BigRational>,
+    knots: &Knots<Exact>,
     points: usize,
     derivatives: usize,
     kind: Kind,
@@ -582,7 +592,7 @@ fn basis_budget(
 }
 
 /// Waypoints [[x, y], …], read exactly and checked for Algorithm 1 (at least `min`).
-fn waypoints(doc: &Map<String, Value>) -> Result<Vec<[BigRational; 2]>, InputError> {
+fn waypoints(doc: &Map<String, Value>) -> Result<Vec<[Exact; 2]>, InputError> {
     let items = input::array(input::field(doc, "waypoints")?, "waypoints")?;
     if items.len() > MAX_POINTS {
         return fail(format!(
@@ -597,9 +607,9 @@ fn waypoints(doc: &Map<String, Value>) -> Result<Vec<[BigRational; 2]>, InputErr
         .collect()
 }
 
-fn positive(doc: &Map<String, Value>, name: &str, what: &str) -> Result<BigRational, InputError> {
+fn positive(doc: &Map<String, Value>, name: &str, what: &str) -> Result<Exact, InputError> {
     let r = input::number(input::field(doc, name)?, name)?;
-    if r <= BigRational::from_integer(0.into()) {
+    if r <= 0 {
         return fail(format!(
             "field \"{name}\": {what} must be positive, got {r}"
         ));
@@ -607,18 +617,18 @@ fn positive(doc: &Map<String, Value>, name: &str, what: &str) -> Result<BigRatio
     Ok(r)
 }
 
-fn to_points<T: Field>(w: &[[BigRational; 2]], ctx: &T::Ctx) -> Vec<[T; 2]> {
+fn to_points<T: Field>(w: &[[Exact; 2]], ctx: &T::Ctx) -> Vec<[T; 2]> {
     w.iter()
-        .map(|p| [T::from_rational(&p[0], ctx), T::from_rational(&p[1], ctx)])
+        .map(|p| [T::from_exact(&p[0], ctx), T::from_exact(&p[1], ctx)])
         .collect()
 }
 
 /// What `run gerbs-path` asks for.
 struct PathJob {
-    waypoints: Vec<[BigRational; 2]>,
-    radius: BigRational,
+    waypoints: Vec<[Exact; 2]>,
+    radius: Exact,
     theta_o: RealInput,
-    line_length: Option<BigRational>,
+    line_length: Option<Exact>,
     convention: ArcConvention,
     params: BasisParams,
     samples: usize,
@@ -650,7 +660,7 @@ impl PathJob {
         // 1e-58 is a real value at 256 bits and nothing at 128).
         let point_scale = largest(waypoints.iter().flatten());
         let tangent_scale = largest(at_knots.iter().flat_map(|p| p.d1.iter()));
-        let curvature_scale = T::one_in(ctx) / &T::from_rational(&self.radius, ctx);
+        let curvature_scale = T::one_in(ctx) / &T::from_exact(&self.radius, ctx);
         let curvature_level = noise_level(&curvature_scale);
         let vector = |v: &[T; 2], scale: Option<&T>| {
             let level = scale.map(noise_level);
@@ -722,9 +732,9 @@ impl PathJob {
     fn spec<T: Real>(&self, ctx: &T::Ctx) -> Result<PathSpec<T>, RunError> {
         Ok(PathSpec {
             waypoints: to_points(&self.waypoints, ctx),
-            radius: T::from_rational(&self.radius, ctx),
+            radius: T::from_exact(&self.radius, ctx),
             theta_o: input::real_in::<T>(&self.theta_o, ctx, "theta_o")?,
-            line_length: self.line_length.as_ref().map(|l| T::from_rational(l, ctx)),
+            line_length: self.line_length.as_ref().map(|l| T::from_exact(l, ctx)),
             convention: self.convention,
             // Decided on the exact waypoints, not on their rounding.
             turns: Some(exact_turn_signs(&self.waypoints).map_err(gerbs_error)?),
@@ -841,7 +851,7 @@ pub fn run_gerbs_path(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Re
         None => return fail("input: missing field \"theta_o\" (the paper uses \"pi/8\")"),
     };
     let kind = kind(doc)?;
-    let knots = Knots::<BigRational>::uniform(waypoints.len(), &()).map_err(gerbs_error)?;
+    let knots = Knots::<Exact>::uniform(waypoints.len(), &()).map_err(gerbs_error)?;
     let params = basis_params(doc, kind, &nonempty_intervals(&knots))?;
     let samples = match doc.get("samples") {
         Some(v) => input::count(v, "samples", MAX_POINTS)?,
@@ -980,9 +990,9 @@ fn bfbs_extra(scalar: ScalarKind) -> f64 {
 /// What `run dubins` asks for: the legs given exactly, each with its shortest word
 /// already decided on that exact input ([`dubins::plan`]).
 struct DubinsJob {
-    waypoints: Vec<[BigRational; 2]>,
+    waypoints: Vec<[Exact; 2]>,
     headings: Option<Vec<RealInput>>,
-    radius: BigRational,
+    radius: Exact,
     samples: usize,
     legs: Vec<(ExactLeg, DubinsPlan)>,
 }
@@ -990,7 +1000,7 @@ struct DubinsJob {
 impl RealJob for DubinsJob {
     fn run<T: Real>(&self, ctx: &T::Ctx) -> Result<Out<T>, RunError> {
         let w = to_points::<T>(&self.waypoints, ctx);
-        let radius = T::from_rational(&self.radius, ctx);
+        let radius = T::from_exact(&self.radius, ctx);
         let headings = match &self.headings {
             Some(h) => h
                 .iter()
@@ -1051,7 +1061,7 @@ impl RealJob for DubinsJob {
 /// waypoints), or one exact angle per waypoint.
 fn dubins_headings(
     doc: &Map<String, Value>,
-    waypoints: &[[BigRational; 2]],
+    waypoints: &[[Exact; 2]],
 ) -> Result<Option<Vec<RealInput>>, InputError> {
     Ok(match doc.get("headings") {
         None => {
@@ -1094,13 +1104,19 @@ fn dubins_headings(
 /// Each leg given exactly, with its shortest word decided on that exact input (shared by
 /// every number type and both precisions of a certified run).
 fn planned_legs(
-    waypoints: &[[BigRational; 2]],
+    waypoints: &[[Exact; 2]],
     headings: Option<&[RealInput]>,
-    radius: &BigRational,
+    radius: &Exact,
 ) -> Result<Vec<(ExactLeg, DubinsPlan)>, InputError> {
+    // The Dubins planner decides in num-rational (algo::gerbs::dubins).
+    let waypoints: Vec<[BigRational; 2]> = waypoints
+        .iter()
+        .map(|p| [big_rational(&p[0]), big_rational(&p[1])])
+        .collect();
+    let radius = big_rational(radius);
     let exact_legs = match headings {
-        Some(h) => legs_with_headings(waypoints, h, radius),
-        None => algorithm1_legs(waypoints, radius),
+        Some(h) => legs_with_headings(&waypoints, h, &radius),
+        None => algorithm1_legs(&waypoints, &radius),
     };
     exact_legs
         .into_iter()

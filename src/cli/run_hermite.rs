@@ -8,7 +8,7 @@ use super::Rendered;
 use crate::algo::hermite::{self, condition, TransformKind};
 use crate::scalar::ball::Ball;
 use crate::scalar::certify::correct_digits;
-use crate::scalar::{BigRational, Field, Float, ScalarKind};
+use crate::scalar::{big_rational, BigRational, Exact, Field, Float, ScalarKind};
 use rug::float::Round;
 use serde_json::{Map, Value};
 
@@ -19,10 +19,10 @@ pub const MAX_HERMITE_DERIVATIVES: usize = 500;
 pub const MAX_CONDITION_DERIVATIVES: usize = 60;
 
 struct HermiteInput {
-    start: Vec<Vec<BigRational>>,
-    end: Vec<Vec<BigRational>>,
-    t0: BigRational,
-    t1: BigRational,
+    start: Vec<Vec<Exact>>,
+    end: Vec<Vec<Exact>>,
+    t0: Exact,
+    t1: Exact,
     is_point: bool,
 }
 
@@ -70,9 +70,9 @@ impl FieldJob for HermiteInput {
 
 /// Control points of every coordinate in the number type `T`.
 fn hermite_in<T: Field>(data: &HermiteInput, ctx: &T::Ctx) -> Result<Out<T>, InputError> {
-    let conv = |v: &[Vec<BigRational>]| -> Vec<Vec<T>> {
+    let conv = |v: &[Vec<Exact>]| -> Vec<Vec<T>> {
         v.iter()
-            .map(|p| p.iter().map(|q| T::from_rational(q, ctx)).collect())
+            .map(|p| p.iter().map(|q| T::from_exact(q, ctx)).collect())
             .collect()
     };
     // The control points depend only on the width t1 − t0 (the derivatives scale by its
@@ -80,7 +80,7 @@ fn hermite_in<T: Field>(data: &HermiteInput, ctx: &T::Ctx) -> Result<Out<T>, Inp
     // to an empty interval.
     let (t0, t1) = (
         T::zero_in(ctx),
-        T::from_rational(&(data.t1.clone() - &data.t0), ctx),
+        T::from_exact(&(data.t1.clone() - &data.t0), ctx),
     );
     let polygon = hermite::solve_points(&conv(&data.start), &conv(&data.end), (&t0, &t1))
         .map_err(|e| InputError(format!("field \"start\": {e}")))?;
@@ -134,7 +134,9 @@ pub fn run_condition(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Ren
     let (t0, t1) = input::interval(input::field(doc, "interval")?, "interval")?;
     // The matrix depends only on the width t1 − t0 (Eq. 11's factors n!/(n−j)!/(t1 − t0)^j):
     // take it exactly here, so that [1, 1 + 1e-40] is not rounded to an empty interval.
-    let (t0, t1) = (BigRational::from_integer(0.into()), t1 - &t0);
+    let (t0, t1) = (Exact::from(0), t1 - &t0);
+    // κ₂'s library functions (condition::*) take num-rational ends: two numbers, converted once.
+    let (t0, t1) = (big_rational(&t0), big_rational(&t1));
     // Our f64 one-sided Jacobi on the (m+1) × (2m+2) start block: about (m+1)^3.8
     // operations over its sweeps (f64 only; every other number type is the proof below).
     let units = (m as f64 + 1.0).powf(3.8);

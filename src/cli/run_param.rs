@@ -13,17 +13,17 @@ use crate::algo::param::one_d::{
 };
 use crate::algo::param::proven::prove_minimum;
 use crate::scalar::ball::Ball;
-use crate::scalar::{BigRational, Field, Float, Real, ScalarKind};
+use crate::scalar::{Exact, Field, Float, Real, ScalarKind};
 use serde_json::{Map, Value};
 
 /// The most points accepted by `marin` (a dense Newton step on N unknowns).
 pub const MAX_POINTS: usize = 500;
 
-fn numbers(v: &Value, path: &str) -> Result<Vec<BigRational>, InputError> {
+fn numbers(v: &Value, path: &str) -> Result<Vec<Exact>, InputError> {
     input::array(v, path)?
         .iter()
         .enumerate()
-        .map(|(i, x)| input::number(x, &format!("{path}[{i}]")))
+        .map(|(i, x)| input::number(x, format_args!("{path}[{i}]")))
         .collect()
 }
 
@@ -55,7 +55,7 @@ pub fn run_marin_1d(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rend
         "z",
         &format!("{} ordinates at {scalar}", z.len()),
     )?;
-    let exact = || -> Result<Out<BigRational>, RunError> {
+    let exact = || -> Result<Out<Exact>, RunError> {
         if case != Case::I {
             return fail(format!("option --scalar: rational covers only case I; these data are case {} and need square roots (use f64 or mpfr:<bits>)", case.name()));
         }
@@ -78,7 +78,7 @@ pub fn run_marin_1d(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rend
 
 /// The exact minimizing parametrization of scalar ordinates (Sec. 2) in one number type.
 struct MarinOneDJob {
-    z: Vec<BigRational>,
+    z: Vec<Exact>,
     /// The signs of the differences, decided on the exact ordinates (the case and the
     /// extremes follow from them, never from the rounded values).
     shape: Shape,
@@ -86,12 +86,12 @@ struct MarinOneDJob {
 
 impl RealJob for MarinOneDJob {
     fn run<T: Real>(&self, ctx: &T::Ctx) -> Result<Out<T>, RunError> {
-        let zt: Vec<T> = self.z.iter().map(|q| T::from_rational(q, ctx)).collect();
+        let zt: Vec<T> = self.z.iter().map(|q| T::from_exact(q, ctx)).collect();
         // |Δᵢ| exact, rounded once (a step of 1e-40 between values near 1 survives).
         let magnitudes: Vec<T> = self
             .z
             .windows(2)
-            .map(|w| T::from_rational(&(w[1].clone() - &w[0]).abs(), ctx))
+            .map(|w| T::from_exact(&(w[1].clone() - &w[0]).abs(), ctx))
             .collect();
         let (t, case) = parametrization_exact(&zt, &magnitudes, &self.shape)
             .map_err(|e| param_error(e, "z"))?;
@@ -169,9 +169,9 @@ pub fn run_natural_spline(
 
 /// The knots, values (one list per point) and evaluation points of `natural-spline`.
 struct NaturalSplineJob {
-    t: Vec<BigRational>,
-    z: Vec<Vec<BigRational>>,
-    at: Vec<BigRational>,
+    t: Vec<Exact>,
+    z: Vec<Vec<Exact>>,
+    at: Vec<Exact>,
     is_point: bool,
 }
 
@@ -183,13 +183,13 @@ impl FieldJob for NaturalSplineJob {
 
 /// Values, first and second derivatives of the natural spline of each coordinate at `at`.
 fn eval<T: Field>(
-    t: &[BigRational],
-    z: &[Vec<BigRational>],
-    at: &[BigRational],
+    t: &[Exact],
+    z: &[Vec<Exact>],
+    at: &[Exact],
     is_point: bool,
     ctx: &T::Ctx,
 ) -> Result<Out<T>, InputError> {
-    let conv = |q: &BigRational| T::from_rational(q, ctx);
+    let conv = |q: &Exact| T::from_exact(q, ctx);
     let knots: Vec<T> = t.iter().map(conv).collect();
     // The knots increase exactly (checked on the input); each spacing is formed exactly and
     // rounded once, so knots closer than the precision keep their true spacing.
@@ -238,15 +238,15 @@ fn eval<T: Field>(
 
 struct MarinInput {
     /// Components: z[l][i].
-    z: Vec<Vec<BigRational>>,
-    alpha: Vec<BigRational>,
+    z: Vec<Vec<Exact>>,
+    alpha: Vec<Exact>,
     form: Objective,
 }
 
 impl MarinInput {
     /// The components and weights rounded once into `T`.
     fn rounded<T: Field>(&self, ctx: &T::Ctx) -> (Vec<Vec<T>>, Vec<T>) {
-        let to_t = |q: &BigRational| T::from_rational(q, ctx);
+        let to_t = |q: &Exact| T::from_exact(q, ctx);
         let z = self
             .z
             .iter()
@@ -273,7 +273,7 @@ fn read_marin(doc: &Map<String, Value>) -> Result<MarinInput, InputError> {
     }
     let k = points[0].len();
     let alpha = match doc.get("weights") {
-        None | Some(Value::Null) => vec![BigRational::from_integer(1.into()); k],
+        None | Some(Value::Null) => vec![Exact::from(1); k],
         Some(w) => numbers(w, "weights")?,
     };
     if alpha.len() != k {
@@ -282,10 +282,7 @@ fn read_marin(doc: &Map<String, Value>) -> Result<MarinInput, InputError> {
             alpha.len()
         ));
     }
-    if let Some(i) = alpha
-        .iter()
-        .position(|a| *a <= BigRational::from_integer(0.into()))
-    {
+    if let Some(i) = alpha.iter().position(|a| *a <= 0) {
         return fail(format!("field \"weights[{i}]\": weights must be positive"));
     }
     let form = input::choice(

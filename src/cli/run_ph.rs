@@ -14,7 +14,7 @@ use crate::curve::enclosure::{proven_error, ProofOptions};
 use crate::curve::{Curve, ExprCurve};
 use crate::scalar::ball::Ball;
 use crate::scalar::certify::format_float_digits;
-use crate::scalar::{BigRational, Field, Float, Real, ScalarKind};
+use crate::scalar::{Exact, Field, Float, Real, ScalarKind};
 use serde_json::{Map, Value};
 use std::cell::Cell;
 
@@ -31,7 +31,7 @@ const FREE_FIELDS: [&str; 9] = [
 ];
 
 /// The optional `free` object: θ0, τ1, τ2, τ3, θ4, τ5, τ6, τ7, θ8 (missing ones are 0).
-fn free_parameters(doc: &Map<String, Value>) -> Result<FreeParameters<BigRational>, InputError> {
+fn free_parameters(doc: &Map<String, Value>) -> Result<FreeParameters<Exact>, InputError> {
     let mut f = FreeParameters::zero(4, &());
     let Some(v) = doc.get("free") else {
         return Ok(f);
@@ -44,11 +44,10 @@ fn free_parameters(doc: &Map<String, Value>) -> Result<FreeParameters<BigRationa
     })?;
     input::only_fields(obj, &FREE_FIELDS)
         .map_err(|e| InputError(e.0.replacen("input:", "field \"free\":", 1)))?;
-    let get = |name: &str| -> Result<BigRational, InputError> {
-        obj.get(name)
-            .map_or(Ok(BigRational::from_integer(0.into())), |v| {
-                input::number(v, &format!("free.{name}"))
-            })
+    let get = |name: &str| -> Result<Exact, InputError> {
+        obj.get(name).map_or(Ok(Exact::from(0)), |v| {
+            input::number(v, format_args!("free.{name}"))
+        })
     };
     f.theta_start = get("theta0")?;
     f.theta_mid = get("theta4")?;
@@ -120,8 +119,8 @@ pub fn run_ph_hermite(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Re
 
 /// The ten Hermite vectors (in `DATA_FIELDS` order) and the free parameters of `ph-hermite`.
 struct PhHermiteJob {
-    vectors: Vec<[BigRational; 3]>,
-    free: FreeParameters<BigRational>,
+    vectors: Vec<[Exact; 3]>,
+    free: FreeParameters<Exact>,
 }
 
 impl RealJob for PhHermiteJob {
@@ -132,18 +131,18 @@ impl RealJob for PhHermiteJob {
 
 /// The interpolant of the ten vectors (in `DATA_FIELDS` order) in the number type `T`.
 fn ph_hermite_in<T: Real>(
-    vectors: &[[BigRational; 3]],
-    free: &FreeParameters<BigRational>,
+    vectors: &[[Exact; 3]],
+    free: &FreeParameters<Exact>,
     ctx: &T::Ctx,
 ) -> Result<Out<T>, InputError> {
-    let conv = |k: usize| vectors[k].clone().map(|q| T::from_rational(&q, ctx));
+    let conv = |k: usize| vectors[k].clone().map(|q| T::from_exact(&q, ctx));
     let data = HermiteData {
         p_b: conv(0),
         p_e: conv(1),
         start: vec![conv(2), conv(4), conv(6), conv(8)],
         end: vec![conv(3), conv(5), conv(7), conv(9)],
     };
-    let c = interpolate(&data, &free.map(|q| T::from_rational(q, ctx))).map_err(ph_error)?;
+    let c = interpolate(&data, &free.map(|q| T::from_exact(q, ctx))).map_err(ph_error)?;
     Ok(Out::object(curve_out(&c)))
 }
 
@@ -153,9 +152,7 @@ struct CurveInput {
     text_len: usize,
 }
 
-fn read_curve(
-    doc: &Map<String, Value>,
-) -> Result<(CurveInput, BigRational, BigRational), InputError> {
+fn read_curve(doc: &Map<String, Value>) -> Result<(CurveInput, Exact, Exact), InputError> {
     let text = match input::field(doc, "curve")? {
         Value::String(s) => s,
         other => {
@@ -172,8 +169,11 @@ fn read_curve(
     // segment's end).
     match crate::curve::regularity::check(
         &curve.compile::<crate::scalar::ball::Ball>(&128),
-        &crate::curve::interval::Interval::new(a.clone(), b.clone())
-            .map_err(|e| InputError(format!("field \"interval\": {e}")))?,
+        &crate::curve::interval::Interval::new(
+            crate::scalar::big_rational(&a),
+            crate::scalar::big_rational(&b),
+        )
+        .map_err(|e| InputError(format!("field \"interval\": {e}")))?,
         4,
         128,
     ) {
@@ -228,10 +228,10 @@ fn check_finite<T: Real, C: Curve<T>>(
 /// What `run phodcos` asks for.
 struct PhodcosInput {
     curve: ExprCurve,
-    a: BigRational,
-    b: BigRational,
+    a: Exact,
+    b: Exact,
     segments: Option<usize>,
-    tolerance: Option<BigRational>,
+    tolerance: Option<Exact>,
     max_segments: usize,
 }
 
@@ -242,10 +242,7 @@ fn phodcos_in<T: Real>(
     fixed: Option<usize>,
 ) -> Result<(usize, Out<T>), InputError> {
     let c = input.curve.compile::<T>(ctx);
-    let (a, b) = (
-        T::from_rational(&input.a, ctx),
-        T::from_rational(&input.b, ctx),
-    );
+    let (a, b) = (T::from_exact(&input.a, ctx), T::from_exact(&input.b, ctx));
     let scale;
     let (pw, err) = match (fixed.or(input.segments), &input.tolerance) {
         (Some(n), _) => {
@@ -257,19 +254,14 @@ fn phodcos_in<T: Real>(
         }
         (None, Some(tol)) => {
             scale = check_finite(&c, &a, &b, 1)?;
-            phodcos(
-                &c,
-                (&a, &b),
-                &T::from_rational(tol, ctx),
-                input.max_segments,
-            )
-            .map_err(ph_error)?
-            .ok_or_else(|| {
-                InputError(format!(
+            phodcos(&c, (&a, &b), &T::from_exact(tol, ctx), input.max_segments)
+                .map_err(ph_error)?
+                .ok_or_else(|| {
+                    InputError(format!(
                     "field \"tolerance\": not reached with {} segments (raise \"max_segments\")",
                     input.max_segments
                 ))
-            })?
+                })?
         }
         (None, None) => return fail("input: give exactly one of \"segments\" and \"tolerance\""),
     };
@@ -309,8 +301,7 @@ impl RealJob for PhodcosJob {
         let input = &self.input;
         let Some(mut n) = input.segments else {
             let (proposed, _) = phodcos_in::<Float>(input, &bits, None)?;
-            let tolerance =
-                Float::from_rational(input.tolerance.as_ref().unwrap_or(&input.a), &bits);
+            let tolerance = Float::from_exact(input.tolerance.as_ref().unwrap_or(&input.a), &bits);
             let mut n = proposed;
             loop {
                 let out = self.proven_at(bits, n)?;
@@ -344,8 +335,8 @@ impl PhodcosJob {
         let input = &self.input;
         let c = input.curve.compile::<Ball>(&bits);
         let (a, b) = (
-            Ball::from_rational(&input.a, &bits),
-            Ball::from_rational(&input.b, &bits),
+            Ball::from_exact(&input.a, &bits),
+            Ball::from_exact(&input.b, &bits),
         );
         check_finite(&c, &a, &b, n)?;
         let free = FreeParameters::zero(4, &bits);
@@ -397,9 +388,7 @@ pub fn run_phodcos(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rende
             return fail("input: give exactly one of \"segments\" and \"tolerance\"")
         }
         (Some(0), _) => return fail("field \"segments\": at least 1 segment"),
-        (_, Some(t)) if *t <= BigRational::from_integer(0.into()) => {
-            return fail("field \"tolerance\": must be positive")
-        }
+        (_, Some(t)) if *t <= 0 => return fail("field \"tolerance\": must be positive"),
         _ => {}
     }
     if max_segments == 0 {
@@ -451,10 +440,10 @@ pub fn run_phodcos(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rende
 /// The levels of `run convergence` and what each one converts.
 struct ConvergenceJob {
     curve: ExprCurve,
-    a: BigRational,
-    b: BigRational,
+    a: Exact,
+    b: Exact,
     levels: Vec<u32>,
-    free: FreeParameters<BigRational>,
+    free: FreeParameters<Exact>,
 }
 
 impl ConvergenceJob {
@@ -502,11 +491,8 @@ fn proven_nonzero<T: Field>(x: &T) -> bool {
 impl ProvenJob for ConvergenceJob {
     fn f64(&self) -> Result<Rendered, RunError> {
         let c = self.curve.compile::<f64>(&());
-        let (fa, fb) = (
-            f64::from_rational(&self.a, &()),
-            f64::from_rational(&self.b, &()),
-        );
-        let free = self.free.map(|q| f64::from_rational(q, &()));
+        let (fa, fb) = (f64::from_exact(&self.a, &()), f64::from_exact(&self.b, &()));
+        let free = self.free.map(|q| f64::from_exact(q, &()));
         let rows = self.rows(|segments| {
             check_finite(&c, &fa, &fb, segments)?;
             let pw = convert(&c, (&fa, &fb), segments, 4, &free, true).map_err(ph_error)?;
@@ -523,10 +509,10 @@ impl ProvenJob for ConvergenceJob {
     fn ball(&self, bits: u32) -> Result<Out<Ball>, RunError> {
         let c = self.curve.compile::<Ball>(&bits);
         let (a, b) = (
-            Ball::from_rational(&self.a, &bits),
-            Ball::from_rational(&self.b, &bits),
+            Ball::from_exact(&self.a, &bits),
+            Ball::from_exact(&self.b, &bits),
         );
-        let free = self.free.map(|q| Ball::from_rational(q, &bits));
+        let free = self.free.map(|q| Ball::from_exact(q, &bits));
         self.rows(|segments| {
             check_finite(&c, &a, &b, segments)?;
             // The error depends on positions only, which the roll correction leaves alone.

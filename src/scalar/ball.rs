@@ -726,9 +726,11 @@ impl Field for Ball {
         )
     }
     fn from_rational(q: &BigRational, bits: &u32) -> Self {
-        let q = super::mpfr::to_gmp_rational(q);
+        Self::from_exact(&super::mpfr::to_gmp_rational(q), bits)
+    }
+    fn from_exact(q: &rug::Rational, bits: &u32) -> Self {
         Ball::rounded(
-            Float::with_val_round(precision(*bits), &q, Round::Nearest),
+            Float::with_val_round(precision(*bits), q, Round::Nearest),
             0.0,
         )
     }

@@ -142,6 +142,9 @@ impl<T: Field> Field for Dual<T> {
     fn from_rational(q: &BigRational, ctx: &T::Ctx) -> Self {
         Dual::constant(T::from_rational(q, ctx))
     }
+    fn from_exact(q: &rug::Rational, ctx: &T::Ctx) -> Self {
+        Dual::constant(T::from_exact(q, ctx))
+    }
     fn from_f64(v: f64, ctx: &T::Ctx) -> Self {
         Dual::constant(T::from_f64(v, ctx))
     }

@@ -30,6 +30,9 @@ impl Field for f64 {
     fn from_rational(q: &BigRational, _: &()) -> Self {
         super::mpfr::rational_to_f64(q)
     }
+    fn from_exact(q: &rug::Rational, _: &()) -> Self {
+        super::mpfr::gmp_rational_to_f64(q)
+    }
     fn from_f64(v: f64, _: &()) -> Self {
         v
     }

@@ -35,6 +35,11 @@ pub use num_bigint::BigInt;
 pub use num_rational::BigRational;
 pub use rug::Float;
 
+/// The exact number type `run` reads its input into and computes in for `--scalar rational`:
+/// GMP's rationals, 20–30× faster than num-rational's [`BigRational`] where fractions grow
+/// (both are a [`Field`] and hold the same values; `docs/benchmarks.md`).
+pub type Exact = rug::Rational;
+
 /// The field operations every algorithm needs, with an explicit context for constants.
 ///
 /// Implemented for `f64`, [`rug::Float`] and [`BigRational`]. Algorithms that need only
@@ -114,6 +119,12 @@ pub trait Field:
     }
     /// The rational `q`, correctly rounded to the context (exact for rationals).
     fn from_rational(q: &BigRational, ctx: &Self::Ctx) -> Self;
+    /// The GMP rational `q` (how `run` reads its input), correctly rounded to the context:
+    /// the same value as [`Field::from_rational`] gives for the same number, without a
+    /// num-rational copy for the types that round from GMP directly.
+    fn from_exact(q: &rug::Rational, ctx: &Self::Ctx) -> Self {
+        Self::from_rational(&mpfr::from_gmp_rational(q), ctx)
+    }
     /// The double `v` (exact for rationals and for MPFR with at least 53 bits). `v` must be finite.
     fn from_f64(v: f64, ctx: &Self::Ctx) -> Self;
 
@@ -329,6 +340,11 @@ impl std::fmt::Display for ScalarKind {
 /// A num-rational as a GMP rational, exactly (for MPFR operations with directed rounding).
 pub fn mpfr_rational(q: &BigRational) -> rug::Rational {
     mpfr::to_gmp_rational(q)
+}
+
+/// A GMP rational ([`Exact`]) as a num-rational, exactly.
+pub fn big_rational(q: &Exact) -> BigRational {
+    mpfr::from_gmp_rational(q)
 }
 
 /// The shortest decimal that reads back as the same double (see `Field::to_plain_string`).

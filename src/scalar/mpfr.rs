@@ -115,6 +115,9 @@ impl Field for Float {
     fn from_rational(q: &BigRational, bits: &u32) -> Self {
         Float::with_val(precision(*bits), &to_gmp_rational(q))
     }
+    fn from_exact(q: &Rational, bits: &u32) -> Self {
+        Float::with_val(precision(*bits), q)
+    }
     fn from_f64(v: f64, bits: &u32) -> Self {
         Float::with_val(precision(*bits), v)
     }

@@ -6,8 +6,7 @@
 //! empty strings are rejected, and so are exponents beyond ±[`MAX_EXPONENT`] (a guard
 //! against inputs like `1e999999999` that would build enormous integers).
 
-use super::{BigInt, BigRational};
-use num_traits::{Pow, Zero};
+use super::BigRational;
 
 /// The largest decimal exponent accepted.
 pub const MAX_EXPONENT: i64 = 10_000;
@@ -40,24 +39,41 @@ pub enum ParseNumberError {
 /// or exponent without digits); [`ParseNumberError::ExponentTooLarge`] for an exponent beyond
 /// ±[`MAX_EXPONENT`]; [`ParseNumberError::ZeroDenominator`] for a fraction `n/0`.
 pub fn parse_rational(text: &str) -> Result<BigRational, ParseNumberError> {
+    parse_exact(text).map(|q| super::mpfr::from_gmp_rational(&q))
+}
+
+/// [`parse_rational`] into GMP's rationals (`rug::Rational`, the exact type of `run`): the
+/// same syntax, errors and values, read with GMP's subquadratic radix conversion.
+///
+/// # Errors
+/// As [`parse_rational`].
+pub fn parse_exact(text: &str) -> Result<rug::Rational, ParseNumberError> {
     let s = text.trim();
     if s.len() > MAX_DIGITS {
         return Err(ParseNumberError::TooLong(s.len()));
     }
     match s.split_once('/') {
         Some((num, den)) => {
-            let n = parse_decimal(num.trim(), text)?;
-            let d = parse_decimal(den.trim(), text)?;
-            if d.is_zero() {
+            let n = decimal(num.trim(), text)?;
+            let d = decimal(den.trim(), text)?;
+            if d.cmp0() == std::cmp::Ordering::Equal {
                 return Err(ParseNumberError::ZeroDenominator(text.into()));
             }
             Ok(n / d)
         }
-        None => parse_decimal(s, text),
+        None => decimal(s, text),
     }
 }
 
-fn parse_decimal(s: &str, whole: &str) -> Result<BigRational, ParseNumberError> {
+/// A decimal `[±]digits[.digits][e[±]digits]` as sign, digit string and power of ten.
+struct Decimal<'a> {
+    negative: bool,
+    int_part: &'a str,
+    frac_part: &'a str,
+    exp10: i64,
+}
+
+fn decimal_parts<'a>(s: &'a str, whole: &str) -> Result<Decimal<'a>, ParseNumberError> {
     let malformed = || ParseNumberError::Malformed(whole.into());
     let (negative, unsigned) = match s.as_bytes().first() {
         Some(b'-') => (true, &s[1..]),
@@ -89,16 +105,38 @@ fn parse_decimal(s: &str, whole: &str) -> Result<BigRational, ParseNumberError> 
         }
         exp10 += if e.starts_with('-') { -value } else { value };
     }
-    let digits = format!("{int_part}{frac_part}");
-    let mut numer: BigInt = digits.parse().map_err(|_| malformed())?;
-    if negative {
+    Ok(Decimal {
+        negative,
+        int_part,
+        frac_part,
+        exp10,
+    })
+}
+
+fn decimal(s: &str, whole: &str) -> Result<rug::Rational, ParseNumberError> {
+    let d = decimal_parts(s, whole)?;
+    // The digits as one integer: up to 19 of them in a machine word, more through GMP.
+    let count = d.int_part.len() + d.frac_part.len();
+    let mut numer = if count <= 19 {
+        let word = d
+            .int_part
+            .bytes()
+            .chain(d.frac_part.bytes())
+            .fold(0u64, |acc, b| acc * 10 + u64::from(b - b'0'));
+        rug::Integer::from(word)
+    } else {
+        let digits = format!("{}{}", d.int_part, d.frac_part);
+        rug::Integer::from_str_radix(&digits, 10)
+            .map_err(|_| ParseNumberError::Malformed(whole.into()))?
+    };
+    if d.negative {
         numer = -numer;
     }
-    let scale: BigInt = Pow::pow(BigInt::from(10), exp10.unsigned_abs());
-    Ok(if exp10 >= 0 {
-        BigRational::from_integer(numer * scale)
+    let scale = rug::Integer::from(rug::Integer::u_pow_u(10, d.exp10.unsigned_abs() as u32));
+    Ok(if d.exp10 >= 0 {
+        rug::Rational::from(numer * scale)
     } else {
-        BigRational::new(numer, scale)
+        rug::Rational::from((numer, scale))
     })
 }
 
@@ -106,6 +144,15 @@ fn parse_decimal(s: &str, whole: &str) -> Result<BigRational, ParseNumberError> 
 /// printed decimal like "0.6" with an exact result).
 pub fn denotes(text: &str, q: &BigRational) -> bool {
     parse_rational(text).is_ok_and(|p| &p == q)
+}
+
+/// The value of an integer-valued GMP rational as i64, if it is one and fits.
+pub fn exact_integer(q: &rug::Rational) -> Option<i64> {
+    if *q.denom() == 1 {
+        q.numer().to_i64()
+    } else {
+        None
+    }
 }
 
 /// The value of an integer-valued rational as i64, if it is one and fits.

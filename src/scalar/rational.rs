@@ -64,6 +64,9 @@ impl Field for rug::Rational {
     fn from_rational(q: &BigRational, _: &()) -> Self {
         super::mpfr::to_gmp_rational(q)
     }
+    fn from_exact(q: &rug::Rational, _: &()) -> Self {
+        q.clone()
+    }
     fn from_f64(v: f64, _: &()) -> Self {
         rug::Rational::from_f64(v).unwrap_or_default()
     }

@@ -56,7 +56,7 @@ pub mod quadrature {
 }
 
 use crate::curve::taylor::Taylor;
-use crate::scalar::{BigRational, Field};
+use crate::scalar::Field;
 
 /// Bad input to the GERBS constructions, named by field.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -130,8 +130,8 @@ impl<T: Field> Knots<T> {
     ///
     /// # Errors
     /// [`GerbsError::Knots`] when rounding made two knots equal or reversed them.
-    pub fn rounded(exact: &Knots<BigRational>, ctx: &T::Ctx) -> Result<Self, GerbsError> {
-        let t = exact.t.iter().map(|q| T::from_rational(q, ctx)).collect();
+    pub fn rounded(exact: &Knots<crate::scalar::Exact>, ctx: &T::Ctx) -> Result<Self, GerbsError> {
+        let t = exact.t.iter().map(|q| T::from_exact(q, ctx)).collect();
         if T::ENCLOSURE {
             Ok(Knots { t })
         } else {

@@ -134,19 +134,13 @@ pub fn turn_signs<T: Field>(w: &[[T; 2]]) -> Result<Vec<i32>, GerbsError> {
 ///
 /// # Errors
 /// [`GerbsError::Waypoints`] as [`check_waypoints`].
-pub fn exact_turn_signs(w: &[[crate::scalar::BigRational; 2]]) -> Result<Vec<i32>, GerbsError> {
+pub fn exact_turn_signs<E: Field<Ctx = ()>>(w: &[[E; 2]]) -> Result<Vec<i32>, GerbsError> {
     check_waypoints(w)?;
     let n = w.len();
     let mut s = vec![0];
     for i in 1..n - 1 {
         let wedge = turn_wedge(w, i);
-        s.push(
-            if wedge > crate::scalar::BigRational::from_integer(0.into()) {
-                1
-            } else {
-                -1
-            },
-        );
+        s.push(if wedge > E::zero_in(&()) { 1 } else { -1 });
     }
     s.push(-s[n - 2]);
     s[0] = -s[1];

@@ -75,8 +75,8 @@ impl Shape {
     /// # Errors
     /// [`ParamError::TooFewPoints`] for fewer than two ordinates; [`ParamError::RepeatedPoint`]
     /// for the first two consecutive equal ones.
-    pub fn of_exact(z: &[BigRational]) -> Result<Shape, ParamError> {
-        let zero = BigRational::from_integer(0.into());
+    pub fn of_exact<E: Field<Ctx = ()>>(z: &[E]) -> Result<Shape, ParamError> {
+        let zero = E::zero_in(&());
         Ok(Shape {
             rising: deltas(z)?.iter().map(|d| *d > zero).collect(),
         })
