@@ -282,6 +282,23 @@ def peers_table(rows):
     return lines
 
 
+def cost_model_summary():
+    """The summary table of `cargo bench --bench cost_models`: per algorithm and number type,
+    the least and largest ratio of measured time to the model's estimate."""
+    out = subprocess.run(["cargo", "bench", "--bench", "cost_models"], cwd=ROOT,
+                         capture_output=True, text=True, check=True).stdout
+    tables, current = [], []
+    for line in out.splitlines():
+        if line.startswith("|"):
+            current.append(line)
+        elif current:
+            tables.append(current)
+            current = []
+    if current:
+        tables.append(current)
+    return tables[-1] if tables else ["cost_models printed no table"]
+
+
 def replace_between_markers(path, text):
     begin, end = "<!-- bench:begin -->", "<!-- bench:end -->"
     content = path.read_text()
@@ -296,6 +313,10 @@ def main():
                                   f"{BEST_OF}; scipy and pydubins timed in process, so the ratio "
                                   "charges `run`'s process start, JSON reading and printing):", ""]
                       + peers)
+    full += ("\n\nThe cost models of `run` against measurement (`cargo bench --bench cost_models`: "
+             "every algorithm in each number type on a grid of sizes, whole command in process; "
+             "runs of at least 0.2 s counted; a model holds within 4× when every ratio of "
+             "measured to estimated time lies in [1/4, 4]):\n\n" + "\n".join(cost_model_summary()))
     replace_between_markers(ROOT / "docs" / "benchmarks.md", full)
     headline = "\n".join(
         [anchors[0], "", *peers, c4_row.replace("| one C⁴", "| one C⁴"), verify_row])

@@ -79,8 +79,8 @@ impl Rates {
     }
 }
 
-/// The largest estimate accepted so far in this process, with the field and run it
-/// described: what the deadline's message names if the model was wrong.
+/// The largest estimate accepted since the command started ([`mark_start`]), with the field
+/// and run it described: what the deadline's message names if the model was wrong.
 static ACCEPTED: Mutex<Option<(f64, String, String)>> = Mutex::new(None);
 
 /// The time after which a `run` is stopped ([`run_with_deadline`]): the budget less a margin
@@ -146,6 +146,19 @@ pub fn mark_start() {
     if let Ok(mut started) = STARTED.lock() {
         *started = Some(Instant::now());
     }
+    if let Ok(mut accepted) = ACCEPTED.lock() {
+        *accepted = None;
+    }
+}
+
+/// The cost model's estimate for the latest command, in seconds on the reference machine:
+/// the largest one it accepted ([`check_time`]), `None` if it checked none. For the bench
+/// that sets the models against measured times (`benches/cost_models.rs`).
+pub fn accepted_estimate() -> Option<f64> {
+    ACCEPTED
+        .lock()
+        .ok()
+        .and_then(|a| a.as_ref().map(|(s, _, _)| *s))
 }
 
 /// The time by which a refining search (a proven enclosure's branch and bound) should stop
@@ -183,6 +196,26 @@ pub fn check_output(numbers: f64, field: &str, what: &str) -> Result<(), InputEr
     fail(format!(
         "field \"{field}\": {what} would print {numbers:.3e} numbers, more than the {MAX_OUTPUT_NUMBERS:.0e} one output may hold"
     ))
+}
+
+/// How much longer exact arithmetic takes on these input numbers than on small integers: the
+/// numbers an exact elimination builds grow with the bits of its inputs, and each operation
+/// costs about the square of their size (GMP's gcd). `bits` is the mean of the numerators'
+/// and denominators' bits over `values`; the factor is (1 + bits/6.6)^`power`, fitted per
+/// algorithm on decimals of 2 to 16 digits (`benches/cost_models.rs`). 1 for no values.
+pub fn exact_size_factor<'a>(
+    values: impl IntoIterator<Item = &'a crate::scalar::Exact>,
+    power: f64,
+) -> f64 {
+    let (mut total, mut count) = (0.0, 0.0);
+    for q in values {
+        total += f64::from(q.numer().significant_bits() + q.denom().significant_bits());
+        count += 1.0;
+    }
+    if count == 0.0 {
+        return 1.0;
+    }
+    (1.0 + total / count / 6.6).powf(power)
 }
 
 /// How much a curve expression of `len` characters costs per evaluation relative to the

@@ -1,6 +1,6 @@
 //! `run bspline-basis`, `bspline-gram`, `spline-fit` and `bang-bang`: the JSON shapes that `docs/commands.md` documents.
 
-use super::budget::Rates;
+use super::budget::{self, Rates};
 use super::dispatch::{run_field, run_real, FieldJob, RealJob};
 use super::input::{self, fail, InputError, RunError};
 use super::output::Out;
@@ -197,27 +197,34 @@ fn check_conditioning<T: Field>(
 pub fn run_fit(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, RunError> {
     let data = read_fit(doc)?;
     // Dense elimination on max(M, N) unknowns per coordinate: (M or N)^3 operations in f64
-    // and MPFR, ^4 in rationals, whose entries grow along the elimination. Measured: f64
+    // and MPFR; in rationals see below. Measured: f64
     // interpolation M = N = 1000 in 2.4 s but M = N = 2000 (degree 5) in 56 s, beyond the
     // cube (the matrices leave the cache), so the f64 rate is the larger one; mpfr:256 M = N = 500 in 26.7 s (interpolation)
-    // and 3 s (smoothing); rationals M = N = 50 in 0.85 s and 0.26 s.
+    // and 3 s (smoothing).
     let size = data.controls.max(data.times.len()) as f64;
     let dims = data.values[0].len() as f64;
     let rates = if data.weights.is_some() {
         Rates {
             f64: 8e-9,
             mpfr256: 2.7e-8,
-            rational: 4.2e-8,
+            rational: 4.5e-9,
         }
     } else {
         Rates {
             f64: 8e-9,
             mpfr256: 2.1e-7,
-            rational: 1.4e-7,
+            rational: 1.5e-8,
         }
     };
-    let power = if scalar == ScalarKind::Rational { 4 } else { 3 };
-    let units = dims * size.powi(power);
+    // In rationals the entries grow along the elimination, and with the bits of the data
+    // times (budget::exact_size_factor): measured in GMP's rationals, interpolation with
+    // times of 16 digits M = N = 20 in 0.4 s, 40 in 7.0 s, 50 in 18.3 s (size^4.2); at
+    // M = N = 40, times of 2, 6, 10 and 16 digits in 0.5, 1.8, 3.7 and 7.0 s.
+    let units = if scalar == ScalarKind::Rational {
+        dims * size.powf(4.2) * budget::exact_size_factor(&data.times, 1.75)
+    } else {
+        dims * size.powi(3)
+    };
     rates.check(
         units,
         scalar,

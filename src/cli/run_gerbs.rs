@@ -561,8 +561,11 @@ fn basis_budget(
     let per_point = 1.0 + derivatives as f64 / 10.0;
     budget::check_output(count * n * (derivatives as f64 + 1.0), "at", "this run")?;
     // Measured: BFBS with n = 100, 1000 points, d = 2 in 0.1 s (f64) and 0.36 s (mpfr:128),
-    // d = 10 in 1.9 s (rationals); ERBS in MPFR about 8 ms per point at 128 bits, nearly
-    // independent of n, and growing as p² beyond mpfr_factor (the tanh–sinh level).
+    // d = 10 in 1.9 s (rationals). ERBS in MPFR: a fixed cost per knot interval (the proven
+    // Taylor models of the kernel) and one per point, nearly independent of n, both growing
+    // faster than mpfr_factor with the bits (erbs_extra); on Fig. 2's knots (4 intervals),
+    // d = 2: 4, 64 and 256 points in 0.68, 2.3 and 7.4 s at mpfr:128, in 3.6, 12.3 and 29 s
+    // at mpfr:256.
     let seconds = match kind {
         Kind::Bfbs => Rates {
             f64: 1e-6,
@@ -576,12 +579,19 @@ fn basis_budget(
             } else {
                 1.0
             };
-            Rates {
+            let points = Rates {
                 f64: 1.5e-6,
-                mpfr256: 0.06 * erbs_extra(scalar) * (1.0 + n / 100.0),
+                mpfr256: 0.09 * erbs_extra(scalar) * (1.0 + n / 100.0),
                 rational: 0.0,
             }
-            .seconds(count * per_point * per_basis, scalar)
+            .seconds(count * per_point * per_basis, scalar);
+            let intervals = Rates {
+                f64: 0.0,
+                mpfr256: 0.75 * erbs_extra(scalar),
+                rational: 0.0,
+            }
+            .seconds((n - 1.0).max(1.0), scalar);
+            points + intervals
         }
     };
     check_time(

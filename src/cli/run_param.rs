@@ -1,6 +1,6 @@
 //! `run marin-1d`, `run natural-spline` and `run marin`: the JSON shapes that `docs/commands.md` documents.
 
-use super::budget::{check_output, Rates};
+use super::budget::{self, check_output, Rates};
 use super::dispatch::{run_field, run_real, run_real_or_exact, FieldJob, RealJob};
 use super::input::{self, fail, InputError, RunError};
 use super::output::Out;
@@ -37,8 +37,9 @@ pub fn run_marin_1d(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rend
     let z = numbers(input::field(doc, "z")?, "z")?;
     let case = classify(&z).map_err(|e| param_error(e, "z"))?;
     // The non-extreme points are placed by bisection on ψ (about 4p halvings at p bits), so
-    // the cost grows with the precision beyond mpfr_factor. Measured at mpfr:256: N = 100 in
-    // 0.5 s, 1000 in 6.6 s, 3000 in 28 s; f64 N = 3000 in 0.16 s.
+    // the cost grows with the precision beyond mpfr_factor. Measured at mpfr:256 (case III,
+    // the dearest): N = 400 in 0.15 s and 1600 in 0.61 s on a parabola's ordinates, 1600
+    // random ordinates in 0.22 s; f64 N = 16000 in 0.77 s.
     let n = z.len() as f64;
     let extra_bits = match scalar {
         ScalarKind::Mpfr(bits) => (bits as f64 / 256.0).max(1.0).powf(0.7),
@@ -46,7 +47,7 @@ pub fn run_marin_1d(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rend
     };
     let rates = Rates {
         f64: 2e-5,
-        mpfr256: 2e-3 * extra_bits,
+        mpfr256: 1.2e-4 * extra_bits,
         rational: 1e-6,
     };
     rates.check(
@@ -144,14 +145,22 @@ pub fn run_natural_spline(
         ));
     }
     // A tridiagonal solve per coordinate and one bisection per point: about N + P operations
-    // (measured: N = P = 100000 in 0.44 s in f64, 6.4 s at mpfr:256). In rationals the
-    // numbers grow with N, so every operation costs about N (N = P = 1000: 9 s).
+    // (measured: N = P = 160000 in 0.59 s in f64, 16000 in 0.56 s at mpfr:256). In
+    // rationals the second derivatives' numbers grow to about N times the input's bits, and
+    // every operation on them costs about N^1.4 times the input's size factor
+    // (budget::exact_size_factor; measured in GMP's rationals, N = P: 800 knots of 6 digits
+    // in 3.1 s, of 16 digits in 17.5 s, of 2 digits in 0.4 s; 1600 of 6 digits in 17.6 s).
     let (knots_n, dims) = (t.len() as f64, z[0].len() as f64);
     let units = dims * (knots_n + at.len() as f64);
+    let exact_size = if scalar == ScalarKind::Rational {
+        budget::exact_size_factor(t.iter().chain(z.iter().flatten()), 2.4)
+    } else {
+        1.0
+    };
     let rates = Rates {
         f64: 3e-6,
         mpfr256: 4e-5,
-        rational: 4.5e-6 * knots_n,
+        rational: 1.6e-9 * knots_n.powf(1.4) * exact_size,
     };
     rates.check(
         units,

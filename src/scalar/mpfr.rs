@@ -54,6 +54,12 @@ pub fn rational_to_f64(q: &BigRational) -> f64 {
 /// value is rounded directly to the bits the double has there.
 pub fn gmp_rational_to_f64(r: &rug::Rational) -> f64 {
     use rug::float::Round;
+    // Numerator and denominator both exact in a double (every decimal of up to 15 digits
+    // with a small exponent): IEEE division rounds their quotient once, correctly, to
+    // nearest with ties to even, subnormal results included — no MPFR value needed.
+    if r.numer().significant_bits() <= 53 && r.denom().significant_bits() <= 53 {
+        return r.numer().to_f64() / r.denom().to_f64();
+    }
     // Truncation gives the exponent without a carry into the next binade: |r| = m·2^e,
     // m ∈ [1/2, 1).
     let truncated = Float::with_val_round(53, r, Round::Zero).0;

@@ -168,6 +168,59 @@ pub fn denotes_integer(q: &BigRational) -> Option<i64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::scalar::Field;
+
+    /// Reading a decimal exactly and rounding it once gives the double Rust's own
+    /// correctly rounded parser gives, on the hard cases: halfway cases between two
+    /// doubles (ties to even), subnormals and the smallest one's half, the ends of the
+    /// range, and mantissas longer than a double holds (whose tail decides the rounding).
+    #[test]
+    fn exact_then_rounded_is_the_correctly_rounded_double() {
+        let halfway = [
+            // 2^53 + 1 lies halfway between 2^53 and 2^53 + 2: ties to the even 2^53.
+            "9007199254740993",
+            "9007199254740995",
+            // 1 + 2^-53: halfway between 1 and the next double.
+            "1.00000000000000011102230246251565404236316680908203125",
+            "1.000000000000000111022302462515654042363166809082031250000001",
+            "1.000000000000000111022302462515654042363166809082031249999999",
+        ];
+        let subnormal = [
+            "4.9406564584124654e-324",
+            "2.4703282292062327e-324",
+            "2.4703282292062328e-324",
+            "2.2250738585072011e-308",
+            "2.2250738585072014e-308",
+            "1.6725613558992932035e-308",
+            "-3e-320",
+        ];
+        let ends = [
+            "1.7976931348623157e308",
+            "1.7976931348623158e308",
+            "-1e308",
+            "1e-308",
+            "0.1",
+            "-0.3",
+            "123456.789012",
+            "3.141592653589793238462643383279502884197169399375105820974944",
+            "2.718281828459045235360287471352662497757247093699959574966967e-100",
+        ];
+        for text in halfway.iter().chain(&subnormal).chain(&ends) {
+            let exact = parse_exact(text).unwrap();
+            let ours = f64::from_exact(&exact, &());
+            let rust: f64 = text.parse().unwrap();
+            assert_eq!(
+                ours.to_bits(),
+                rust.to_bits(),
+                "{text}: {ours:e} against {rust:e}"
+            );
+        }
+        // Fractions round from the exact quotient, not from a rounded numerator.
+        let third = f64::from_exact(&parse_exact("1/3").unwrap(), &());
+        assert_eq!(third, 1.0 / 3.0);
+        let big = f64::from_exact(&parse_exact("1e400/1e399").unwrap(), &());
+        assert_eq!(big, 10.0);
+    }
 
     fn q(n: i64, d: i64) -> BigRational {
         BigRational::new(n.into(), d.into())
