@@ -238,9 +238,9 @@ def peers_rows():
             ("`run natural-spline --scalar rational`, 200 knots × 200 points", "spline200",
              ["natural-spline", "--scalar", "rational"],
              [python, str(PEERS / "natural_spline_fractions.py"), str(inputs["spline200"])]),
-            ("`run bspline-basis`, degree 60", "degree60", ["bspline-basis"],
+            ("`run bspline-basis`, degree 60 (rows of Algorithm 1 on two threads)", "degree60", ["bspline-basis"],
              [python, str(PEERS / "bspline_fractions.py"), "basis", "60"]),
-            ("`run bspline-gram`, degree 60", "degree60", ["bspline-gram"],
+            ("`run bspline-gram`, degree 60 (rows of Algorithm 1 on two threads)", "degree60", ["bspline-gram"],
              [python, str(PEERS / "bspline_fractions.py"), "gram", "60"]),
         ]
         for job, name, args, peer in exact:

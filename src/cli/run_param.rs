@@ -216,19 +216,26 @@ fn eval<T: Field>(
         })
         .collect::<Result<Vec<_>, _>>()
         .map_err(|e| InputError(format!("field \"t\": {e}")))?;
+    // Value, slope and curvature of every coordinate at each point, each point evaluated once.
+    let rows: Vec<Vec<[T; 3]>> = at
+        .iter()
+        .map(|q| {
+            // The piece is located on the exact point: the first i ≥ 1 with q ≤ tᵢ.
+            let piece = (1 + t[1..].partition_point(|k| k < q)).min(t.len() - 1);
+            // The distances to the piece's ends, exact, then rounded once.
+            let u = conv(&(t[piece].clone() - q));
+            let v = conv(&(q.clone() - &t[piece - 1]));
+            splines
+                .iter()
+                .map(|s| s.eval_offsets(&u, &v, piece))
+                .collect()
+        })
+        .collect();
     let column = |j: usize| -> Out<T> {
         Out::List(
-            at.iter()
-                .map(|q| {
-                    // The piece is located on the exact point: the first i ≥ 1 with q ≤ tᵢ.
-                    let piece = (1 + t[1..].partition_point(|k| k < q)).min(t.len() - 1);
-                    // The distances to the piece's ends, exact, then rounded once.
-                    let u = conv(&(t[piece].clone() - q));
-                    let v = conv(&(q.clone() - &t[piece - 1]));
-                    let vals: Vec<T> = splines
-                        .iter()
-                        .map(|s| s.eval_offsets(&u, &v, piece)[j].clone())
-                        .collect();
+            rows.iter()
+                .map(|row| {
+                    let vals: Vec<T> = row.iter().map(|jet| jet[j].clone()).collect();
                     if is_point {
                         Out::nums(vals)
                     } else {

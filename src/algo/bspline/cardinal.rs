@@ -14,6 +14,11 @@
 
 use crate::numeric::poly::Poly;
 use crate::scalar::Field;
+use rayon::prelude::*;
+
+/// The degree from which a row of Algorithm 1's table is computed in parallel (below it the
+/// threads would cost more than the row).
+const PARALLEL_FROM_DEGREE: usize = 16;
 
 /// B_k as k+1 polynomial pieces on [j, j+1], each in s = t − j.
 #[derive(Clone, Debug, PartialEq)]
@@ -37,22 +42,28 @@ impl<T: Field> CardinalBSpline<T> {
         for kk in 1..=k {
             let prev = &table[kk - 1];
             let inv_k = T::from_ratio(1, kk as i64, ctx);
-            let row = (0..=kk)
-                .map(|j| {
-                    if j == 0 {
-                        // (1 − s)/k · N_{0,k−1}
-                        Poly::linear(i(1), i(-1)).mul(&prev[0]).times(&inv_k)
-                    } else if j == kk {
-                        // s/k · N_{k−1,k−1}
-                        Poly::linear(i(0), i(1)).mul(&prev[kk - 1]).times(&inv_k)
-                    } else {
-                        // (k − j + s)/k · N_{j−1,k−1} + (1 + j − s)/k · N_{j,k−1}
-                        let left = Poly::linear(i((kk - j) as i64), i(1)).mul(&prev[j - 1]);
-                        let right = Poly::linear(i(1 + j as i64), i(-1)).mul(&prev[j]);
-                        left.plus(&right).times(&inv_k)
-                    }
-                })
-                .collect();
+            let entry = |j: usize| {
+                if j == 0 {
+                    // (1 − s)/k · N_{0,k−1}
+                    Poly::linear(i(1), i(-1)).mul(&prev[0]).times(&inv_k)
+                } else if j == kk {
+                    // s/k · N_{k−1,k−1}
+                    Poly::linear(i(0), i(1)).mul(&prev[kk - 1]).times(&inv_k)
+                } else {
+                    // (k − j + s)/k · N_{j−1,k−1} + (1 + j − s)/k · N_{j,k−1}
+                    let left = Poly::linear(i((kk - j) as i64), i(1)).mul(&prev[j - 1]);
+                    let right = Poly::linear(i(1 + j as i64), i(-1)).mul(&prev[j]);
+                    left.plus(&right).times(&inv_k)
+                }
+            };
+            // The entries of a row are independent: on two cores the large tables (degree 60
+            // in rationals, where the fractions grow) take about half the time, with the
+            // same operations on each entry, so the same values in every number type.
+            let row = if kk >= PARALLEL_FROM_DEGREE {
+                (0..=kk).into_par_iter().map(entry).collect()
+            } else {
+                (0..=kk).map(entry).collect()
+            };
             table.push(row);
         }
         table
