@@ -1,8 +1,9 @@
 //! Reading numbers exactly: `"3/5"`, `"0.6"`, `"-1.25e-3"`, `"7"`.
 //!
-//! Every accepted string denotes a rational number, which is read exactly into a
-//! [`BigRational`]; converting that to f64 or MPFR rounds once, correctly
-//! ([`Field::from_rational`](super::Field::from_rational)). `NaN`, infinities, hexadecimal and
+//! Every accepted string denotes a rational number, which is read exactly into GMP's
+//! rationals ([`parse_exact`], what `run` uses) or num-rational's [`BigRational`]
+//! ([`parse_rational`]); converting that to f64 or MPFR rounds once, correctly
+//! ([`Field::from_exact`](super::Field::from_exact), [`Field::from_rational`](super::Field::from_rational)). `NaN`, infinities, hexadecimal and
 //! empty strings are rejected, and so are exponents beyond ±[`MAX_EXPONENT`] (a guard
 //! against inputs like `1e999999999` that would build enormous integers).
 
