@@ -98,6 +98,22 @@ fn spline_fit(controls: usize) -> String {
     )
 }
 
+/// A smoothing fit (unit weights) of 2M data spread evenly over the support, M controls.
+fn spline_smoothing(controls: usize) -> String {
+    let mut d = Digits(23);
+    let data = 2 * controls;
+    let span = (controls + 2) as f64;
+    let times: Vec<String> = (0..data)
+        .map(|i| format!("{:.6}", 0.5 + span * (i as f64 + 0.5) / data as f64))
+        .collect();
+    let weights = vec!["1"; data].join(",");
+    format!(
+        r#"{{"degree": 3, "controls": {controls}, "times": [{}], "values": {}, "weights": [{weights}]}}"#,
+        times.join(","),
+        d.list(data)
+    )
+}
+
 fn marin_1d(n: usize) -> String {
     let mut d = Digits(19);
     format!(r#"{{"z": {}}}"#, d.list(n))
@@ -240,6 +256,30 @@ const GRIDS: &[Grid] = &[
     },
     Grid {
         algorithm: Algorithm::SplineFit,
+        name: "spline-fit smoothing",
+        scalar: "f64",
+        size: "M (N = 2M)",
+        sizes: &[100, 200, 400],
+        input: spline_smoothing,
+    },
+    Grid {
+        algorithm: Algorithm::SplineFit,
+        name: "spline-fit smoothing",
+        scalar: "rational",
+        size: "M (N = 2M)",
+        sizes: &[20, 40, 80],
+        input: spline_smoothing,
+    },
+    Grid {
+        algorithm: Algorithm::SplineFit,
+        name: "spline-fit smoothing",
+        scalar: "mpfr:256",
+        size: "M (N = 2M)",
+        sizes: &[100, 200, 400],
+        input: spline_smoothing,
+    },
+    Grid {
+        algorithm: Algorithm::SplineFit,
         name: "spline-fit",
         scalar: "f64",
         size: "M = N",
@@ -307,7 +347,7 @@ const GRIDS: &[Grid] = &[
         name: "phodcos",
         scalar: "mpfr:256",
         size: "segments",
-        sizes: &[16, 64, 256],
+        sizes: &[16, 64, 256, 1024],
         input: phodcos,
     },
     Grid {

@@ -196,18 +196,24 @@ fn check_conditioning<T: Field>(
 /// `run spline-fit`: optimal interpolating (weights null) or smoothing control points.
 pub fn run_fit(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, RunError> {
     let data = read_fit(doc)?;
-    // Dense elimination on max(M, N) unknowns per coordinate: (M or N)^3 operations in f64
-    // and MPFR; in rationals see below. Measured: f64
-    // interpolation M = N = 1000 in 2.4 s but M = N = 2000 (degree 5) in 56 s, beyond the
-    // cube (the matrices leave the cache), so the f64 rate is the larger one; mpfr:256 M = N = 500 in 26.7 s (interpolation)
-    // and 3 s (smoothing).
-    let size = data.controls.max(data.times.len()) as f64;
+    // Dense elimination per coordinate: on max(M, N) unknowns for interpolation, on the M
+    // controls for smoothing (the data enter through banded products), so (size)^3
+    // operations in f64 and MPFR; in rationals see below. Measured: f64 interpolation
+    // M = N = 1000 in 2.4 s but M = N = 2000 (degree 5) in 56 s, beyond the cube (the
+    // matrices leave the cache), so the f64 rate is the larger one; f64 smoothing M = 400,
+    // N = 800 in 3.7 s; mpfr:256 M = N = 500 in 26.7 s (interpolation) and 3 s (smoothing),
+    // smoothing M = 200, N = 400 in 0.2 s.
+    let size = if data.weights.is_some() {
+        data.controls as f64
+    } else {
+        data.controls.max(data.times.len()) as f64
+    };
     let dims = data.values[0].len() as f64;
     let rates = if data.weights.is_some() {
         Rates {
-            f64: 8e-9,
-            mpfr256: 2.7e-8,
-            rational: 4.5e-9,
+            f64: 6.4e-8,
+            mpfr256: 4.2e-8,
+            rational: 1.5e-8,
         }
     } else {
         Rates {
@@ -220,8 +226,10 @@ pub fn run_fit(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered,
     // times (budget::exact_size_factor): measured in GMP's rationals, interpolation with
     // times of 16 digits M = N = 20 in 0.4 s, 40 in 7.0 s, 50 in 18.3 s (size^4.2); at
     // M = N = 40, times of 2, 6, 10 and 16 digits in 0.5, 1.8, 3.7 and 7.0 s.
+    // Smoothing grows as M^3.4 (M = 20, 40, 80 with N = 2M in 0.005, 0.04, 0.42 s).
+    let power = if data.weights.is_some() { 3.4 } else { 4.2 };
     let units = if scalar == ScalarKind::Rational {
-        dims * size.powf(4.2) * budget::exact_size_factor(&data.times, 1.75)
+        dims * size.powf(power) * budget::exact_size_factor(&data.times, 1.75)
     } else {
         dims * size.powi(3)
     };
