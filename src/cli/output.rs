@@ -485,22 +485,23 @@ enum Step<'a> {
 fn first_not_finite<'a>(value: &'a Value, steps: &mut Vec<Step<'a>>) -> Option<&'a str> {
     match value {
         Value::String(s) if says_not_finite(s) => Some(s),
-        Value::Array(items) => items.iter().enumerate().find_map(|(i, v)| {
-            steps.push(Step::Index(i));
-            let found = first_not_finite(v, steps);
-            if found.is_none() {
-                steps.pop();
-            }
-            found
-        }),
-        Value::Object(map) => map.iter().find_map(|(k, v)| {
-            steps.push(Step::Key(k));
-            let found = first_not_finite(v, steps);
-            if found.is_none() {
-                steps.pop();
-            }
-            found
-        }),
+        Value::Array(items) => items
+            .iter()
+            .enumerate()
+            .find_map(|(i, v)| descend(Step::Index(i), v, steps)),
+        Value::Object(map) => map
+            .iter()
+            .find_map(|(k, v)| descend(Step::Key(k), v, steps)),
         _ => None,
     }
+}
+
+/// [`first_not_finite`] in the child `value` reached by `step`, the step kept only if found.
+fn descend<'a>(step: Step<'a>, value: &'a Value, steps: &mut Vec<Step<'a>>) -> Option<&'a str> {
+    steps.push(step);
+    let found = first_not_finite(value, steps);
+    if found.is_none() {
+        steps.pop();
+    }
+    found
 }

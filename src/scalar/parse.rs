@@ -66,15 +66,8 @@ pub fn parse_exact(text: &str) -> Result<rug::Rational, ParseNumberError> {
     }
 }
 
-/// A decimal `[±]digits[.digits][e[±]digits]` as sign, digit string and power of ten.
-struct Decimal<'a> {
-    negative: bool,
-    int_part: &'a str,
-    frac_part: &'a str,
-    exp10: i64,
-}
-
-fn decimal_parts<'a>(s: &'a str, whole: &str) -> Result<Decimal<'a>, ParseNumberError> {
+/// A decimal `[±]digits[.digits][e[±]digits]`, exactly.
+fn decimal(s: &str, whole: &str) -> Result<rug::Rational, ParseNumberError> {
     let malformed = || ParseNumberError::Malformed(whole.into());
     let (negative, unsigned) = match s.as_bytes().first() {
         Some(b'-') => (true, &s[1..]),
@@ -106,35 +99,23 @@ fn decimal_parts<'a>(s: &'a str, whole: &str) -> Result<Decimal<'a>, ParseNumber
         }
         exp10 += if e.starts_with('-') { -value } else { value };
     }
-    Ok(Decimal {
-        negative,
-        int_part,
-        frac_part,
-        exp10,
-    })
-}
-
-fn decimal(s: &str, whole: &str) -> Result<rug::Rational, ParseNumberError> {
-    let d = decimal_parts(s, whole)?;
     // The digits as one integer: up to 19 of them in a machine word, more through GMP.
-    let count = d.int_part.len() + d.frac_part.len();
+    let count = int_part.len() + frac_part.len();
     let mut numer = if count <= 19 {
-        let word = d
-            .int_part
+        let word = int_part
             .bytes()
-            .chain(d.frac_part.bytes())
+            .chain(frac_part.bytes())
             .fold(0u64, |acc, b| acc * 10 + u64::from(b - b'0'));
         rug::Integer::from(word)
     } else {
-        let digits = format!("{}{}", d.int_part, d.frac_part);
-        rug::Integer::from_str_radix(&digits, 10)
-            .map_err(|_| ParseNumberError::Malformed(whole.into()))?
+        let digits = format!("{int_part}{frac_part}");
+        rug::Integer::from_str_radix(&digits, 10).map_err(|_| malformed())?
     };
-    if d.negative {
+    if negative {
         numer = -numer;
     }
-    let scale = rug::Integer::from(rug::Integer::u_pow_u(10, d.exp10.unsigned_abs() as u32));
-    Ok(if d.exp10 >= 0 {
+    let scale = rug::Integer::from(rug::Integer::u_pow_u(10, exp10.unsigned_abs() as u32));
+    Ok(if exp10 >= 0 {
         rug::Rational::from(numer * scale)
     } else {
         rug::Rational::from((numer, scale))
