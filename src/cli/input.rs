@@ -46,72 +46,89 @@ impl RunError {
 /// Parse the whole input document, which must be a JSON object with no key repeated in any
 /// object (serde_json would silently keep the last of two equal keys).
 pub fn parse_document(text: &str) -> Result<Map<String, Value>, InputError> {
-    if let Err(e) = serde_json::from_str::<NoDuplicateKeys>(text) {
-        return fail(format!("input: malformed JSON: {e}"));
+    let value = serde_json::from_str::<Value>(text)
+        .map_err(|e| InputError(format!("input: malformed JSON: {e}")))?;
+    if let Some((key, offset)) = repeated_key(text) {
+        let before = text.get(..offset).unwrap_or(text);
+        let line = before.matches('\n').count() + 1;
+        let column = before.len() - before.rfind('\n').map_or(0, |i| i + 1);
+        return fail(format!(
+            "input: malformed JSON: the key \"{key}\" appears twice at line {line} column {column}"
+        ));
     }
-    match serde_json::from_str::<Value>(text) {
-        Ok(Value::Object(map)) => Ok(map),
-        Ok(other) => fail(format!(
+    match value {
+        Value::Object(map) => Ok(map),
+        other => fail(format!(
             "input: expected a JSON object, found {}",
             kind(&other)
         )),
-        Err(e) => fail(format!("input: malformed JSON: {e}")),
     }
 }
 
-/// A JSON document walked only to refuse an object that repeats a key.
-struct NoDuplicateKeys;
-
-impl<'de> serde::Deserialize<'de> for NoDuplicateKeys {
-    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        d.deserialize_any(NoDuplicateKeysVisitor)
-    }
-}
-
-struct NoDuplicateKeysVisitor;
-
-impl<'de> serde::de::Visitor<'de> for NoDuplicateKeysVisitor {
-    type Value = NoDuplicateKeys;
-
-    fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
-        f.write_str("any JSON value")
-    }
-    fn visit_bool<E>(self, _: bool) -> Result<Self::Value, E> {
-        Ok(NoDuplicateKeys)
-    }
-    fn visit_i64<E>(self, _: i64) -> Result<Self::Value, E> {
-        Ok(NoDuplicateKeys)
-    }
-    fn visit_u64<E>(self, _: u64) -> Result<Self::Value, E> {
-        Ok(NoDuplicateKeys)
-    }
-    fn visit_f64<E>(self, _: f64) -> Result<Self::Value, E> {
-        Ok(NoDuplicateKeys)
-    }
-    fn visit_str<E>(self, _: &str) -> Result<Self::Value, E> {
-        Ok(NoDuplicateKeys)
-    }
-    fn visit_unit<E>(self) -> Result<Self::Value, E> {
-        Ok(NoDuplicateKeys)
-    }
-    fn visit_seq<A: serde::de::SeqAccess<'de>>(self, mut seq: A) -> Result<Self::Value, A::Error> {
-        while seq.next_element::<NoDuplicateKeys>()?.is_some() {}
-        Ok(NoDuplicateKeys)
-    }
-    // A JSON number arrives here too (serde_json's arbitrary_precision hands it over as a
-    // one-entry map), which has no duplicate to find.
-    fn visit_map<A: serde::de::MapAccess<'de>>(self, mut map: A) -> Result<Self::Value, A::Error> {
-        let mut seen = std::collections::HashSet::new();
-        while let Some(key) = map.next_key::<String>()? {
-            if !seen.insert(key.clone()) {
-                return Err(serde::de::Error::custom(format!(
-                    "the key \"{key}\" appears twice"
-                )));
+/// The first key that an object of `text` repeats, with the byte offset just after it.
+///
+/// `text` has already parsed as JSON, so a scan of its bytes suffices: a string is a key when
+/// it opens an object's member (after `{` or after `,` inside an object). A key with escapes
+/// is decoded before it is compared (`"a"` and `"\u0061"` are the same key). One pass over
+/// the bytes, against a second serde pass that cost as much as the parse itself.
+fn repeated_key(text: &str) -> Option<(String, usize)> {
+    use std::borrow::Cow;
+    use std::collections::HashSet;
+    let bytes = text.as_bytes();
+    // One entry per open container: the keys seen so far for an object, None for an array.
+    let mut open: Vec<Option<HashSet<Cow<str>>>> = Vec::new();
+    let mut expect_key = false;
+    let mut i = 0;
+    while let Some(&byte) = bytes.get(i) {
+        match byte {
+            b'{' => {
+                open.push(Some(HashSet::new()));
+                expect_key = true;
             }
-            map.next_value::<NoDuplicateKeys>()?;
+            b'[' => {
+                open.push(None);
+                expect_key = false;
+            }
+            b'}' | b']' => {
+                open.pop();
+                expect_key = false;
+            }
+            b',' => expect_key = matches!(open.last(), Some(Some(_))),
+            b'"' => {
+                let start = i;
+                let mut escaped = false;
+                i += 1;
+                while let Some(&b) = bytes.get(i) {
+                    match b {
+                        b'"' => break,
+                        b'\\' => {
+                            escaped = true;
+                            i += 2;
+                        }
+                        _ => i += 1,
+                    }
+                }
+                if expect_key {
+                    let quoted = text.get(start..=i)?;
+                    let key: Cow<str> = if escaped {
+                        Cow::Owned(serde_json::from_str::<String>(quoted).ok()?)
+                    } else {
+                        Cow::Borrowed(&quoted[1..quoted.len() - 1])
+                    };
+                    if let Some(Some(seen)) = open.last_mut() {
+                        if seen.contains(&key) {
+                            return Some((key.into_owned(), i + 1));
+                        }
+                        seen.insert(key);
+                    }
+                    expect_key = false;
+                }
+            }
+            _ => {}
         }
-        Ok(NoDuplicateKeys)
+        i += 1;
     }
+    None
 }
 
 /// A short name for the JSON type of `v`, for error messages.
@@ -158,6 +175,53 @@ pub fn number(v: &Value, path: impl std::fmt::Display) -> Result<Exact, InputErr
         }
     };
     parse_exact(text).map_err(|e| InputError(format!("field \"{path}\": {e}")))
+}
+
+/// The number at `path` in the number type `T`: the same value as `T::from_exact` of
+/// [`number`] gives, through the type's shortcut for JSON numbers where it has one
+/// ([`Field::from_json_number`](crate::scalar::Field::from_json_number): an f64 run reads a
+/// decimal straight to its double, without a big rational per number).
+pub fn number_in<T: crate::scalar::Field>(
+    v: &Value,
+    path: impl std::fmt::Display,
+    ctx: &T::Ctx,
+) -> Result<T, InputError> {
+    if let Value::Number(n) = v {
+        if let Some(x) = T::from_json_number(n.as_str(), ctx) {
+            return Ok(x);
+        }
+    }
+    number(v, path).map(|q| T::from_exact(&q, ctx))
+}
+
+/// The JSON value at `path` if it can be a number (a JSON number or a string), read later
+/// by [`number_in`] in the number type of the run.
+pub fn number_value(v: &Value, path: impl std::fmt::Display) -> Result<&Value, InputError> {
+    match v {
+        Value::Number(_) | Value::String(_) => Ok(v),
+        other => fail(format!(
+            "field \"{path}\": expected a number or a numeric string, found {}",
+            kind(other)
+        )),
+    }
+}
+
+/// The path of coordinate `coordinate` of entry `index` of a [`uniform_values`] list named
+/// `name`: `name[index][coordinate]` for points, `name[index]` for numbers.
+pub struct ValuePath<'a> {
+    pub name: &'a str,
+    pub index: usize,
+    pub coordinate: usize,
+    pub is_point: bool,
+}
+
+impl std::fmt::Display for ValuePath<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        match self.is_point {
+            true => write!(f, "{}[{}][{}]", self.name, self.index, self.coordinate),
+            false => write!(f, "{}[{}]", self.name, self.index),
+        }
+    }
 }
 
 /// A real input: an exact number, or a constant expression such as `"pi/8"` (the curve
@@ -287,14 +351,24 @@ pub fn interval(v: &Value, path: &str) -> Result<(Exact, Exact), InputError> {
 
 /// A value that is either a number or a point (an array of numbers).
 #[derive(Clone, Debug, PartialEq)]
-pub enum NumOrPoint {
-    Number(Exact),
-    Point(Vec<Exact>),
+pub enum NumOrPoint<N> {
+    Number(N),
+    Point(Vec<N>),
 }
 
 /// A list whose entries are all numbers or all points of one dimension d ≥ 1. Returns the
 /// entries as points (a number is a point of dimension 1) and whether they were points.
 pub fn uniform_values(v: &Value, path: &str) -> Result<(Vec<Vec<Exact>>, bool), InputError> {
+    uniform_values_with(v, path, |x, p| number(x, p))
+}
+
+/// [`uniform_values`] with each number read by `read` (given the value and its path):
+/// [`number`] reads exactly, [`number_value`] keeps the JSON values for [`number_in`].
+pub fn uniform_values_with<'a, N>(
+    v: &'a Value,
+    path: &str,
+    read: impl Fn(&'a Value, &dyn std::fmt::Display) -> Result<N, InputError>,
+) -> Result<(Vec<Vec<N>>, bool), InputError> {
     let items = array(v, path)?;
     if items.is_empty() {
         return fail(format!(
@@ -315,11 +389,11 @@ pub fn uniform_values(v: &Value, path: &str) -> Result<(Vec<Vec<Exact>>, bool), 
                 let c = coords
                     .iter()
                     .enumerate()
-                    .map(|(k, x)| number(x, format_args!("{path}[{i}][{k}]")))
+                    .map(|(k, x)| read(x, &format_args!("{path}[{i}][{k}]")))
                     .collect::<Result<Vec<_>, _>>()?;
                 NumOrPoint::Point(c)
             }
-            other => NumOrPoint::Number(number(other, p)?),
+            other => NumOrPoint::Number(read(other, &p)?),
         };
         let this = match &value {
             NumOrPoint::Number(_) => None,
@@ -380,6 +454,24 @@ mod tests {
             .contains("malformed JSON"));
         let e = parse_document(r#"{"a": 1, "b": {"c": 2, "c": 3}}"#).unwrap_err();
         assert!(e.0.contains("\"c\" appears twice"), "{e}");
+    }
+
+    #[test]
+    fn repeated_keys_are_found_in_their_own_object_only() {
+        let repeated = |text: &str| repeated_key(text).map(|(key, _)| key);
+        // Decoded before comparison: an escaped spelling is the same key.
+        assert_eq!(repeated(r#"{"a": 1, "\u0061": 2}"#), Some("a".into()));
+        assert_eq!(
+            repeated(r#"{"x": [1, {"k": 1, "k": 2}]}"#),
+            Some("k".into())
+        );
+        // Equal keys of different objects, and keys spelt inside string values, are not.
+        assert_eq!(repeated(r#"[{"a": 1}, {"a": 1}]"#), None);
+        assert_eq!(repeated(r#"{"a": {"b": 1}, "b": 2}"#), None);
+        assert_eq!(repeated(r#"{"a": "x,\"a\":{", "b": ["a", "a"]}"#), None);
+        assert_eq!(repeated(r#"{"a\"": 1, "a": 2}"#), None);
+        let e = parse_document("{\n \"a\": 1,\n \"a\": 2}").unwrap_err();
+        assert!(e.0.ends_with("appears twice at line 3 column 4"), "{e}");
         assert!(parse_document(r#"{"a": [1, {"c": 2}, {"c": 3}], "b": 1.5}"#).is_ok());
         let e = count(&json!(2.5), "derivatives", 10).unwrap_err();
         assert!(e.0.contains("whole number"), "{e}");

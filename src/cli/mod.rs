@@ -217,23 +217,35 @@ fn parse_scalar(s: &str) -> Result<ScalarKind, String> {
 
 /// What `run` prints, before it is turned into JSON text.
 pub struct Rendered {
-    body: Value,
+    body: Body,
     /// Fields appended to the output object after rendering (e.g. exact values).
     extra: Vec<(String, Value)>,
+}
+
+/// The rendered output: a JSON value, or plain output already written as JSON text.
+enum Body {
+    Value(Value),
+    /// The text of [`render_plain`] and its top-level keys ([`output::write_plain`]).
+    Text(String, Vec<String>),
 }
 
 impl Rendered {
     /// An output in one number type, printed as it is.
     pub fn plain<T: crate::scalar::Field>(out: Out<T>) -> Self {
+        let mut text = String::new();
+        let body = match output::write_plain(&out, &mut text) {
+            Some(keys) => Body::Text(text, keys),
+            None => Body::Value(render_plain(&out)),
+        };
         Rendered {
-            body: render_plain(&out),
+            body,
             extra: Vec::new(),
         }
     }
     /// Output already rendered as JSON (strings carry their certified digits).
     pub fn json(value: Value) -> Self {
         Rendered {
-            body: value,
+            body: Body::Value(value),
             extra: Vec::new(),
         }
     }
@@ -242,11 +254,45 @@ impl Rendered {
         self.extra.push((key.to_string(), value));
         self
     }
-    /// The final JSON value (certified digits resolved, extra fields appended).
-    fn into_value(self) -> Result<Value, RunError> {
-        let mut value = self.body;
+    /// The final JSON text, without its newline (extra fields appended, and refused if any
+    /// number is not finite).
+    fn into_text(self) -> Result<String, RunError> {
+        let internal = |e: serde_json::Error| RunError::internal(e);
+        let (mut text, keys) = match self.body {
+            Body::Value(value) => {
+                let value = Self::finish(value, self.extra)?;
+                return serde_json::to_string(&value).map_err(internal);
+            }
+            Body::Text(text, keys) => (text, keys),
+        };
+        // Plain text takes the extra fields as they are when they can only be appended: a
+        // new key of an object, with nothing non-finite in them. Otherwise it goes the value
+        // route (`finish`), which replaces a repeated key and names a non-finite field.
+        let appendable = text.ends_with('}')
+            && self.extra.iter().enumerate().all(|(i, (key, value))| {
+                !keys.contains(key)
+                    && !self.extra[..i].iter().any(|(k, _)| k == key)
+                    && output::check_finite(value, key, "").is_ok()
+            });
+        if !appendable {
+            let value = serde_json::from_str(&text).map_err(internal)?;
+            let value = Self::finish(value, self.extra)?;
+            return serde_json::to_string(&value).map_err(internal);
+        }
+        text.pop();
+        for (key, value) in &self.extra {
+            let separator = if text.ends_with('{') { "" } else { "," };
+            let key = serde_json::to_string(key).map_err(internal)?;
+            let value = serde_json::to_string(value).map_err(internal)?;
+            text.push_str(&format!("{separator}{key}:{value}"));
+        }
+        text.push('}');
+        Ok(text)
+    }
+    /// The final JSON value: extra fields appended, refused if any number is not finite.
+    fn finish(mut value: Value, extra: Vec<(String, Value)>) -> Result<Value, RunError> {
         if let Value::Object(map) = &mut value {
-            map.extend(self.extra);
+            map.extend(extra);
         }
         let scalar = value
             .get("scalar")
@@ -512,13 +558,12 @@ pub fn run_text(
         Algorithm::GerbsPath => run_gerbs::run_gerbs_path(&doc, scalar.unwrap_or(ScalarKind::F64)),
         Algorithm::Dubins => run_gerbs::run_dubins(&doc, scalar.unwrap_or(ScalarKind::F64)),
     }
-    .and_then(Rendered::into_value)
+    .and_then(Rendered::into_text)
     .map_err(|e| match e {
         RunError::Input(m) => Failure::Usage(m),
         RunError::Internal(m) => Failure::Internal(m),
     })?;
-    let mut s =
-        serde_json::to_string(&value).map_err(|e| Failure::Internal(format!("internal: {e}")))?;
+    let mut s = value;
     s.push('\n');
     Ok(s)
 }

@@ -183,6 +183,98 @@ pub fn render_plain<T: Field>(out: &Out<T>) -> Value {
     }
 }
 
+/// The compact JSON text of [`render_plain`]`(out)`, written straight from the tree (no JSON
+/// value and no string per number: an f64 run prints 10⁵ numbers in a few milliseconds).
+///
+/// Returns the top-level keys of an object (for the fields appended later), or `None`, with
+/// `text` unspecified, where the text could differ from the value route's: an object that
+/// repeats a key (a JSON map keeps one) or a string that says NaN or infinity (which
+/// [`check_finite`] refuses, naming its path). The caller then takes the value route.
+pub fn write_plain<T: Field>(out: &Out<T>, text: &mut String) -> Option<Vec<String>> {
+    write_plain_node(out, text)?;
+    Some(match out {
+        Out::Object(fields) => fields.iter().map(|(k, _)| k.clone()).collect(),
+        _ => Vec::new(),
+    })
+}
+
+fn write_plain_node<T: Field>(out: &Out<T>, text: &mut String) -> Option<()> {
+    match out {
+        Out::Num(x) | Out::MaybeZero(x, _) => {
+            text.push('"');
+            let start = text.len();
+            x.write_plain_string(text);
+            let written = &text[start..];
+            if says_not_finite(written) || needs_escape(written) {
+                return None;
+            }
+            text.push('"');
+        }
+        Out::List(items) => {
+            text.push('[');
+            for (i, item) in items.iter().enumerate() {
+                if i > 0 {
+                    text.push(',');
+                }
+                write_plain_node(item, text)?;
+            }
+            text.push(']');
+        }
+        Out::Object(fields) => {
+            text.push('{');
+            for (i, (key, value)) in fields.iter().enumerate() {
+                if fields[..i].iter().any(|(k, _)| k == key) {
+                    return None;
+                }
+                if i > 0 {
+                    text.push(',');
+                }
+                write_json_string(key, text);
+                text.push(':');
+                write_plain_node(value, text)?;
+            }
+            text.push('}');
+        }
+        Out::Int(i) => text.push_str(&i.to_string()),
+        Out::Text(s) => {
+            if says_not_finite(s) {
+                return None;
+            }
+            write_json_string(s, text);
+        }
+        Out::Bool(b) => text.push_str(if *b { "true" } else { "false" }),
+        Out::F64(x) if x.is_finite() => text.push_str(&crate::scalar::float_text(*x)),
+        Out::F64(_) | Out::Null => text.push_str("null"),
+        Out::Bounds(..) => {
+            let Value::String(mid) = render_plain(out) else {
+                return None;
+            };
+            if says_not_finite(&mid) {
+                return None;
+            }
+            write_json_string(&mid, text);
+        }
+    }
+    Some(())
+}
+
+/// Whether serde_json escapes a character of `s` (a quote, a backslash or a control
+/// character): only then is a string written through serde_json.
+fn needs_escape(s: &str) -> bool {
+    s.bytes().any(|b| b == b'"' || b == b'\\' || b < 0x20)
+}
+
+/// `s` as a JSON string, escaped exactly as serde_json escapes it.
+fn write_json_string(s: &str, text: &mut String) {
+    if needs_escape(s) {
+        text.push_str(&Value::String(s.to_string()).to_string());
+    } else {
+        text.push('"');
+        text.push_str(s);
+        text.push('"');
+    }
+}
+
 /// Render a ball tree: each number as {"value", "radius"}, two decimals with every point
 /// of the ball inside [value − radius, value + radius] as printed ([`Ball::printed`]):
 /// `value` carries the digits every point of the ball rounds to (the midpoint to two digits

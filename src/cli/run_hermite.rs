@@ -2,7 +2,7 @@
 
 use super::budget::{self, check_output, Rates};
 use super::dispatch::{run_field, run_proven_job, FieldJob, ProvenJob};
-use super::input::{self, fail, InputError, RunError};
+use super::input::{self, fail, InputError, RunError, ValuePath};
 use super::output::Out;
 use super::Rendered;
 use crate::algo::hermite::{self, condition, TransformKind};
@@ -18,18 +18,25 @@ pub const MAX_HERMITE_DERIVATIVES: usize = 500;
 /// Jacobi converges at the default 256 bits (m = 70 does not, at 256 or 1024 bits).
 pub const MAX_CONDITION_DERIVATIVES: usize = 60;
 
-struct HermiteInput {
-    start: Vec<Vec<Exact>>,
-    end: Vec<Vec<Exact>>,
+/// The Hermite data of `run hermite`. The derivatives stay JSON values until the run's number
+/// type reads them ([`input::number_in`]: an f64 run reads no big rational).
+struct HermiteInput<'a> {
+    start: Vec<Vec<&'a Value>>,
+    end: Vec<Vec<&'a Value>>,
     t0: Exact,
     t1: Exact,
     is_point: bool,
 }
 
-fn read_hermite(doc: &Map<String, Value>) -> Result<HermiteInput, InputError> {
+fn read_hermite(doc: &Map<String, Value>) -> Result<HermiteInput<'_>, InputError> {
     input::only_fields(doc, &["start", "end", "interval"])?;
-    let (start, start_points) = input::uniform_values(input::field(doc, "start")?, "start")?;
-    let (end, end_points) = input::uniform_values(input::field(doc, "end")?, "end")?;
+    let values = |name: &str| {
+        input::uniform_values_with(input::field(doc, name)?, name, |x, p| {
+            input::number_value(x, p)
+        })
+    };
+    let (start, start_points) = values("start")?;
+    let (end, end_points) = values("end")?;
     let (t0, t1) = input::interval(input::field(doc, "interval")?, "interval")?;
     if start.len() != end.len() {
         return fail(format!(
@@ -62,7 +69,7 @@ fn read_hermite(doc: &Map<String, Value>) -> Result<HermiteInput, InputError> {
     })
 }
 
-impl FieldJob for HermiteInput {
+impl FieldJob for HermiteInput<'_> {
     fn run<T: Field>(&self, ctx: &T::Ctx) -> Result<Out<T>, RunError> {
         Ok(hermite_in(self, ctx)?)
     }
@@ -70,9 +77,24 @@ impl FieldJob for HermiteInput {
 
 /// Control points of every coordinate in the number type `T`.
 fn hermite_in<T: Field>(data: &HermiteInput, ctx: &T::Ctx) -> Result<Out<T>, InputError> {
-    let conv = |v: &[Vec<Exact>]| -> Vec<Vec<T>> {
+    let conv = |v: &[Vec<&Value>], name: &str| -> Result<Vec<Vec<T>>, InputError> {
         v.iter()
-            .map(|p| p.iter().map(|q| T::from_exact(q, ctx)).collect())
+            .enumerate()
+            .map(|(i, p)| {
+                p.iter()
+                    .enumerate()
+                    .map(|(coordinate, q)| {
+                        let is_point = data.is_point;
+                        let path = ValuePath {
+                            name,
+                            index: i,
+                            coordinate,
+                            is_point,
+                        };
+                        input::number_in(q, path, ctx)
+                    })
+                    .collect()
+            })
             .collect()
     };
     // The control points depend only on the width t1 − t0 (the derivatives scale by its
@@ -82,7 +104,8 @@ fn hermite_in<T: Field>(data: &HermiteInput, ctx: &T::Ctx) -> Result<Out<T>, Inp
         T::zero_in(ctx),
         T::from_exact(&(data.t1.clone() - &data.t0), ctx),
     );
-    let polygon = hermite::solve_points(&conv(&data.start), &conv(&data.end), (&t0, &t1))
+    let (start, end) = (conv(&data.start, "start")?, conv(&data.end, "end")?);
+    let polygon = hermite::solve_points(&start, &end, (&t0, &t1))
         .map_err(|e| InputError(format!("field \"start\": {e}")))?;
     let degree = polygon.len() as i64 - 1;
     let points = polygon

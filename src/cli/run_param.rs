@@ -2,7 +2,7 @@
 
 use super::budget::{self, check_output, Rates};
 use super::dispatch::{run_field, run_real, run_real_or_exact, FieldJob, RealJob};
-use super::input::{self, fail, InputError, RunError};
+use super::input::{self, fail, InputError, RunError, ValuePath};
 use super::output::Out;
 use super::Rendered;
 use crate::algo::param::descent::{descend, refine, Descent};
@@ -116,7 +116,9 @@ pub fn run_natural_spline(
 ) -> Result<Rendered, RunError> {
     input::only_fields(doc, &["t", "z", "at"])?;
     let t = numbers(input::field(doc, "t")?, "t")?;
-    let (z, is_point) = input::uniform_values(input::field(doc, "z")?, "z")?;
+    let (z, is_point) = input::uniform_values_with(input::field(doc, "z")?, "z", |x, p| {
+        input::number_value(x, p)
+    })?;
     let at = numbers(input::field(doc, "at")?, "at")?;
     if t.len() < 2 {
         return fail("field \"t\": a spline needs at least two knots");
@@ -153,7 +155,19 @@ pub fn run_natural_spline(
     let (knots_n, dims) = (t.len() as f64, z[0].len() as f64);
     let units = dims * (knots_n + at.len() as f64);
     let exact_size = if scalar == ScalarKind::Rational {
-        budget::exact_size_factor(t.iter().chain(z.iter().flatten()), 2.4)
+        let mut values = Vec::new();
+        for (index, point) in z.iter().enumerate() {
+            for (coordinate, v) in point.iter().enumerate() {
+                let path = ValuePath {
+                    name: "z",
+                    index,
+                    coordinate,
+                    is_point,
+                };
+                values.push(input::number(v, path)?);
+            }
+        }
+        budget::exact_size_factor(t.iter().chain(&values), 2.4)
     } else {
         1.0
     };
@@ -176,15 +190,17 @@ pub fn run_natural_spline(
     run_field(&NaturalSplineJob { t, z, at, is_point }, scalar)
 }
 
-/// The knots, values (one list per point) and evaluation points of `natural-spline`.
-struct NaturalSplineJob {
+/// The knots, values (one list per point) and evaluation points of `natural-spline`. The
+/// knots and points are exact (pieces are located and spacings formed on them); the values
+/// stay JSON values until the run's number type reads them ([`input::number_in`]).
+struct NaturalSplineJob<'a> {
     t: Vec<Exact>,
-    z: Vec<Vec<Exact>>,
+    z: Vec<Vec<&'a Value>>,
     at: Vec<Exact>,
     is_point: bool,
 }
 
-impl FieldJob for NaturalSplineJob {
+impl FieldJob for NaturalSplineJob<'_> {
     fn run<T: Field>(&self, ctx: &T::Ctx) -> Result<Out<T>, RunError> {
         Ok(eval(&self.t, &self.z, &self.at, self.is_point, ctx)?)
     }
@@ -193,7 +209,7 @@ impl FieldJob for NaturalSplineJob {
 /// Values, first and second derivatives of the natural spline of each coordinate at `at`.
 fn eval<T: Field>(
     t: &[Exact],
-    z: &[Vec<Exact>],
+    z: &[Vec<&Value>],
     at: &[Exact],
     is_point: bool,
     ctx: &T::Ctx,
@@ -208,14 +224,23 @@ fn eval<T: Field>(
         .collect();
     let splines = (0..z[0].len())
         .map(|c| {
-            NaturalCubicSpline::with_spacings(
-                knots.clone(),
-                spacings.clone(),
-                z.iter().map(|v| conv(&v[c])).collect(),
-            )
+            let values = z
+                .iter()
+                .enumerate()
+                .map(|(index, v)| {
+                    let path = ValuePath {
+                        name: "z",
+                        index,
+                        coordinate: c,
+                        is_point,
+                    };
+                    input::number_in(v[c], path, ctx)
+                })
+                .collect::<Result<Vec<T>, _>>()?;
+            NaturalCubicSpline::with_spacings(knots.clone(), spacings.clone(), values)
+                .map_err(|e| InputError(format!("field \"t\": {e}")))
         })
-        .collect::<Result<Vec<_>, _>>()
-        .map_err(|e| InputError(format!("field \"t\": {e}")))?;
+        .collect::<Result<Vec<_>, _>>()?;
     // Value, slope and curvature of every coordinate at each point, each point evaluated once.
     let rows: Vec<Vec<[T; 3]>> = at
         .iter()

@@ -36,6 +36,19 @@ impl Field for f64 {
     fn from_f64(v: f64, _: &()) -> Self {
         v
     }
+    /// core's decimal parser rounds correctly (to nearest, ties to even), as the exact path's
+    /// [`gmp_rational_to_f64`](super::mpfr::gmp_rational_to_f64) does, without a big
+    /// rational per number. Left to the exact path: long texts (which it may refuse as too
+    /// long), zeros (a rational has no −0) and overflows (which it reports); a finite non-zero
+    /// double from at most 40 characters has an exponent well inside the exact reader's range.
+    fn from_json_number(text: &str, _: &()) -> Option<Self> {
+        if text.len() > 40 || !is_json_number(text) {
+            return None;
+        }
+        text.parse::<f64>()
+            .ok()
+            .filter(|x| x.is_finite() && *x != 0.0)
+    }
     fn abs(&self) -> Self {
         f64::abs(*self)
     }
@@ -54,17 +67,64 @@ impl Field for f64 {
     fn to_plain_string(&self) -> String {
         format_f64(*self)
     }
+    fn write_plain_string(&self, out: &mut String) {
+        write_f64(*self, out);
+    }
+}
+
+/// Whether `text` is a number of the JSON grammar: `-?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?`.
+fn is_json_number(text: &str) -> bool {
+    let digits = |s: &[u8]| s.iter().take_while(|b| b.is_ascii_digit()).count();
+    let mut rest = text.as_bytes();
+    if let [b'-', tail @ ..] = rest {
+        rest = tail;
+    }
+    let whole = digits(rest);
+    if whole == 0 || (whole > 1 && rest[0] == b'0') {
+        return false;
+    }
+    rest = &rest[whole..];
+    if let [b'.', tail @ ..] = rest {
+        let fraction = digits(tail);
+        if fraction == 0 {
+            return false;
+        }
+        rest = &tail[fraction..];
+    }
+    if let [b'e' | b'E', tail @ ..] = rest {
+        let tail = match tail {
+            [b'+' | b'-', signed @ ..] => signed,
+            _ => tail,
+        };
+        let exponent = digits(tail);
+        if exponent == 0 {
+            return false;
+        }
+        rest = &tail[exponent..];
+    }
+    rest.is_empty()
 }
 
 /// The shortest decimal that reads back as the same double ("0.6", "1e-7", "1.5e300").
 pub fn format_f64(x: f64) -> String {
+    let mut s = String::new();
+    write_f64(x, &mut s);
+    s
+}
+
+/// [`format_f64`] appended to `out`.
+pub fn write_f64(x: f64, out: &mut String) {
     // Debug prints the shortest round-trip form and switches to an exponent for very large
     // and very small magnitudes; "-0.0" prints as "0".
     if x == 0.0 {
-        return "0".into();
+        out.push('0');
+        return;
     }
-    let s = format!("{x:?}");
-    s.strip_suffix(".0").map(str::to_owned).unwrap_or(s)
+    use std::fmt::Write;
+    let _ = write!(out, "{x:?}"); // writing to a String cannot fail
+    if out.ends_with(".0") {
+        out.truncate(out.len() - 2);
+    }
 }
 
 impl Real for f64 {
@@ -100,6 +160,85 @@ impl Real for f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::scalar::parse::parse_exact;
+    use proptest::prelude::*;
+
+    /// The shortcut either declines or gives the exact path's double, bit for bit.
+    fn agrees_with_exact_path(text: &str) -> bool {
+        let exact = parse_exact(text).map(|q| f64::from_exact(&q, &()));
+        match (f64::from_json_number(text, &()), exact) {
+            (None, _) => true,
+            (Some(fast), Ok(exact)) => fast.to_bits() == exact.to_bits(),
+            (Some(_), Err(_)) => false,
+        }
+    }
+
+    #[test]
+    fn json_numbers_read_as_the_exact_path_rounds_them() {
+        let hard = [
+            "0.1",
+            "-0.1",
+            "2.2250738585072011e-308",
+            "2.2250738585072012e-308",
+            "4.9406564584124654e-324",
+            "2.4703282292062328e-324",
+            "2.4703282292062327e-324",
+            "1.7976931348623157e308",
+            "1.7976931348623158e308",
+            "1.7976931348623159e308",
+            "9007199254740993",
+            "9007199254740995",
+            "18014398509481986",
+            "1e23",
+            "8.98846567431158e307",
+            "123456789012345678901234567890",
+            "0.30000000000000004441",
+            "-5e-324",
+            "1e-7",
+            "3.0e+2",
+            "1E-400",
+            "1e400",
+            "0",
+            "-0",
+            "0.0e5",
+        ];
+        for text in hard {
+            assert!(agrees_with_exact_path(text), "{text}");
+        }
+        // Taken where the double is finite and non-zero; declined otherwise.
+        assert_eq!(
+            f64::from_json_number("9007199254740993", &()),
+            Some(9007199254740992.0)
+        );
+        assert_eq!(
+            f64::from_json_number("2.4703282292062328e-324", &()),
+            Some(5e-324)
+        );
+        for declined in [
+            "1e400", "1e-400", "0", "-0", "+1", ".5", "5.", "01", "inf", "1/3", "0x10",
+        ] {
+            assert_eq!(f64::from_json_number(declined, &()), None, "{declined}");
+        }
+    }
+
+    proptest! {
+        #[test]
+        fn random_decimals_read_as_the_exact_path_rounds_them(
+            negative in any::<bool>(),
+            whole in "[1-9][0-9]{0,18}",
+            fraction in proptest::option::of("[0-9]{1,18}"),
+            exponent in proptest::option::of(-340i32..320),
+        ) {
+            let mut text = format!("{}{whole}", if negative { "-" } else { "" });
+            if let Some(f) = fraction {
+                text += &format!(".{f}");
+            }
+            if let Some(e) = exponent {
+                text += &format!("e{e}");
+            }
+            prop_assert!(agrees_with_exact_path(&text), "{}", text);
+        }
+    }
 
     #[test]
     fn shortest_round_trip() {

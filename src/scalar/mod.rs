@@ -127,6 +127,13 @@ pub trait Field:
     }
     /// The double `v` (exact for rationals and for MPFR with at least 53 bits). `v` must be finite.
     fn from_f64(v: f64, ctx: &Self::Ctx) -> Self;
+    /// A shortcut for reading the text of a JSON number (`-12.5e3`, the JSON grammar), when
+    /// the type has one that gives exactly `from_exact(parse_exact(text))`; `None` sends the
+    /// caller to that exact path. f64 reads short decimals straight to the nearest double.
+    fn from_json_number(text: &str, ctx: &Self::Ctx) -> Option<Self> {
+        let _ = (text, ctx);
+        None
+    }
 
     /// |x|.
     fn abs(&self) -> Self;
@@ -201,6 +208,10 @@ pub trait Field:
     /// the shortest round-trip decimal for f64, every significant digit of the precision for
     /// MPFR. Use [`certify`] for digits that two precisions agree on.
     fn to_plain_string(&self) -> String;
+    /// [`Field::to_plain_string`] appended to `out` (f64 writes without a string of its own).
+    fn write_plain_string(&self, out: &mut String) {
+        out.push_str(&self.to_plain_string());
+    }
 }
 
 /// `acc ← c + acc·x` through a copy of `c` and [`Field::mul_add_assign`]: the default
