@@ -188,8 +188,9 @@ pub fn render_plain<T: Field>(out: &Out<T>) -> Value {
 ///
 /// Returns the top-level keys of an object (for the fields appended later), or `None`, with
 /// `text` unspecified, where the text could differ from the value route's: an object that
-/// repeats a key (a JSON map keeps one) or a string that says NaN or infinity (which
-/// [`check_finite`] refuses, naming its path). The caller then takes the value route.
+/// repeats a key (a JSON map keeps one), a number that is not finite or a string that says
+/// NaN or infinity (which [`check_finite`] refuses, naming its path). The caller then takes
+/// the value route.
 pub fn write_plain<T: Field>(out: &Out<T>, text: &mut String) -> Option<Vec<String>> {
     write_plain_node(out, text)?;
     Some(match out {
@@ -201,11 +202,13 @@ pub fn write_plain<T: Field>(out: &Out<T>, text: &mut String) -> Option<Vec<Stri
 fn write_plain_node<T: Field>(out: &Out<T>, text: &mut String) -> Option<()> {
     match out {
         Out::Num(x) | Out::MaybeZero(x, _) => {
+            if !x.is_finite() {
+                return None;
+            }
             text.push('"');
             let start = text.len();
             x.write_plain_string(text);
-            let written = &text[start..];
-            if says_not_finite(written) || needs_escape(written) {
+            if needs_escape(&text[start..]) {
                 return None;
             }
             text.push('"');

@@ -112,19 +112,160 @@ pub fn format_f64(x: f64) -> String {
     s
 }
 
-/// [`format_f64`] appended to `out`.
+/// (m, e) with x = m·2^e and m odd, for a finite x > 0.
+fn odd_mantissa(x: f64) -> (u64, i32) {
+    let bits = x.to_bits();
+    let (raw_exponent, fraction) = ((bits >> 52) as i32 & 0x7ff, bits & ((1 << 52) - 1));
+    let (m, e) = match raw_exponent {
+        0 => (fraction, -1074),
+        _ => (fraction | 1 << 52, raw_exponent - 1075),
+    };
+    let zeros = m.trailing_zeros().min(63);
+    (m >> zeros, e + zeros as i32)
+}
+
+/// Whether x > 0 can lie halfway between two shortest decimals at all: [`is_decimal_tie`]
+/// needs e = q − 1 with |q| ≤ 27 (beyond, the odd parts exceed 2^53 or 2·10^17).
+fn may_be_decimal_tie(x: f64) -> bool {
+    (-28..=26).contains(&odd_mantissa(x).1)
+}
+
+/// Whether x > 0 is exactly (D + ½)·10^q, D the integer of `digits` and q = point − count:
+/// halfway between D and D + 1 in the last printed place.
+///
+/// x = m·2^e with m odd; (2D + 1)·5^q·2^(q−1) for q ≥ 0, and (2D + 1)/(5^−q·2^(1−q)) for
+/// q < 0, have odd parts (2D + 1)·5^q and (2D + 1)/5^−q and the power of two 2^(q−1), so
+/// the tie holds exactly when e = q − 1 and the odd parts agree (integers below 2^128).
+fn is_decimal_tie(x: f64, digits: &[u8], point: i32) -> bool {
+    let (m, e) = odd_mantissa(x);
+    if m == 0 {
+        return false;
+    }
+    let q = point - digits.len() as i32;
+    if e != q - 1 || q.abs() > 27 {
+        return false;
+    }
+    let d = digits
+        .iter()
+        .fold(0u128, |acc, &b| acc * 10 + u128::from(b - b'0'));
+    let (odd, five) = (2 * d + 1, 5u128.pow(q.unsigned_abs()));
+    if q >= 0 {
+        u128::from(m) == odd * five
+    } else {
+        u128::from(m) * five == odd
+    }
+}
+
+/// [`format_f64`] appended to `out`: the layout of Rust's `{:?}` without a trailing ".0" —
+/// plain decimals for 1e-4 ≤ |x| < 1e16, `d.ddde±k` outside — and "0" for ±0.
+///
+/// The digits are Ryū's (the `ryu` crate, three times faster than core's Grisu here): the
+/// shortest that read back as x and, among those, the nearest to x, which is what core's
+/// `{:?}` prints too (the test compares both on random and hard doubles); only their layouts
+/// differ, so Ryū's output is taken apart into digits and exponent and laid out as core does.
 pub fn write_f64(x: f64, out: &mut String) {
-    // Debug prints the shortest round-trip form and switches to an exponent for very large
-    // and very small magnitudes; "-0.0" prints as "0".
     if x == 0.0 {
         out.push('0');
         return;
     }
-    use std::fmt::Write;
-    let _ = write!(out, "{x:?}"); // writing to a String cannot fail
-    if out.ends_with(".0") {
-        out.truncate(out.len() - 2);
+    if !x.is_finite() {
+        use std::fmt::Write;
+        let _ = write!(out, "{x:?}"); // "NaN", "inf", "-inf"; writing to a String cannot fail
+        return;
     }
+    let mut buffer = ryu::Buffer::new();
+    let abs = x.abs();
+    // Ryū lays out as core does except for 1e-5 ≤ |x| < 1e-4 (Ryū "0.00001234", core
+    // "1.234e-5"), and its digits are core's except at a tie: elsewhere its text is taken.
+    if !may_be_decimal_tie(abs) && !(1e-5..1e-4).contains(&abs) {
+        let printed = buffer.format_finite(x);
+        out.push_str(printed.strip_suffix(".0").unwrap_or(printed));
+        return;
+    }
+    let printed = buffer.format_finite(abs).as_bytes();
+    // printed = mantissa[e exponent], the mantissa with or without a point. Collect all
+    // significant digits and the power of ten of the first: x = 0.d₁d₂… × 10^point.
+    let mut digits = [0u8; 24];
+    let (mut count, mut point, mut seen_point) = (0usize, 0i32, false);
+    let mut rest = printed;
+    while let [b, tail @ ..] = rest {
+        match *b {
+            b'.' => seen_point = true,
+            b'e' => {
+                let exponent = std::str::from_utf8(tail).ok().and_then(|e| e.parse::<i32>().ok());
+                point += exponent.unwrap_or(0);
+                break;
+            }
+            b'0' if count == 0 => {
+                if seen_point {
+                    point -= 1; // a leading zero after the point ("0.00123")
+                }
+            }
+            digit => {
+                if count < digits.len() {
+                    digits[count] = digit;
+                    count += 1;
+                }
+                if !seen_point {
+                    point += 1;
+                }
+            }
+        }
+        rest = tail;
+    }
+    while count > 1 && digits[count - 1] == b'0' {
+        count -= 1; // trailing zeros of "1200.0" or "1e16"
+    }
+    let digits = &digits[..count];
+    if is_decimal_tie(x.abs(), digits, point) {
+        // x lies exactly halfway between two shortest decimals: Ryū takes the even one,
+        // core the upper one. Rare (only short binary fractions); core prints it.
+        let start = out.len();
+        use std::fmt::Write;
+        let _ = write!(out, "{x:?}");
+        if out[start..].ends_with(".0") {
+            out.truncate(out.len() - 2);
+        }
+        return;
+    }
+    // Laid out in a stack buffer (at most 1 + 17 + 5 zeros/points + "e-324"), then appended.
+    let mut text = [0u8; 48];
+    let mut n = 0;
+    let mut put = |bytes: &[u8]| {
+        text[n..n + bytes.len()].copy_from_slice(bytes);
+        n += bytes.len();
+    };
+    if x < 0.0 {
+        put(b"-");
+    }
+    if (1e-4..1e16).contains(&x.abs()) {
+        if point <= 0 {
+            put(b"0.");
+            for _ in 0..point.unsigned_abs() {
+                put(b"0");
+            }
+            put(digits);
+        } else if (point as usize) < digits.len() {
+            let (int, frac) = digits.split_at(point as usize);
+            put(int);
+            put(b".");
+            put(frac);
+        } else {
+            put(digits);
+            for _ in digits.len()..point as usize {
+                put(b"0");
+            }
+        }
+    } else {
+        put(&digits[..1]);
+        if digits.len() > 1 {
+            put(b".");
+            put(&digits[1..]);
+        }
+        put(b"e");
+        put(itoa::Buffer::new().format(point - 1).as_bytes());
+    }
+    out.push_str(std::str::from_utf8(&text[..n]).unwrap_or("NaN"));
 }
 
 impl Real for f64 {
@@ -162,6 +303,46 @@ mod tests {
     use super::*;
     use crate::scalar::parse::parse_exact;
     use proptest::prelude::*;
+
+    /// core's `{:?}` without ".0", which [`write_f64`] must reproduce.
+    fn core_debug(x: f64) -> String {
+        if x == 0.0 {
+            return "0".into();
+        }
+        let s = format!("{x:?}");
+        s.strip_suffix(".0").map(str::to_owned).unwrap_or(s)
+    }
+
+    #[test]
+    fn ryu_digits_laid_out_as_core_prints_them() {
+        let hard = [
+            1.0, 0.1, 0.3, 1e-4, 9.999999999999999e-5, 1e16, 9999999999999998.0, 1e15, 123456.0,
+            1e23, 5e-324, 2.2250738585072014e-308, 1658206780088562.25, 0.5, 2.5, 1e15 + 0.5, f64::MAX, f64::MIN_POSITIVE, 1.5e-7, 0.001,
+            100.0, 1e21, 2f64.powi(60), 2f64.powi(-60), 1.0 / 3.0, f64::EPSILON, -0.0, 4.35,
+            f64::NAN, f64::INFINITY, f64::NEG_INFINITY,
+        ];
+        for x in hard.into_iter().flat_map(|x| [x, -x]) {
+            assert_eq!(format_f64(x), core_debug(x), "{x:e}");
+        }
+        // Random bit patterns (every exponent), and random doubles near each layout switch.
+        let mut state = 0x9e3779b97f4a7c15u64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        };
+        for _ in 0..200_000 {
+            let x = f64::from_bits(next());
+            assert_eq!(format_f64(x), core_debug(x), "{:#x}", x.to_bits());
+            let near = [1e-4, 1e-5, 1e16, 1.0][(next() % 4) as usize];
+            let y = near * (1.0 + ((next() % 2001) as f64 - 1000.0) * 1e-13);
+            assert_eq!(format_f64(y), core_debug(y), "{y:e}");
+            // Short binary fractions, where ties between two shortest decimals live.
+            let z = (next() >> 11) as f64 * 2f64.powi((next() % 40) as i32 - 20);
+            assert_eq!(format_f64(z), core_debug(z), "{z:e}");
+        }
+    }
 
     /// The shortcut either declines or gives the exact path's double, bit for bit.
     fn agrees_with_exact_path(text: &str) -> bool {
