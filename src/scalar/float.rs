@@ -182,9 +182,25 @@ pub fn write_f64(x: f64, out: &mut String) {
         out.push_str(printed.strip_suffix(".0").unwrap_or(printed));
         return;
     }
-    let printed = buffer.format_finite(abs).as_bytes();
-    // printed = mantissa[e exponent], the mantissa with or without a point. Collect all
-    // significant digits and the power of ten of the first: x = 0.d₁d₂… × 10^point.
+    let (digits, count, point) = shortest_digits(buffer.format_finite(abs).as_bytes());
+    let digits = &digits[..count];
+    if is_decimal_tie(abs, digits, point) {
+        // x lies exactly halfway between two shortest decimals: Ryū takes the even one,
+        // core the upper one. Rare (only short binary fractions); core prints it.
+        let start = out.len();
+        use std::fmt::Write;
+        let _ = write!(out, "{x:?}");
+        if out[start..].ends_with(".0") {
+            out.truncate(out.len() - 2);
+        }
+        return;
+    }
+    lay_out_as_core(x < 0.0, (1e-4..1e16).contains(&abs), digits, point, out);
+}
+
+/// The significant digits of Ryū's text for x > 0 (mantissa with or without a point, then
+/// `e` and an exponent), their count, and the power of ten of the first: x = 0.d₁d₂… × 10^point.
+fn shortest_digits(printed: &[u8]) -> ([u8; 24], usize, i32) {
     let mut digits = [0u8; 24];
     let (mut count, mut point, mut seen_point) = (0usize, 0i32, false);
     let mut rest = printed;
@@ -192,7 +208,9 @@ pub fn write_f64(x: f64, out: &mut String) {
         match *b {
             b'.' => seen_point = true,
             b'e' => {
-                let exponent = std::str::from_utf8(tail).ok().and_then(|e| e.parse::<i32>().ok());
+                let exponent = std::str::from_utf8(tail)
+                    .ok()
+                    .and_then(|e| e.parse::<i32>().ok());
                 point += exponent.unwrap_or(0);
                 break;
             }
@@ -216,29 +234,24 @@ pub fn write_f64(x: f64, out: &mut String) {
     while count > 1 && digits[count - 1] == b'0' {
         count -= 1; // trailing zeros of "1200.0" or "1e16"
     }
-    let digits = &digits[..count];
-    if is_decimal_tie(x.abs(), digits, point) {
-        // x lies exactly halfway between two shortest decimals: Ryū takes the even one,
-        // core the upper one. Rare (only short binary fractions); core prints it.
-        let start = out.len();
-        use std::fmt::Write;
-        let _ = write!(out, "{x:?}");
-        if out[start..].ends_with(".0") {
-            out.truncate(out.len() - 2);
-        }
-        return;
-    }
-    // Laid out in a stack buffer (at most 1 + 17 + 5 zeros/points + "e-324"), then appended.
+    (digits, count, point)
+}
+
+/// The digits d₁d₂… with x = ±0.d₁d₂… × 10^point appended to `out` as core's `{:?}` prints
+/// them (without ".0"): a plain decimal when `plain` (1e-4 ≤ |x| < 1e16), `d.ddde±k` otherwise.
+fn lay_out_as_core(negative: bool, plain: bool, digits: &[u8], point: i32, out: &mut String) {
+    // Laid out in a stack buffer (at most 1 + 17 digits + 16 zeros + a point, or "e-324"),
+    // then appended once.
     let mut text = [0u8; 48];
     let mut n = 0;
     let mut put = |bytes: &[u8]| {
         text[n..n + bytes.len()].copy_from_slice(bytes);
         n += bytes.len();
     };
-    if x < 0.0 {
+    if negative {
         put(b"-");
     }
-    if (1e-4..1e16).contains(&x.abs()) {
+    if plain {
         if point <= 0 {
             put(b"0.");
             for _ in 0..point.unsigned_abs() {
@@ -257,10 +270,11 @@ pub fn write_f64(x: f64, out: &mut String) {
             }
         }
     } else {
-        put(&digits[..1]);
-        if digits.len() > 1 {
+        let (first, rest) = digits.split_at(digits.len().min(1));
+        put(first);
+        if !rest.is_empty() {
             put(b".");
-            put(&digits[1..]);
+            put(rest);
         }
         put(b"e");
         put(itoa::Buffer::new().format(point - 1).as_bytes());
@@ -316,10 +330,37 @@ mod tests {
     #[test]
     fn ryu_digits_laid_out_as_core_prints_them() {
         let hard = [
-            1.0, 0.1, 0.3, 1e-4, 9.999999999999999e-5, 1e16, 9999999999999998.0, 1e15, 123456.0,
-            1e23, 5e-324, 2.2250738585072014e-308, 1658206780088562.25, 0.5, 2.5, 1e15 + 0.5, f64::MAX, f64::MIN_POSITIVE, 1.5e-7, 0.001,
-            100.0, 1e21, 2f64.powi(60), 2f64.powi(-60), 1.0 / 3.0, f64::EPSILON, -0.0, 4.35,
-            f64::NAN, f64::INFINITY, f64::NEG_INFINITY,
+            1.0,
+            0.1,
+            0.3,
+            1e-4,
+            9.999999999999999e-5,
+            1e16,
+            9999999999999998.0,
+            1e15,
+            123456.0,
+            1e23,
+            5e-324,
+            2.2250738585072014e-308,
+            f64::from_bits(0x4317_9085_685d_83c9),
+            0.5,
+            2.5,
+            1e15 + 0.5,
+            f64::MAX,
+            f64::MIN_POSITIVE,
+            1.5e-7,
+            0.001,
+            100.0,
+            1e21,
+            2f64.powi(60),
+            2f64.powi(-60),
+            1.0 / 3.0,
+            f64::EPSILON,
+            -0.0,
+            4.35,
+            f64::NAN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
         ];
         for x in hard.into_iter().flat_map(|x| [x, -x]) {
             assert_eq!(format_f64(x), core_debug(x), "{x:e}");

@@ -186,10 +186,16 @@ impl<T: Field> HermiteData<T> {
     /// [`derivative_scales`].
     pub fn solve(&self) -> Result<Bernstein<T>, HermiteError> {
         self.check()?;
-        let m = self.derivatives();
-        let scales = derivative_scales(m, (&self.t0, &self.t1))?;
+        let scales = derivative_scales(self.derivatives(), (&self.t0, &self.t1))?;
+        self.solve_scaled(&scales)
+    }
+
+    /// [`HermiteData::solve`] after [`HermiteData::check`], with the scales of
+    /// [`derivative_scales`] for this data's m and interval already formed: they depend on
+    /// nothing else, so [`solve_points`] forms them once for all its coordinates.
+    fn solve_scaled(&self, scales: &[T]) -> Result<Bernstein<T>, HermiteError> {
         let scaled =
-            |x: &[T]| -> Vec<T> { x.iter().zip(&scales).map(|(v, s)| v.clone() * s).collect() };
+            |x: &[T]| -> Vec<T> { x.iter().zip(scales).map(|(v, s)| v.clone() * s).collect() };
         let head = anti_difference(&scaled(&self.start)); // p₀…pₘ
         let tail = backward_anti_difference(&scaled(&self.end)); // pₘ₊₁…pₙ
         let points = head.into_iter().chain(tail).collect();
@@ -223,14 +229,22 @@ pub fn solve_points<T: Field>(
         return Err(HermiteError::DimensionMismatch);
     }
     let coordinate = |v: &[Vec<T>], c: usize| v.iter().map(|p| p[c].clone()).collect();
+    // Every coordinate shares m and the interval, hence the scales: formed once, after the
+    // first coordinate's checks (so that errors come in the order `solve` gives them).
+    let mut scales: Option<Vec<T>> = None;
     let per_coordinate = (0..dims)
         .map(|c| {
-            HermiteData::new(
+            let data = HermiteData::new(
                 coordinate(start, c),
                 coordinate(end, c),
                 (t0.clone(), t1.clone()),
-            )?
-            .solve()
+            )?;
+            data.check()?;
+            let scales = match &mut scales {
+                Some(s) => s,
+                None => scales.insert(derivative_scales(data.derivatives(), (t0, t1))?),
+            };
+            data.solve_scaled(scales)
         })
         .collect::<Result<Vec<_>, _>>()?;
     let count = per_coordinate[0].control_points().len();
