@@ -42,3 +42,16 @@ report:
 snapshots:
     INSTA_UPDATE=always cargo test --release --test claims_snapshot
     git diff --stat snapshots/
+
+# The Python package (python/): build it into a virtualenv with maturin and run its tests
+# (the CLI comparisons need `cargo build --release` first).
+python-test venv=(env_var("HOME") + "/.cache/trajverify-venv"):
+    python3 -m venv {{venv}}
+    {{venv}}/bin/pip install -q maturin pytest numpy scipy mpmath
+    cargo build --release
+    VIRTUAL_ENV={{venv}} {{venv}}/bin/maturin develop --release -m python/Cargo.toml
+    {{venv}}/bin/python -m pytest -q python/tests
+
+# The Python package against scipy in process (after `just python-test`).
+python-bench venv=(env_var("HOME") + "/.cache/trajverify-venv"):
+    {{venv}}/bin/python scripts/bench_python.py

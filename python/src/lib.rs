@@ -1,0 +1,243 @@
+//! `trajverify._trajverify`: the native half of the Python package (PyO3).
+//!
+//! Two kinds of entry point:
+//! - f64 kernels on numpy arrays, in process and without the GIL: the Hermite map
+//!   (`hermite_f64`, paper 000, Eq. 8 solved as in the library's [`solve_points`]) and the
+//!   natural cubic spline (`natural_spline_f64`, paper 004, Eq. 2.3), each the library's one
+//!   generic algorithm instantiated at f64;
+//! - `run`, every algorithm of the command line's `run` on a JSON document, in every number
+//!   type, and `verify`, the claims ledger: the same code and the same bytes as the CLI.
+//!
+//! Errors are exceptions: `TrajverifyError` (a `ValueError`) for input the library refuses,
+//! with the command line's one-line message naming the field, and `RuntimeError` for a method
+//! that failed on accepted input.
+
+use numpy::{PyArray2, PyReadonlyArray1, PyReadonlyArray2};
+use pyo3::create_exception;
+use pyo3::exceptions::{PyRuntimeError, PyValueError};
+use pyo3::prelude::*;
+use trajverify::algo::hermite::solve_points;
+use trajverify::cli::{run_text, Algorithm, Failure};
+use trajverify::scalar::ScalarKind;
+use trajverify::NaturalCubicSpline;
+
+create_exception!(
+    _trajverify,
+    TrajverifyError,
+    PyValueError,
+    "Input the library refuses: the message names the field, as the command line's does."
+);
+
+fn input_error(message: impl Into<String>) -> PyErr {
+    TrajverifyError::new_err(message.into())
+}
+
+/// The refusal of the first value of `values` (named `field`) that is not finite.
+fn check_finite<'a>(field: &str, values: impl IntoIterator<Item = &'a f64>) -> PyResult<()> {
+    match values.into_iter().position(|x| !x.is_finite()) {
+        Some(i) => Err(input_error(format!(
+            "field \"{field}\": entry {i} is not a finite number"
+        ))),
+        None => Ok(()),
+    }
+}
+
+/// A 2-D array as its rows.
+fn rows(array: &PyReadonlyArray2<f64>) -> Vec<Vec<f64>> {
+    array
+        .as_array()
+        .rows()
+        .into_iter()
+        .map(|r| r.to_vec())
+        .collect()
+}
+
+/// Bernstein control points (rows) of the Hermite interpolant on an interval of width
+/// `width`: `start[j]` and `end[j]` are the j-th derivative rows at both ends (one column per
+/// coordinate). The GIL is released while the map runs.
+#[pyfunction]
+fn hermite_f64<'py>(
+    py: Python<'py>,
+    start: PyReadonlyArray2<'py, f64>,
+    end: PyReadonlyArray2<'py, f64>,
+    width: f64,
+) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    let (start, end) = (rows(&start), rows(&end));
+    check_finite("start", start.iter().flatten())?;
+    check_finite("end", end.iter().flatten())?;
+    if !(width.is_finite() && width > 0.0) {
+        return Err(input_error(format!(
+            "field \"interval\": the width t1 − t0 = {width} must be a positive finite number"
+        )));
+    }
+    if start.len() != end.len() {
+        return Err(input_error(format!(
+            "field \"end\": {} derivatives where \"start\" has {}",
+            end.len(),
+            start.len()
+        )));
+    }
+    let zero = 0.0;
+    let points = py
+        .detach(|| solve_points(&start, &end, (&zero, &width)))
+        .map_err(|e| input_error(format!("field \"start\": {e}")))?;
+    PyArray2::from_vec2(py, &points).map_err(|e| PyRuntimeError::new_err(e.to_string()))
+}
+
+/// Values, first and second derivatives (one column per coordinate of `z`) of the natural
+/// cubic spline through (t_i, z_i) at the points `at`, all inside [t_0, t_N]. As `run
+/// natural-spline` does on the exact doubles: the piece is found by exact comparison, the
+/// spacings and the distances to the piece's ends are rounded once (IEEE subtraction).
+#[pyfunction]
+#[allow(clippy::type_complexity)]
+fn natural_spline_f64<'py>(
+    py: Python<'py>,
+    t: PyReadonlyArray1<'py, f64>,
+    z: PyReadonlyArray2<'py, f64>,
+    at: PyReadonlyArray1<'py, f64>,
+) -> PyResult<(
+    Bound<'py, PyArray2<f64>>,
+    Bound<'py, PyArray2<f64>>,
+    Bound<'py, PyArray2<f64>>,
+)> {
+    let t = t.as_array().to_vec();
+    let at = at.as_array().to_vec();
+    let z = rows(&z);
+    check_finite("t", &t)?;
+    check_finite("z", z.iter().flatten())?;
+    check_finite("at", &at)?;
+    if t.len() < 2 {
+        return Err(input_error(
+            "field \"t\": a spline needs at least two knots",
+        ));
+    }
+    if z.len() != t.len() {
+        return Err(input_error(format!(
+            "field \"z\": {} values for {} knots",
+            z.len(),
+            t.len()
+        )));
+    }
+    if let Some(i) = (1..t.len()).find(|&i| t[i] <= t[i - 1]) {
+        return Err(input_error(format!(
+            "field \"t[{i}]\": knots must increase ({} after {})",
+            t[i],
+            t[i - 1]
+        )));
+    }
+    let (first, last) = (t[0], t[t.len() - 1]);
+    if let Some(k) = at.iter().position(|x| *x < first || *x > last) {
+        return Err(input_error(format!(
+            "field \"at[{k}]\": {} lies outside the knots [{first}, {last}], where the spline is not defined",
+            at[k]
+        )));
+    }
+    let dims = z.first().map_or(0, Vec::len);
+    let columns = py.detach(|| {
+        let spacings: Vec<f64> = t.windows(2).map(|w| w[1] - w[0]).collect();
+        let splines = (0..dims)
+            .map(|c| {
+                let values = z.iter().map(|row| row[c]).collect();
+                NaturalCubicSpline::with_spacings(t.clone(), spacings.clone(), values)
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        let mut out = [vec![], vec![], vec![]];
+        for q in &at {
+            let piece = (1 + t[1..].partition_point(|k| k < q)).min(t.len() - 1);
+            let (u, v) = (t[piece] - q, q - t[piece - 1]);
+            let jets: Vec<[f64; 3]> = splines
+                .iter()
+                .map(|s| s.eval_offsets(&u, &v, piece))
+                .collect();
+            for (j, column) in out.iter_mut().enumerate() {
+                column.push(jets.iter().map(|jet| jet[j]).collect::<Vec<f64>>());
+            }
+        }
+        Ok::<_, trajverify::algo::param::natural::SplineError>(out)
+    });
+    let [values, first, second] = columns.map_err(|e| input_error(format!("field \"t\": {e}")))?;
+    let array = |rows: Vec<Vec<f64>>| {
+        if rows.is_empty() {
+            return Ok(PyArray2::zeros(py, [0, dims], false));
+        }
+        PyArray2::from_vec2(py, &rows).map_err(|e| PyRuntimeError::new_err(e.to_string()))
+    };
+    Ok((array(values)?, array(first)?, array(second)?))
+}
+
+/// The JSON line `trajverify run <algorithm> [--scalar <scalar>]` prints for the JSON document
+/// `input` (without the newline). The GIL is released while it runs.
+#[pyfunction]
+#[pyo3(signature = (algorithm, input, scalar=None))]
+fn run(py: Python<'_>, algorithm: &str, input: &str, scalar: Option<&str>) -> PyResult<String> {
+    use clap::ValueEnum;
+    let algorithm = Algorithm::from_str(algorithm, false).map_err(|_| {
+        let names: Vec<String> = Algorithm::value_variants()
+            .iter()
+            .filter_map(|a| a.to_possible_value().map(|v| v.get_name().to_string()))
+            .collect();
+        input_error(format!(
+            "algorithm: unknown algorithm \"{algorithm}\" (expected one of {})",
+            names.join(", ")
+        ))
+    })?;
+    let scalar = scalar
+        .map(|s| s.parse::<ScalarKind>())
+        .transpose()
+        .map_err(|e| input_error(format!("scalar: {e}")))?;
+    let input = input.to_string();
+    match py.detach(move || run_text(algorithm, scalar, &input)) {
+        Ok(mut line) => {
+            line.truncate(line.trim_end().len());
+            Ok(line)
+        }
+        Err(failure) => Err(failure_error(failure)),
+    }
+}
+
+fn failure_error(failure: Failure) -> PyErr {
+    match failure {
+        Failure::Usage(m) => input_error(m),
+        Failure::Run(m) | Failure::Internal(m) => PyRuntimeError::new_err(m),
+    }
+}
+
+/// Run `trajverify verify` (all papers, or those of `papers`) into the directory `out`,
+/// which must not exist or be empty; returns what the command prints.
+#[pyfunction]
+#[pyo3(signature = (out, papers=None))]
+fn verify(py: Python<'_>, out: &str, papers: Option<Vec<String>>) -> PyResult<String> {
+    use clap::Parser;
+    let mut args = vec![
+        "trajverify".to_string(),
+        "verify".into(),
+        "--out".into(),
+        out.into(),
+    ];
+    for paper in papers.unwrap_or_default() {
+        args.push("--paper".into());
+        args.push(paper);
+    }
+    let cli = trajverify::cli::Cli::try_parse_from(&args).map_err(|e| {
+        input_error(
+            e.render()
+                .to_string()
+                .lines()
+                .next()
+                .unwrap_or("")
+                .to_string(),
+        )
+    })?;
+    py.detach(move || trajverify::cli::execute(cli))
+        .map_err(failure_error)
+}
+
+#[pymodule]
+fn _trajverify(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("TrajverifyError", m.py().get_type::<TrajverifyError>())?;
+    m.add_function(wrap_pyfunction!(hermite_f64, m)?)?;
+    m.add_function(wrap_pyfunction!(natural_spline_f64, m)?)?;
+    m.add_function(wrap_pyfunction!(run, m)?)?;
+    m.add_function(wrap_pyfunction!(verify, m)?)?;
+    Ok(())
+}
