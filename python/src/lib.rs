@@ -17,6 +17,7 @@ use pyo3::create_exception;
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use trajverify::algo::hermite::solve_points;
+use trajverify::algo::param::natural::piece_index;
 use trajverify::cli::{run_text, Algorithm, Failure};
 use trajverify::scalar::ScalarKind;
 use trajverify::NaturalCubicSpline;
@@ -143,7 +144,7 @@ fn natural_spline_f64<'py>(
             .collect::<Result<Vec<_>, _>>()?;
         let mut out = [vec![], vec![], vec![]];
         for q in &at {
-            let piece = (1 + t[1..].partition_point(|k| k < q)).min(t.len() - 1);
+            let piece = piece_index(&t, q);
             let (u, v) = (t[piece] - q, q - t[piece - 1]);
             let jets: Vec<[f64; 3]> = splines
                 .iter()

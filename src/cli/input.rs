@@ -164,17 +164,20 @@ pub fn only_fields(obj: &Map<String, Value>, known: &[&str]) -> Result<(), Input
 /// A number (JSON number or numeric string) at `path`, read exactly. The path is any
 /// `Display` (`format_args!("at[{i}]")`), formatted only for an error message.
 pub fn number(v: &Value, path: impl std::fmt::Display) -> Result<Exact, InputError> {
-    let text = match v {
-        Value::Number(n) => n.as_str(),
-        Value::String(s) => s.as_str(),
-        other => {
-            return fail(format!(
-                "field \"{path}\": expected a number or a numeric string, found {}",
-                kind(other)
-            ))
-        }
-    };
+    let text = number_text(v, &path)?;
     parse_exact(text).map_err(|e| InputError(format!("field \"{path}\": {e}")))
+}
+
+/// The text of a JSON number or string at `path`, the refusal for any other JSON type.
+fn number_text<'a>(v: &'a Value, path: &dyn std::fmt::Display) -> Result<&'a str, InputError> {
+    match v {
+        Value::Number(n) => Ok(n.as_str()),
+        Value::String(s) => Ok(s.as_str()),
+        other => fail(format!(
+            "field \"{path}\": expected a number or a numeric string, found {}",
+            kind(other)
+        )),
+    }
 }
 
 /// The number at `path` in the number type `T`: the same value as `T::from_exact` of
@@ -197,13 +200,7 @@ pub fn number_in<T: crate::scalar::Field>(
 /// The JSON value at `path` if it can be a number (a JSON number or a string), read later
 /// by [`number_in`] in the number type of the run.
 pub fn number_value(v: &Value, path: impl std::fmt::Display) -> Result<&Value, InputError> {
-    match v {
-        Value::Number(_) | Value::String(_) => Ok(v),
-        other => fail(format!(
-            "field \"{path}\": expected a number or a numeric string, found {}",
-            kind(other)
-        )),
-    }
+    number_text(v, &path).map(|_| v)
 }
 
 /// The path of coordinate `coordinate` of entry `index` of a [`uniform_values`] list named

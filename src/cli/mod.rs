@@ -258,11 +258,11 @@ impl Rendered {
     /// number is not finite).
     fn into_text(self) -> Result<String, RunError> {
         let internal = |e: serde_json::Error| RunError::internal(e);
+        let value_route = |value: Value, extra| {
+            serde_json::to_string(&Self::finish(value, extra)?).map_err(internal)
+        };
         let (mut text, keys) = match self.body {
-            Body::Value(value) => {
-                let value = Self::finish(value, self.extra)?;
-                return serde_json::to_string(&value).map_err(internal);
-            }
+            Body::Value(value) => return value_route(value, self.extra),
             Body::Text(text, keys) => (text, keys),
         };
         // Plain text takes the extra fields as they are when they can only be appended: a
@@ -275,9 +275,7 @@ impl Rendered {
                     && output::check_finite(value, key, "").is_ok()
             });
         if !appendable {
-            let value = serde_json::from_str(&text).map_err(internal)?;
-            let value = Self::finish(value, self.extra)?;
-            return serde_json::to_string(&value).map_err(internal);
+            return value_route(serde_json::from_str(&text).map_err(internal)?, self.extra);
         }
         text.pop();
         for (key, value) in &self.extra {

@@ -246,7 +246,7 @@ fn eval<T: Field>(
         .iter()
         .map(|q| {
             // The piece is located on the exact point: the first i ≥ 1 with q ≤ tᵢ.
-            let piece = (1 + t[1..].partition_point(|k| k < q)).min(t.len() - 1);
+            let piece = crate::algo::param::natural::piece_index(t, q);
             // The distances to the piece's ends, exact, then rounded once.
             let u = conv(&(t[piece].clone() - q));
             let v = conv(&(q.clone() - &t[piece - 1]));

@@ -169,8 +169,7 @@ pub fn write_f64(x: f64, out: &mut String) {
         return;
     }
     if !x.is_finite() {
-        use std::fmt::Write;
-        let _ = write!(out, "{x:?}"); // "NaN", "inf", "-inf"; writing to a String cannot fail
+        write_core_debug(x, out); // "NaN", "inf", "-inf"
         return;
     }
     let mut buffer = ryu::Buffer::new();
@@ -187,15 +186,20 @@ pub fn write_f64(x: f64, out: &mut String) {
     if is_decimal_tie(abs, digits, point) {
         // x lies exactly halfway between two shortest decimals: Ryū takes the even one,
         // core the upper one. Rare (only short binary fractions); core prints it.
-        let start = out.len();
-        use std::fmt::Write;
-        let _ = write!(out, "{x:?}");
-        if out[start..].ends_with(".0") {
-            out.truncate(out.len() - 2);
-        }
+        write_core_debug(x, out);
         return;
     }
     lay_out_as_core(x < 0.0, (1e-4..1e16).contains(&abs), digits, point, out);
+}
+
+/// core's `{:?}` of x appended to `out`, without a trailing ".0".
+fn write_core_debug(x: f64, out: &mut String) {
+    use std::fmt::Write;
+    let start = out.len();
+    let _ = write!(out, "{x:?}"); // writing to a String cannot fail
+    if out[start..].ends_with(".0") {
+        out.truncate(out.len() - 2);
+    }
 }
 
 /// The significant digits of Ryū's text for x > 0 (mantissa with or without a point, then

@@ -97,6 +97,14 @@ fn check_lengths<T>(knots: &[T], values: &[T]) -> Result<(), SplineError> {
     Ok(())
 }
 
+/// The piece i with t in [tᵢ₋₁, tᵢ] of increasing `knots` t₀ < … < t_N, clamped to the first
+/// and last piece: the first i ≥ 1 with t ≤ tᵢ, found by bisection. Generic over the knots'
+/// type, so that a caller locates a point on its exact knots whatever type the spline is in.
+pub fn piece_index<K: PartialOrd>(knots: &[K], t: &K) -> usize {
+    let first_not_below = 1 + knots.get(1..).unwrap_or(&[]).partition_point(|k| k < t);
+    first_not_below.min(knots.len().saturating_sub(1))
+}
+
 impl<T: Field> NaturalCubicSpline<T> {
     /// The natural cubic spline (zero second derivative at both ends) through (knots, values).
     ///
@@ -168,12 +176,9 @@ impl<T: Field> NaturalCubicSpline<T> {
         &self.second
     }
 
-    /// The interval index i with t in [tᵢ₋₁, tᵢ] (clamped to the first and last interval):
-    /// the first i ≥ 1 with t ≤ tᵢ, found by bisection since the knots increase.
+    /// The interval index i with t in [tᵢ₋₁, tᵢ] ([`piece_index`]).
     fn interval(&self, t: &T) -> usize {
-        let n = self.knots.len() - 1;
-        let first_not_below = 1 + self.knots[1..].partition_point(|k| k < t);
-        first_not_below.min(n)
+        piece_index(&self.knots, t)
     }
 
     /// (θ, θ′, θ″)(t); outside [t₀, t_N] the end cubic pieces are extended.
