@@ -12,6 +12,8 @@
 //! with the command line's one-line message naming the field, and `RuntimeError` for a method
 //! that failed on accepted input.
 
+mod ph;
+
 use numpy::{PyArray2, PyReadonlyArray1, PyReadonlyArray2};
 use pyo3::create_exception;
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
@@ -29,7 +31,7 @@ create_exception!(
     "Input the library refuses: the message names the field, as the command line's does."
 );
 
-fn input_error(message: impl Into<String>) -> PyErr {
+pub(crate) fn input_error(message: impl Into<String>) -> PyErr {
     TrajverifyError::new_err(message.into())
 }
 
@@ -203,31 +205,16 @@ fn failure_error(failure: Failure) -> PyErr {
     }
 }
 
-/// Run `trajverify verify` (all papers, or those of `papers`) into the directory `out`,
-/// which must not exist or be empty; returns what the command prints.
+/// Run the command line on `args` (without the program name), e.g. `["verify", "--out",
+/// dir]` or `["report", "convergence", …]`; returns what it prints. The GIL is released while
+/// it runs; a usage error is a `TrajverifyError` with clap's first line.
 #[pyfunction]
-#[pyo3(signature = (out, papers=None))]
-fn verify(py: Python<'_>, out: &str, papers: Option<Vec<String>>) -> PyResult<String> {
+fn command(py: Python<'_>, args: Vec<String>) -> PyResult<String> {
     use clap::Parser;
-    let mut args = vec![
-        "trajverify".to_string(),
-        "verify".into(),
-        "--out".into(),
-        out.into(),
-    ];
-    for paper in papers.unwrap_or_default() {
-        args.push("--paper".into());
-        args.push(paper);
-    }
-    let cli = trajverify::cli::Cli::try_parse_from(&args).map_err(|e| {
-        input_error(
-            e.render()
-                .to_string()
-                .lines()
-                .next()
-                .unwrap_or("")
-                .to_string(),
-        )
+    let argv = std::iter::once("trajverify".to_string()).chain(args);
+    let cli = trajverify::cli::Cli::try_parse_from(argv).map_err(|e| {
+        let text = e.render().to_string();
+        input_error(text.lines().next().unwrap_or("").to_string())
     })?;
     py.detach(move || trajverify::cli::execute(cli))
         .map_err(failure_error)
@@ -239,6 +226,8 @@ fn _trajverify(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(hermite_f64, m)?)?;
     m.add_function(wrap_pyfunction!(natural_spline_f64, m)?)?;
     m.add_function(wrap_pyfunction!(run, m)?)?;
-    m.add_function(wrap_pyfunction!(verify, m)?)?;
+    m.add_function(wrap_pyfunction!(command, m)?)?;
+    m.add_function(wrap_pyfunction!(ph::ph_fit, m)?)?;
+    m.add_class::<ph::NativePhSpline>()?;
     Ok(())
 }

@@ -3,34 +3,16 @@ mpmath (balls) and scipy (the peer, where installed), and on hostile input."""
 
 import json
 import math
-import os
 import random
-import subprocess
-from decimal import Decimal
 from fractions import Fraction
 from math import comb
-from pathlib import Path
 
 import numpy as np
 import pytest
 
 import trajverify as tv
 
-REPO = Path(__file__).resolve().parents[2]
-CLI = Path(os.environ.get("TRAJVERIFY_BIN", REPO / "target" / "release" / "trajverify"))
-needs_cli = pytest.mark.skipif(not CLI.exists(), reason=f"the command line is not built ({CLI}): cargo build --release")
-
-
-def cli(algorithm, doc, scalar=None):
-    """The command line's output for `doc` (numbers as exact decimal strings)."""
-    args = [str(CLI), "run", algorithm] + (["--scalar", scalar] if scalar else [])
-    done = subprocess.run(args, input=json.dumps(doc), capture_output=True, text=True, check=True)
-    return json.loads(done.stdout)
-
-
-def exact(x):
-    """A double's exact decimal expansion, which the command line reads exactly."""
-    return str(Decimal(float(x)))
+from helpers import REPO, cli, exact, needs_cli
 
 
 def random_hermite(rng, m, d):
@@ -197,12 +179,20 @@ def test_verify_returns_the_ledger():
         assert all(mine[c["id"]] == c for c in claims), "verify() differs from reports/claims.json"
 
 
-def test_the_readme_python_example_runs():
-    readme = REPO / "README.md"
-    if not readme.exists():
-        pytest.skip("README.md is not beside the package")
-    section = readme.read_text().split("## From Python", 1)[1].split("\n## ", 1)[0]
-    blocks = section.split("```python\n")[1:]
-    assert blocks, "the README's From Python section has no python example"
+def python_examples(path, section=None):
+    """The python blocks of a Markdown file (of one section when named)."""
+    text = path.read_text()
+    if section is not None:
+        text = text.split(section, 1)[1].split("\n## ", 1)[0]
+    return [block.split("```", 1)[0] for block in text.split("```python\n")[1:]]
+
+
+@pytest.mark.parametrize("doc, section", [("README.md", "## From Python"), ("docs/python.md", None)])
+def test_the_documented_python_examples_run(doc, section):
+    path = REPO / doc
+    if not path.exists():
+        pytest.skip(f"{doc} is not beside the package")
+    blocks = python_examples(path, section)
+    assert blocks, f"{doc} has no python example"
     for block in blocks:
-        exec(compile(block.split("```", 1)[0], "README.md", "exec"), {})
+        exec(compile(block, doc, "exec"), {})

@@ -1,0 +1,241 @@
+//! PH splines in f64 (paper 001, Algorithm 2): a curve given as an expression or as a Python
+//! function of its jet, converted by the library's [`fit`] and evaluated on numpy arrays.
+//!
+//! A Python curve reaches the library as a [`Curve`] whose `jet(t, order)` calls back into
+//! Python (the package differentiates the user's callable by Taylor arithmetic, so the
+//! derivatives are exact up to rounding, never finite differences). The conversion runs
+//! without the GIL; each callback takes it for its call. An exception raised by the callable
+//! is kept and raised once the conversion returns (the library sees a non-finite jet and stops
+//! at that segment). Every method that evaluates takes a flat array of parameters and returns
+//! a flat array; the Python class `trajverify.PhSpline` shapes them.
+
+use numpy::{PyArray1, PyReadonlyArray1};
+use pyo3::prelude::*;
+use std::sync::Mutex;
+use trajverify::algo::ph::piecewise::{
+    conversion_error, fit, FitOptions, PiecewisePh, DEFAULT_SAMPLES,
+};
+use trajverify::curve::parametric::{ParamCurve, ParamCurveArclen, ParamCurveFrame};
+use trajverify::curve::{Curve, ExprCurve};
+
+use crate::input_error;
+
+/// A curve whose jets a Python function gives: `jet(t, order)` returns (order + 1)·3 floats,
+/// row k the k-th derivative.
+struct PythonCurve {
+    jet: Py<PyAny>,
+    /// The first exception the function raised, raised again after the conversion.
+    failure: Mutex<Option<PyErr>>,
+}
+
+impl PythonCurve {
+    fn call(&self, t: f64, order: usize) -> PyResult<Vec<[f64; 3]>> {
+        Python::attach(|py| {
+            py.check_signals()?;
+            let flat: Vec<f64> = self.jet.call1(py, (t, order))?.extract(py)?;
+            if flat.len() != 3 * (order + 1) {
+                return Err(input_error(format!(
+                    "curve: the jet at t = {t} has {} numbers, expected {} (order + 1 rows of x, y, z)",
+                    flat.len(),
+                    3 * (order + 1)
+                )));
+            }
+            Ok(flat.chunks(3).map(|c| [c[0], c[1], c[2]]).collect())
+        })
+    }
+}
+
+impl Curve<f64> for PythonCurve {
+    fn jet(&self, t: &f64, order: usize) -> Vec<[f64; 3]> {
+        match self.call(*t, order) {
+            Ok(jet) => jet,
+            Err(e) => {
+                if let Ok(mut slot) = self.failure.lock() {
+                    slot.get_or_insert(e);
+                }
+                vec![[f64::NAN; 3]; order + 1]
+            }
+        }
+    }
+}
+
+/// A piecewise PH spline in f64 and the conversion error the fit measured.
+#[pyclass(frozen, module = "trajverify._trajverify")]
+pub struct NativePhSpline {
+    spline: PiecewisePh<f64>,
+    sampled_error: f64,
+}
+
+/// Convert `curve` (an expression string or a jet function) on `interval` = (a, b); the
+/// options are those of the library's [`FitOptions`].
+#[pyfunction]
+#[pyo3(signature = (curve, interval, segments, tolerance, derivatives, roll))]
+pub fn ph_fit(
+    py: Python<'_>,
+    curve: &Bound<'_, PyAny>,
+    interval: (f64, f64),
+    segments: usize,
+    tolerance: Option<f64>,
+    derivatives: usize,
+    roll: bool,
+) -> PyResult<NativePhSpline> {
+    let (a, b) = interval;
+    if !(a.is_finite() && b.is_finite() && a < b) {
+        return Err(input_error(format!(
+            "interval: [{a}, {b}] is not an interval a < b of finite numbers"
+        )));
+    }
+    let options = FitOptions {
+        segments,
+        tolerance,
+        derivatives,
+        free: None,
+        roll,
+    };
+    if let Ok(text) = curve.extract::<String>() {
+        let parsed = ExprCurve::parse(&text).map_err(|e| input_error(format!("curve: {e}")))?;
+        let compiled = parsed.compile::<f64>(&());
+        return py.detach(|| convert(&compiled, (a, b), &options));
+    }
+    let python = PythonCurve {
+        jet: curve.clone().unbind(),
+        failure: Mutex::new(None),
+    };
+    let result = py.detach(|| convert(&python, (a, b), &options));
+    let failure = python.failure.lock().ok().and_then(|mut slot| slot.take());
+    match failure {
+        Some(e) => Err(e),
+        None => result,
+    }
+}
+
+fn convert<C: Curve<f64>>(
+    curve: &C,
+    (a, b): (f64, f64),
+    options: &FitOptions<f64>,
+) -> PyResult<NativePhSpline> {
+    let spline = fit(curve, (&a, &b), options).map_err(|e| {
+        // Messages about an option already name it; the others are about the curve.
+        let text = e.to_string();
+        let named = ["segments:", "derivatives:", "tolerance:"];
+        if named.iter().any(|field| text.starts_with(field)) {
+            input_error(text)
+        } else {
+            input_error(format!("curve: {text}"))
+        }
+    })?;
+    let sampled_error = conversion_error(curve, &spline, DEFAULT_SAMPLES).max;
+    Ok(NativePhSpline {
+        spline,
+        sampled_error,
+    })
+}
+
+fn curve_error(e: impl std::fmt::Display) -> PyErr {
+    input_error(e.to_string())
+}
+
+/// Apply `f` to every parameter, flattening the rows it returns.
+fn each<'py>(
+    py: Python<'py>,
+    ts: &PyReadonlyArray1<'py, f64>,
+    f: impl Fn(f64) -> PyResult<Vec<f64>>,
+) -> PyResult<Bound<'py, PyArray1<f64>>> {
+    let mut out = Vec::new();
+    for t in ts.as_array() {
+        out.extend(f(*t)?);
+    }
+    Ok(PyArray1::from_vec(py, out))
+}
+
+#[pymethods]
+impl NativePhSpline {
+    /// (a, b).
+    fn interval(&self) -> (f64, f64) {
+        self.spline.domain()
+    }
+    /// The number of segments N.
+    fn segments(&self) -> usize {
+        self.spline.segments().len()
+    }
+    /// The sampled conversion error E (Eq. 21) measured after the fit: an estimate.
+    fn sampled_error(&self) -> f64 {
+        self.sampled_error
+    }
+    /// The derivatives 0…order at each t, flat: len(t)·(order + 1)·3 numbers.
+    fn derivatives<'py>(
+        &self,
+        py: Python<'py>,
+        t: PyReadonlyArray1<'py, f64>,
+        order: usize,
+    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        each(py, &t, |t| {
+            let jet = self.spline.derivatives(&t, order).map_err(curve_error)?;
+            Ok(jet.into_iter().flatten().collect())
+        })
+    }
+    /// s(t) at each t.
+    fn arc_length<'py>(
+        &self,
+        py: Python<'py>,
+        t: PyReadonlyArray1<'py, f64>,
+    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        each(py, &t, |t| {
+            Ok(vec![self.spline.arc_length(&t).map_err(curve_error)?])
+        })
+    }
+    /// The whole length s(b).
+    fn length(&self) -> PyResult<f64> {
+        self.spline.length().map_err(curve_error)
+    }
+    /// The parameter t with s(t) = s, for each s.
+    fn parameter_at_length<'py>(
+        &self,
+        py: Python<'py>,
+        s: PyReadonlyArray1<'py, f64>,
+        tolerance: f64,
+    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        each(py, &s, |s| {
+            let t = self
+                .spline
+                .parameter_at_length(&s, &tolerance)
+                .map_err(curve_error)?;
+            Ok(vec![t])
+        })
+    }
+    /// Point (3), axes (9, row k the k-th axis), ω (3) and speed (1) at each t: 16 numbers.
+    fn frames<'py>(
+        &self,
+        py: Python<'py>,
+        t: PyReadonlyArray1<'py, f64>,
+    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        each(py, &t, |t| {
+            let f = self.spline.frame(&t).map_err(curve_error)?;
+            let mut row: Vec<f64> = f.point.to_vec();
+            row.extend(f.axes.iter().flatten());
+            row.extend(f.omega);
+            row.push(f.speed);
+            Ok(row)
+        })
+    }
+    /// The control points of every segment, flat: N·(degree + 1)·3 numbers.
+    fn control_points<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        let flat = self
+            .spline
+            .segments()
+            .iter()
+            .flat_map(|s| s.control_points().into_iter().flatten())
+            .collect();
+        PyArray1::from_vec(py, flat)
+    }
+    /// The preimage A(ξ) of every segment as quaternions (w, x, y, z), flat.
+    fn preimages<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        let flat = self
+            .spline
+            .segments()
+            .iter()
+            .flat_map(|s| s.preimage().iter().flat_map(|q| [q.w, q.x, q.y, q.z]))
+            .collect();
+        PyArray1::from_vec(py, flat)
+    }
+}
