@@ -40,7 +40,10 @@ pub mod piecewise;
 
 use crate::curve::bezier::BezierCurve;
 use crate::numeric::linalg::Matrix;
-use crate::numeric::poly::differences::{anti_difference, backward_anti_difference};
+use crate::numeric::poly::differences::{
+    anti_difference, anti_difference_lanes, backward_anti_difference,
+    backward_anti_difference_lanes,
+};
 use crate::numeric::poly::{binomial, falling_factorial, falling_factorial_in, int_in, Bernstein};
 use crate::scalar::{powi, Field};
 
@@ -123,22 +126,7 @@ impl<T: Field> HermiteData<T> {
 
     /// The shape `new` checks, checked again where the fields may have been set directly.
     fn check(&self) -> Result<(), HermiteError> {
-        if self.start.is_empty() || self.end.is_empty() {
-            return Err(HermiteError::Empty);
-        }
-        if self.start.len() != self.end.len() {
-            return Err(HermiteError::LengthMismatch {
-                start: self.start.len(),
-                end: self.end.len(),
-            });
-        }
-        // Written so that NaN (which compares false both ways) is refused too.
-        if self.t0.partial_cmp(&self.t1) != Some(std::cmp::Ordering::Less) {
-            return Err(HermiteError::EmptyInterval);
-        }
-        if !(self.t0.is_finite() && self.t1.is_finite()) {
-            return Err(HermiteError::NotFinite("the interval [t0, t1]".into()));
-        }
+        check_shape(self.start.len(), self.end.len(), (&self.t0, &self.t1))?;
         for (name, list) in [("start", &self.start), ("end", &self.end)] {
             if let Some(j) = list.iter().position(|x| !x.is_finite()) {
                 return Err(HermiteError::NotFinite(format!("{name}[{j}]")));
@@ -192,7 +180,7 @@ impl<T: Field> HermiteData<T> {
 
     /// [`HermiteData::solve`] after [`HermiteData::check`], with the scales of
     /// [`derivative_scales`] for this data's m and interval already formed: they depend on
-    /// nothing else, so [`solve_points`] forms them once for all its coordinates.
+    /// nothing else.
     fn solve_scaled(&self, scales: &[T]) -> Result<Bernstein<T>, HermiteError> {
         let scaled =
             |x: &[T]| -> Vec<T> { x.iter().zip(scales).map(|(v, s)| v.clone() * s).collect() };
@@ -228,34 +216,95 @@ pub fn solve_points<T: Field>(
     if dims == 0 || start.iter().chain(end).any(|v| v.len() != dims) {
         return Err(HermiteError::DimensionMismatch);
     }
-    let coordinate = |v: &[Vec<T>], c: usize| v.iter().map(|p| p[c].clone()).collect();
-    // Every coordinate shares m and the interval, hence the scales: formed once, after the
-    // first coordinate's checks (so that errors come in the order `solve` gives them).
-    let mut scales: Option<Vec<T>> = None;
-    let per_coordinate = (0..dims)
-        .map(|c| {
-            let data = HermiteData::new(
-                coordinate(start, c),
-                coordinate(end, c),
-                (t0.clone(), t1.clone()),
-            )?;
-            data.check()?;
-            let scales = match &mut scales {
-                Some(s) => s,
-                None => scales.insert(derivative_scales(data.derivatives(), (t0, t1))?),
-            };
-            data.solve_scaled(scales)
-        })
-        .collect::<Result<Vec<_>, _>>()?;
-    let count = per_coordinate[0].control_points().len();
-    Ok((0..count)
-        .map(|k| {
-            per_coordinate
-                .iter()
-                .map(|b| b.control_points()[k].clone())
-                .collect()
-        })
-        .collect())
+    let points = solve_lanes(&start.concat(), &end.concat(), dims, (t0, t1))?;
+    Ok(points.chunks(dims).map(<[T]>::to_vec).collect())
+}
+
+/// [`solve_points`] on flat data: `lanes` problems (coordinates, or whole batches of
+/// problems) side by side, the j-th derivative of problem l at `start[j·lanes + l]` and
+/// `end[j·lanes + l]`; control point k of problem l is entry `k·lanes + l` of the result.
+///
+/// Each problem is the one [`HermiteData::solve`] solves, all with one m and one interval:
+/// the shape is checked once, the scales formed once, and the two difference tables run on
+/// every problem at once as lanes (bit for bit each problem's own tables, without allocating
+/// per problem). Errors come in the order a loop over the problems would give them: problem
+/// 0's checks, the scales, then per problem its non-finite data before its overflowing
+/// control points.
+///
+/// # Errors
+/// [`HermiteError::DimensionMismatch`] for `lanes` = 0 or lengths that are not multiples of
+/// it; then those of [`solve_points`].
+pub fn solve_lanes<T: Field>(
+    start: &[T],
+    end: &[T],
+    lanes: usize,
+    (t0, t1): (&T, &T),
+) -> Result<Vec<T>, HermiteError> {
+    if lanes == 0 || start.len() % lanes != 0 || end.len() % lanes != 0 {
+        return Err(HermiteError::DimensionMismatch);
+    }
+    check_shape(start.len() / lanes, end.len() / lanes, (t0, t1))?;
+    check_lane(start, end, lanes, 0)?;
+    let scales = derivative_scales(start.len() / lanes - 1, (t0, t1))?;
+    // One buffer, p₀…pₘ from the start's scaled derivatives and pₘ₊₁…pₙ from the end's.
+    let mut points: Vec<T> = Vec::with_capacity(start.len() + end.len());
+    for x in [start, end] {
+        for (row, s) in x.chunks(lanes).zip(&scales) {
+            points.extend(row.iter().map(|v| v.clone() * s));
+        }
+    }
+    let (head, tail) = points.split_at_mut(start.len());
+    anti_difference_lanes(head, lanes);
+    backward_anti_difference_lanes(tail, lanes);
+    if [start, end, &points]
+        .iter()
+        .all(|x| x.iter().all(Field::is_finite))
+    {
+        return Ok(points);
+    }
+    for l in 0..lanes {
+        check_lane(start, end, lanes, l)?;
+        if let Some(k) = points.chunks(lanes).position(|p| !p[l].is_finite()) {
+            return Err(HermiteError::NotFinite(format!(
+                "control point {k} (overflow)"
+            )));
+        }
+    }
+    Ok(points)
+}
+
+/// The checks of [`HermiteData::new`] that do not depend on the values: data at both ends,
+/// as many derivatives at each, and a finite interval t₀ < t₁.
+fn check_shape<T: Field>(start: usize, end: usize, (t0, t1): (&T, &T)) -> Result<(), HermiteError> {
+    if start == 0 || end == 0 {
+        return Err(HermiteError::Empty);
+    }
+    if start != end {
+        return Err(HermiteError::LengthMismatch { start, end });
+    }
+    // Written so that NaN (which compares false both ways) is refused too.
+    if t0.partial_cmp(t1) != Some(std::cmp::Ordering::Less) {
+        return Err(HermiteError::EmptyInterval);
+    }
+    if !(t0.is_finite() && t1.is_finite()) {
+        return Err(HermiteError::NotFinite("the interval [t0, t1]".into()));
+    }
+    Ok(())
+}
+
+/// The finiteness check of [`HermiteData::new`] on problem l of [`solve_lanes`]'s data.
+fn check_lane<T: Field>(
+    start: &[T],
+    end: &[T],
+    lanes: usize,
+    l: usize,
+) -> Result<(), HermiteError> {
+    for (name, list) in [("start", start), ("end", end)] {
+        if let Some(j) = list.chunks(lanes).position(|p| !p[l].is_finite()) {
+            return Err(HermiteError::NotFinite(format!("{name}[{j}]")));
+        }
+    }
+    Ok(())
 }
 
 /// The Hermite interpolant of points in Rᴰ as a curve of t ∈ [t₀, t₁] (like scipy's
@@ -418,6 +467,57 @@ mod tests {
 
     fn q(n: i64, d: i64) -> BigRational {
         BigRational::new(n.into(), d.into())
+    }
+
+    #[test]
+    fn lanes_are_each_problem_solved_alone_bit_for_bit() {
+        let mut state = 7u64;
+        let mut next = || {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((state >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 10f64.powi((state % 9) as i32 - 4)
+        };
+        for (m, lanes) in [(0, 3), (2, 7), (11, 4)] {
+            let start: Vec<f64> = (0..(m + 1) * lanes).map(|_| next()).collect();
+            let end: Vec<f64> = (0..(m + 1) * lanes).map(|_| next()).collect();
+            let points = solve_lanes(&start, &end, lanes, (&0.25, &1.75)).unwrap();
+            for l in 0..lanes {
+                let lane = |x: &[f64]| x.chunks(lanes).map(|row| row[l]).collect::<Vec<_>>();
+                let alone = HermiteData::new(lane(&start), lane(&end), (0.25, 1.75))
+                    .unwrap()
+                    .solve()
+                    .unwrap();
+                for (k, p) in alone.control_points().iter().enumerate() {
+                    assert_eq!(
+                        points[k * lanes + l].to_bits(),
+                        p.to_bits(),
+                        "m {m} lane {l} k {k}"
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn lanes_report_errors_in_the_order_of_a_loop_over_the_problems() {
+        // Problem 0 overflows, problem 1 has a NaN: the loop meets problem 0's overflow first.
+        // (m = 1 on [0, 3]: p₁ = x₀ + x₀′·3/3 = 3e308.)
+        let start = [1.5e308, f64::NAN, 1.5e308, 0.0];
+        let end = [0.0, 0.0, 0.0, 0.0];
+        let err = solve_lanes(&start, &end, 2, (&0.0, &3.0)).unwrap_err();
+        assert!(
+            matches!(&err, HermiteError::NotFinite(w) if w.contains("control point")),
+            "{err}"
+        );
+        // A NaN in problem 0 comes before anything else.
+        let start = [f64::NAN, 0.0, 1.5e308, 0.0];
+        let err = solve_lanes(&start, &end, 2, (&0.0, &3.0)).unwrap_err();
+        assert_eq!(err, HermiteError::NotFinite("start[0]".into()));
+        assert_eq!(
+            solve_lanes(&[1.0, 2.0, 3.0], &[1.0], 2, (&0.0, &1.0)),
+            Err(HermiteError::DimensionMismatch)
+        );
     }
 
     fn ints(v: &[i64]) -> Vec<BigRational> {

@@ -20,13 +20,51 @@ use crate::scalar::Field;
 /// pairwise with `combine(left, right)`, and the result holds the first (or last) entry of every
 /// row. All the recursions of Eqs. 6–9 are of this form.
 fn table_edge<T: Field>(x: &[T], last: bool, combine: impl Fn(&T, &T) -> T) -> Vec<T> {
-    let mut row = x.to_vec();
-    let mut out = Vec::with_capacity(x.len());
-    while let Some(edge) = if last { row.last() } else { row.first() } {
-        out.push(edge.clone());
-        row = row.windows(2).map(|w| combine(&w[0], &w[1])).collect();
+    let mut edge = x.to_vec();
+    table_edge_in_place(&mut edge, 1, last, combine);
+    edge
+}
+
+/// [`table_edge`] in place, for `lanes` independent tables side by side: entry i of row 0 is
+/// `x[i·lanes .. (i+1)·lanes]`, one number per table, and so is entry i of the edge that
+/// replaces it. Each table sees exactly the operations of the table written out row by row
+/// (entry k of row r+1 is combine(entry k, entry k+1) of row r), in the same order, so the
+/// numbers are the same bit for bit; only where they are stored differs:
+/// - first edge: row r occupies entries r…n−1, updated from the end so that entry k−1 is
+///   still row r−1's when entry k is formed; the first entry of row r stays at r;
+/// - last edge: row r occupies entries 0…n−1−r, updated from the front; the last entry of
+///   row r stays at n−1−r, so the edge comes out reversed and is turned round at the end.
+fn table_edge_in_place<T: Field>(
+    x: &mut [T],
+    lanes: usize,
+    last: bool,
+    combine: impl Fn(&T, &T) -> T,
+) {
+    let n = x.len().checked_div(lanes).unwrap_or(0);
+    for r in 1..n {
+        if last {
+            for i in 0..(n - r) * lanes {
+                x[i] = combine(&x[i], &x[i + lanes]);
+            }
+        } else {
+            for i in (r * lanes..n * lanes).rev() {
+                x[i] = combine(&x[i - lanes], &x[i]);
+            }
+        }
     }
-    out
+    if last {
+        reverse_entries(x, lanes);
+    }
+}
+
+/// The entries of `x` (each `lanes` numbers) in reverse order, in place.
+fn reverse_entries<T>(x: &mut [T], lanes: usize) {
+    let n = x.len().checked_div(lanes).unwrap_or(0);
+    for i in 0..n / 2 {
+        for l in 0..lanes {
+            x.swap(i * lanes + l, (n - 1 - i) * lanes + l);
+        }
+    }
 }
 
 /// Δʲx₀ for j = 0…n (Eq. 6), by the recursion on the whole difference table.
@@ -43,17 +81,33 @@ pub fn backward_differences<T: Field>(x: &[T]) -> Vec<T> {
 /// superscript −j+1), by repeated pairwise sums: row j of the table holds Sʲ(yᵢ) and
 /// xⱼ = Sʲ(y₀).
 pub fn anti_difference<T: Field>(y: &[T]) -> Vec<T> {
-    table_edge(y, false, |a, b| a.clone() + b)
+    let mut x = y.to_vec();
+    anti_difference_lanes(&mut x, 1);
+    x
+}
+
+/// [`anti_difference`] of `lanes` sequences at once, in place, interleaved: y_j of sequence l
+/// is `y[j·lanes + l]` and is replaced by x_j. Bit for bit [`anti_difference`] of each.
+pub fn anti_difference_lanes<T: Field>(y: &mut [T], lanes: usize) {
+    table_edge_in_place(y, lanes, false, |a, b| a.clone() + b);
 }
 
 /// The inverse of [`backward_differences`]: x with ∇ʲxₙ = yⱼ (Eq. 9; A3 is self-inverse).
 pub fn backward_anti_difference<T: Field>(y: &[T]) -> Vec<T> {
-    // A3 applied to y gives (xₙ, xₙ₋₁, …, x₀): apply the backward difference table to y
-    // read in reverse, which computes exactly Σₖ (−1)ᵏ C(j,k) yₖ for each j.
-    let reversed: Vec<T> = y.iter().rev().cloned().collect();
-    let mut x = backward_differences(&reversed);
-    x.reverse();
+    let mut x = y.to_vec();
+    backward_anti_difference_lanes(&mut x, 1);
     x
+}
+
+/// [`backward_anti_difference`] of `lanes` interleaved sequences in place, as
+/// [`anti_difference_lanes`]. Bit for bit [`backward_anti_difference`] of each.
+pub fn backward_anti_difference_lanes<T: Field>(y: &mut [T], lanes: usize) {
+    // A3 applied to y gives (xₙ, xₙ₋₁, …, x₀): the backward difference table of y read in
+    // reverse, which computes exactly Σₖ (−1)ᵏ C(j,k) yₖ for each j. Read forwards, entry k
+    // of that table's next row is yₖ − yₖ₊₁ (the same two operands as the reversed table's
+    // difference) and its last edge is the forward reading's first.
+    table_edge_in_place(y, lanes, false, |a, b| a.clone() - b);
+    reverse_entries(y, lanes);
 }
 
 /// Eq. 8 exactly as the extracted text prints it: Δ^{−j}(y_i) = Δ^{j+1}(y_{i+1}) + Δ^{j+1}(y_i),
@@ -115,6 +169,53 @@ mod tests {
         v.iter()
             .map(|&x| BigRational::from_integer(x.into()))
             .collect()
+    }
+
+    /// Doubles that make rounding differ with the order of operations.
+    fn scrambled(count: usize, seed: u64) -> Vec<f64> {
+        let mut state = seed;
+        (0..count)
+            .map(|_| {
+                state = state
+                    .wrapping_mul(6364136223846793005)
+                    .wrapping_add(1442695040888963407);
+                let mantissa = (state >> 11) as f64 / (1u64 << 53) as f64;
+                (mantissa - 0.5) * 10f64.powi((state % 17) as i32 - 8)
+            })
+            .collect()
+    }
+
+    #[test]
+    fn lanes_are_each_sequence_alone_bit_for_bit() {
+        for (n, lanes) in [(1, 1), (2, 3), (6, 5), (25, 4)] {
+            let y = scrambled(n * lanes, (n * 31 + lanes) as u64);
+            let lane = |l: usize| -> Vec<f64> { (0..n).map(|j| y[j * lanes + l]).collect() };
+            let (mut forward, mut backward) = (y.clone(), y.clone());
+            anti_difference_lanes(&mut forward, lanes);
+            backward_anti_difference_lanes(&mut backward, lanes);
+            for l in 0..lanes {
+                let alone = lane(l);
+                // The reference: Eq. 9 as written, the backward table of y read in reverse.
+                let reversed: Vec<f64> = alone.iter().rev().copied().collect();
+                let mut eq9 = backward_differences(&reversed);
+                eq9.reverse();
+                for j in 0..n {
+                    assert_eq!(
+                        forward[j * lanes + l].to_bits(),
+                        anti_difference(&alone)[j].to_bits()
+                    );
+                    assert_eq!(
+                        backward[j * lanes + l].to_bits(),
+                        eq9[j].to_bits(),
+                        "n {n} lane {l} j {j}"
+                    );
+                    assert_eq!(
+                        backward_anti_difference(&alone)[j].to_bits(),
+                        eq9[j].to_bits()
+                    );
+                }
+            }
+        }
     }
 
     #[test]
