@@ -5,11 +5,16 @@ the ratios (best of several calls; run after `maturin develop --release`, see th
   10⁴ problems of 3 derivatives in 3-D (scipy: one `BPoly.from_derivatives` per problem, the
   only way it takes different data per problem; a vectorised y of shape (2, m, N·d) in one
   call for the batch, which is the fastest scipy form);
-- natural cubic spline on 2·10⁴ knots evaluated with two derivatives at 2·10⁴ points.
-
-pydubins does not build on Python ≥ 3.11 (its 1.0.1 source), so Dubins is not compared here.
+- natural cubic spline on 2·10⁴ knots evaluated with two derivatives at 2·10⁴ points;
+- Dubins paths through 2000 waypoints (1999 legs, two samples each), when pydubins is
+  installed: its 1.0.1 sdist does not build on Python ≥ 3.11 (generated C for an older
+  Python, no `core.pxd`); its repository (AndrewWalker/pydubins) builds with Cython < 3 after
+  deleting the generated `dubins/dubins.c` (`pip install --no-build-isolation .`).
+  trajverify decides every word on the exact input in ball arithmetic (docs/design.md) and
+  pydubins in doubles, so this is the price of that guarantee, not of the same computation.
 """
 
+import math
 import time
 
 import numpy as np
@@ -57,10 +62,40 @@ def main():
     theirs = best(scipy_spline, 10)
     rows.append(("natural spline, 2·10⁴ knots and points, two derivatives", ours, theirs))
 
-    print("| job | trajverify | scipy | trajverify / scipy |")
+    dubins_row = dubins_times(rng)
+    if dubins_row is not None:
+        rows.append(dubins_row)
+
+    print("| job | trajverify | peer | trajverify / peer |")
     print("|---|---|---|---|")
     for job, ours, theirs in rows:
         print(f"| {job} | {ours * 1e3:.3f} ms | {theirs * 1e3:.3f} ms | {ours / theirs:.2f}× |")
+
+
+def dubins_times(rng):
+    """(job, ours, pydubins) on 1999 legs, or None without pydubins. Both get the same
+    headings (the chord directions of the neighbours) and return two samples per leg."""
+    try:
+        import dubins
+    except ImportError:
+        print("pydubins is not installed: Dubins is not compared")
+        return None
+    x, waypoints = 0.0, []
+    for _ in range(2000):
+        x += rng.uniform(100, 300)
+        waypoints.append([x, rng.uniform(-200, 200)])
+    w = waypoints
+    n = len(w)
+    headings = [math.atan2(w[min(i + 1, n - 1)][1] - w[max(i - 1, 0)][1],
+                           w[min(i + 1, n - 1)][0] - w[max(i - 1, 0)][0]) for i in range(n)]
+    ours = best(lambda: tv.dubins(w, 80, headings=headings, samples=2), 5)
+
+    def theirs_call():
+        for i in range(n - 1):
+            path = dubins.shortest_path((*w[i], headings[i]), (*w[i + 1], headings[i + 1]), 80.0)
+            path.sample_many(path.path_length() / 2)
+
+    return ("Dubins, 1999 legs, two samples each (pydubins)", ours, best(theirs_call, 5))
 
 
 if __name__ == "__main__":

@@ -2,7 +2,7 @@
 //!
 //! Two kinds of entry point:
 //! - f64 kernels on numpy arrays, in process and without the GIL: the Hermite map
-//!   (`hermite_f64`, paper 000, Eq. 8 solved as in the library's [`solve_points`]) and the
+//!   (`hermite_f64`, paper 000, Eq. 8 solved by the library's [`solve_lanes`]) and the
 //!   natural cubic spline (`natural_spline_f64`, paper 004, Eq. 2.3), each the library's one
 //!   generic algorithm instantiated at f64;
 //! - `run`, every algorithm of the command line's `run` on a JSON document, in every number
@@ -14,11 +14,12 @@
 
 mod ph;
 
-use numpy::{PyArray2, PyReadonlyArray1, PyReadonlyArray2};
+use numpy::{PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2};
 use pyo3::create_exception;
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
-use trajverify::algo::hermite::solve_points;
+use std::borrow::Cow;
+use trajverify::algo::hermite::solve_lanes;
 use trajverify::algo::param::natural::piece_index;
 use trajverify::cli::{run_text, Algorithm, Failure};
 use trajverify::scalar::ScalarKind;
@@ -36,8 +37,12 @@ pub(crate) fn input_error(message: impl Into<String>) -> PyErr {
 }
 
 /// The refusal of the first value of `values` (named `field`) that is not finite.
-fn check_finite<'a>(field: &str, values: impl IntoIterator<Item = &'a f64>) -> PyResult<()> {
-    match values.into_iter().position(|x| !x.is_finite()) {
+fn check_finite(field: &str, values: &[f64]) -> PyResult<()> {
+    // A fold without early exit, which the compiler vectorises; the position only on failure.
+    if values.iter().fold(true, |finite, x| finite & x.is_finite()) {
+        return Ok(());
+    }
+    match values.iter().position(|x| !x.is_finite()) {
         Some(i) => Err(input_error(format!(
             "field \"{field}\": entry {i} is not a finite number"
         ))),
@@ -57,7 +62,9 @@ fn rows(array: &PyReadonlyArray2<f64>) -> Vec<Vec<f64>> {
 
 /// Bernstein control points (rows) of the Hermite interpolant on an interval of width
 /// `width`: `start[j]` and `end[j]` are the j-th derivative rows at both ends (one column per
-/// coordinate). The GIL is released while the map runs.
+/// coordinate, or per coordinate of every problem of a batch). The rows are read in place and
+/// the map runs on all columns at once ([`solve_lanes`]) without the GIL; the result is moved
+/// into numpy without a copy.
 #[pyfunction]
 fn hermite_f64<'py>(
     py: Python<'py>,
@@ -65,26 +72,39 @@ fn hermite_f64<'py>(
     end: PyReadonlyArray2<'py, f64>,
     width: f64,
 ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-    let (start, end) = (rows(&start), rows(&end));
-    check_finite("start", start.iter().flatten())?;
-    check_finite("end", end.iter().flatten())?;
+    let ((rows, lanes), (end_rows, end_lanes)) = (start.as_array().dim(), end.as_array().dim());
+    let (start, end) = (row_major(&start), row_major(&end));
+    check_finite("start", &start)?;
+    check_finite("end", &end)?;
     if !(width.is_finite() && width > 0.0) {
         return Err(input_error(format!(
             "field \"interval\": the width t1 − t0 = {width} must be a positive finite number"
         )));
     }
-    if start.len() != end.len() {
+    if end_rows != rows {
         return Err(input_error(format!(
-            "field \"end\": {} derivatives where \"start\" has {}",
-            end.len(),
-            start.len()
+            "field \"end\": {end_rows} derivatives where \"start\" has {rows}"
+        )));
+    }
+    if end_lanes != lanes {
+        return Err(input_error(format!(
+            "field \"end\": points of dimension {end_lanes} where \"start\" has {lanes}"
         )));
     }
     let zero = 0.0;
     let points = py
-        .detach(|| solve_points(&start, &end, (&zero, &width)))
+        .detach(|| solve_lanes(&start, &end, lanes, (&zero, &width)))
         .map_err(|e| input_error(format!("field \"start\": {e}")))?;
-    PyArray2::from_vec2(py, &points).map_err(|e| PyRuntimeError::new_err(e.to_string()))
+    let count = points.len() / lanes.max(1);
+    PyArray1::from_vec(py, points).reshape([count, lanes])
+}
+
+/// The numbers of a 2-D array row by row: borrowed when it is C-contiguous, else copied.
+fn row_major<'a>(array: &'a PyReadonlyArray2<'_, f64>) -> Cow<'a, [f64]> {
+    match array.as_slice() {
+        Ok(slice) => Cow::Borrowed(slice),
+        Err(_) => Cow::Owned(array.as_array().iter().copied().collect()),
+    }
 }
 
 /// Values, first and second derivatives (one column per coordinate of `z`) of the natural
@@ -107,7 +127,7 @@ fn natural_spline_f64<'py>(
     let at = at.as_array().to_vec();
     let z = rows(&z);
     check_finite("t", &t)?;
-    check_finite("z", z.iter().flatten())?;
+    check_finite("z", &z.concat())?;
     check_finite("at", &at)?;
     if t.len() < 2 {
         return Err(input_error(
@@ -189,12 +209,51 @@ fn run(py: Python<'_>, algorithm: &str, input: &str, scalar: Option<&str>) -> Py
         .transpose()
         .map_err(|e| input_error(format!("scalar: {e}")))?;
     let input = input.to_string();
-    match py.detach(move || run_text(algorithm, scalar, &input)) {
+    match interruptible(py, move || run_text(algorithm, scalar, &input))? {
         Ok(mut line) => {
             line.truncate(line.trim_end().len());
             Ok(line)
         }
         Err(failure) => Err(failure_error(failure)),
+    }
+}
+
+/// Run `job` on a worker thread while this thread, without the GIL, waits for it and checks
+/// every 50 ms for a signal: Ctrl-C raises `KeyboardInterrupt` at once. The library has no
+/// way to stop a computation midway, so an interrupted job runs on in the background until
+/// it ends (within the budgets of `run`) and its answer is dropped. A job that panics is a
+/// `RuntimeError`, not a crash of the interpreter.
+pub(crate) fn interruptible<R: Send + 'static>(
+    py: Python<'_>,
+    job: impl FnOnce() -> R + Send + 'static,
+) -> PyResult<R> {
+    use std::sync::mpsc::{channel, RecvTimeoutError};
+    use std::time::Duration;
+    let (send, receive) = channel();
+    // The command line's worker stack: expression nesting is limited for it.
+    std::thread::Builder::new()
+        .stack_size(8 << 20)
+        .spawn(move || {
+            let _ = send.send(job());
+        })
+        .map_err(|e| PyRuntimeError::new_err(format!("could not start a worker thread: {e}")))?;
+    let mut receive = receive;
+    loop {
+        // The receiver is not `Sync`: it moves into the detached wait and back out.
+        let (waited, back) = py.detach(move || {
+            let waited = receive.recv_timeout(Duration::from_millis(50));
+            (waited, receive)
+        });
+        receive = back;
+        match waited {
+            Ok(answer) => return Ok(answer),
+            Err(RecvTimeoutError::Timeout) => py.check_signals()?,
+            Err(RecvTimeoutError::Disconnected) => {
+                return Err(PyRuntimeError::new_err(
+                    "internal: the computation stopped without an answer (a panic in the library)",
+                ))
+            }
+        }
     }
 }
 
@@ -216,8 +275,7 @@ fn command(py: Python<'_>, args: Vec<String>) -> PyResult<String> {
         let text = e.render().to_string();
         input_error(text.lines().next().unwrap_or("").to_string())
     })?;
-    py.detach(move || trajverify::cli::execute(cli))
-        .map_err(failure_error)
+    interruptible(py, move || trajverify::cli::execute(cli))?.map_err(failure_error)
 }
 
 #[pymodule]

@@ -3,22 +3,25 @@
 //!
 //! A Python curve reaches the library as a [`Curve`] whose `jet(t, order)` calls back into
 //! Python (the package differentiates the user's callable by Taylor arithmetic, so the
-//! derivatives are exact up to rounding, never finite differences). The conversion runs
-//! without the GIL; each callback takes it for its call. An exception raised by the callable
+//! derivatives are exact up to rounding, never finite differences). The conversion runs on a
+//! worker thread without the GIL (Ctrl-C interrupts the wait, [`interruptible`], and makes the
+//! remaining callbacks answer NaN so the abandoned conversion stops); each callback takes the
+//! GIL for its call. An exception raised by the callable
 //! is kept and raised once the conversion returns (the library sees a non-finite jet and stops
 //! at that segment). Every method that evaluates takes a flat array of parameters and returns
 //! a flat array; the Python class `trajverify.PhSpline` shapes them.
 
 use numpy::{PyArray1, PyReadonlyArray1};
 use pyo3::prelude::*;
-use std::sync::Mutex;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::{Arc, Mutex};
 use trajverify::algo::ph::piecewise::{
     conversion_error, fit, FitOptions, PiecewisePh, DEFAULT_SAMPLES,
 };
 use trajverify::curve::parametric::{ParamCurve, ParamCurveArclen, ParamCurveFrame};
 use trajverify::curve::{Curve, ExprCurve};
 
-use crate::input_error;
+use crate::{input_error, interruptible};
 
 /// A curve whose jets a Python function gives: `jet(t, order)` returns (order + 1)·3 floats,
 /// row k the k-th derivative.
@@ -26,12 +29,17 @@ struct PythonCurve {
     jet: Py<PyAny>,
     /// The first exception the function raised, raised again after the conversion.
     failure: Mutex<Option<PyErr>>,
+    /// Set when the caller was interrupted: the remaining jets are NaN without a call, so
+    /// the abandoned conversion fails at once instead of calling Python on in the background.
+    cancelled: AtomicBool,
 }
 
 impl PythonCurve {
     fn call(&self, t: f64, order: usize) -> PyResult<Vec<[f64; 3]>> {
+        if self.cancelled.load(Ordering::Relaxed) {
+            return Ok(vec![[f64::NAN; 3]; order + 1]);
+        }
         Python::attach(|py| {
-            py.check_signals()?;
             let flat: Vec<f64> = self.jet.call1(py, (t, order))?.extract(py)?;
             if flat.len() != 3 * (order + 1) {
                 return Err(input_error(format!(
@@ -94,14 +102,19 @@ pub fn ph_fit(
     };
     if let Ok(text) = curve.extract::<String>() {
         let parsed = ExprCurve::parse(&text).map_err(|e| input_error(format!("curve: {e}")))?;
-        let compiled = parsed.compile::<f64>(&());
-        return py.detach(|| convert(&compiled, (a, b), &options));
+        return interruptible(py, move || {
+            let compiled = parsed.compile::<f64>(&());
+            convert(&compiled, (a, b), &options)
+        })?;
     }
-    let python = PythonCurve {
+    let python = Arc::new(PythonCurve {
         jet: curve.clone().unbind(),
         failure: Mutex::new(None),
-    };
-    let result = py.detach(|| convert(&python, (a, b), &options));
+        cancelled: AtomicBool::new(false),
+    });
+    let worker = Arc::clone(&python);
+    let result = interruptible(py, move || convert(&*worker, (a, b), &options))
+        .inspect_err(|_| python.cancelled.store(true, Ordering::Relaxed))?;
     let failure = python.failure.lock().ok().and_then(|mut slot| slot.take());
     match failure {
         Some(e) => Err(e),

@@ -153,3 +153,41 @@ def test_a_convergence_study_is_the_command_line_report(tmp_path):
     subprocess.run(args, check=True, capture_output=True)
     assert study.doc == json.loads((tmp_path / "convergence.json").read_text())
     assert study.markdown == (tmp_path / "convergence.md").read_text()
+
+
+def slow_helix(t):
+    import time
+
+    time.sleep(0.002)
+    return helix(t)
+
+
+def interrupt_after(seconds):
+    import os
+    import signal
+    import threading
+
+    timer = threading.Timer(seconds, lambda: os.kill(os.getpid(), signal.SIGINT))
+    timer.start()
+    return timer
+
+
+@pytest.mark.parametrize(
+    "call",
+    [
+        # κ₂ proven in 64-bit balls for m = 40: seconds of work (docs/limits.md).
+        lambda: tv.run("hermite-condition", {"derivatives": 40, "interval": [0, 1], "matrix": "transform"}, "ball:64"),
+        # A slow Python curve (2 ms a jet) on 1000 segments.
+        lambda: tv.ph_spline(slow_helix, (0.0, 6.0), segments=1000),
+    ],
+)
+def test_ctrl_c_stops_the_wait_at_once(call):
+    import time
+
+    started = time.perf_counter()
+    interrupt_after(0.3)
+    with pytest.raises(KeyboardInterrupt):
+        call()
+    assert time.perf_counter() - started < 1.5
+    # The package still answers afterwards.
+    assert tv.hermite([0.0, 1.0], [1.0, 1.0]).tolist()[1] == 1 / 3
