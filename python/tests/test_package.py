@@ -196,3 +196,17 @@ def test_the_documented_python_examples_run(doc, section):
     assert blocks, f"{doc} has no python example"
     for block in blocks:
         exec(compile(block, doc, "exec"), {})
+
+
+def test_balls_become_arbs_as_narrow_as_printed():
+    flint = pytest.importorskip("flint")
+    doc_end = ["1/3", "1"]
+    for bits in (128, 512):
+        ball = tv.hermite([0, 1], doc_end, scalar=f"ball:{bits}")[1]
+        arb = ball.to_arb()
+        with flint.ctx.workprec(4 * bits):
+            assert arb.contains(flint.fmpq(1, 3))  # p₁ = x₀ + x₀′/3 = 0 + 1/3
+            # arb keeps a radius in 30 bits, rounded up: at most a few parts in 10⁹ wider.
+            assert float(arb.rad()) <= float(ball.rad) * (1 + 2**-26)
+            assert not arb.contains(flint.fmpq(1, 3) + flint.fmpq(1, 2 ** (bits - 8)))
+

@@ -83,10 +83,14 @@ class Ball:
         return self.lower <= q <= self.upper
 
     def to_arb(self):
-        """The same ball as a python-flint ``arb`` (needs python-flint)."""
+        """The same ball as a python-flint ``arb`` (needs python-flint): the printed midpoint
+        is read at a precision that holds all its digits (python-flint's default of 53 bits
+        would widen a 128-bit ball to 1e-16), and any rounding of it is added to the radius."""
         import flint
 
-        return flint.arb(self.value, self.radius)
+        digits = sum(c.isdigit() for c in self.value)
+        with flint.ctx.workprec(max(53, int(digits * 3.33) + 64)):
+            return flint.arb(self.value, self.radius)
 
     def __repr__(self) -> str:
         return f"Ball({self.value} ± {self.radius})"
