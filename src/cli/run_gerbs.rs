@@ -26,7 +26,7 @@ use crate::algo::gerbs::quadrature::default_tolerance;
 use crate::algo::gerbs::{basis_derivatives_located, Blend, GerbsError, Knots, Located, Side};
 use crate::curve::integral::IntegralOptions;
 use crate::scalar::ball::Ball;
-use crate::scalar::{big_rational, mpfr_rational, BigRational, Exact, Field, Real, ScalarKind};
+use crate::scalar::{mpfr_rational, Exact, Field, Real, ScalarKind};
 use serde_json::{Map, Value};
 
 /// The highest derivative order `run gerbs-basis` accepts.
@@ -1118,15 +1118,10 @@ fn planned_legs(
     headings: Option<&[RealInput]>,
     radius: &Exact,
 ) -> Result<Vec<(ExactLeg, DubinsPlan)>, InputError> {
-    // The Dubins planner decides in num-rational (algo::gerbs::dubins).
-    let waypoints: Vec<[BigRational; 2]> = waypoints
-        .iter()
-        .map(|p| [big_rational(&p[0]), big_rational(&p[1])])
-        .collect();
-    let radius = big_rational(radius);
+    // The Dubins planner decides in GMP rationals, the input's own type (algo::gerbs::dubins).
     let exact_legs = match headings {
-        Some(h) => legs_with_headings(&waypoints, h, &radius),
-        None => algorithm1_legs(&waypoints, &radius),
+        Some(h) => legs_with_headings(waypoints, h, radius),
+        None => algorithm1_legs(waypoints, radius),
     };
     exact_legs
         .into_iter()

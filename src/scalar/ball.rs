@@ -795,6 +795,9 @@ impl Field for Ball {
             .to_rational()
             .map(|q| super::mpfr::from_gmp_rational(&q))
     }
+    fn to_exact(&self) -> Option<rug::Rational> {
+        self.mid.to_rational()
+    }
     fn to_plain_string(&self) -> String {
         format!("{} ± {:e}", self.mid.to_plain_string(), self.rad)
     }

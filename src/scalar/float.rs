@@ -64,6 +64,9 @@ impl Field for f64 {
     fn to_rational(&self) -> Option<BigRational> {
         <BigRational as FromPrimitive>::from_f64(*self)
     }
+    fn to_exact(&self) -> Option<rug::Rational> {
+        rug::Rational::from_f64(*self)
+    }
     fn to_plain_string(&self) -> String {
         format_f64(*self)
     }

@@ -145,6 +145,12 @@ pub trait Field:
     fn to_f64(&self) -> f64;
     /// The exact value of a finite number as a fraction.
     fn to_rational(&self) -> Option<BigRational>;
+    /// The exact value of a finite number as a GMP rational (the exact decisions' type): the
+    /// same value as [`Field::to_rational`], without a num-rational copy where the number
+    /// converts to GMP directly.
+    fn to_exact(&self) -> Option<rug::Rational> {
+        self.to_rational().map(|q| mpfr::to_gmp_rational(&q))
+    }
     /// `self += a·b`. MPFR fuses it into one rounding without a temporary; the default (used
     /// by f64 and rationals) multiplies, then adds.
     fn mul_add_assign(&mut self, a: &Self, b: &Self) {

@@ -142,6 +142,9 @@ impl Field for Float {
     fn to_rational(&self) -> Option<BigRational> {
         Float::to_rational(self).map(|q| from_gmp_rational(&q))
     }
+    fn to_exact(&self) -> Option<Rational> {
+        Float::to_rational(self)
+    }
     fn mul_add_assign(&mut self, a: &Self, b: &Self) {
         *self += a * b; // mpfr_fma: one rounding, no temporary
     }

@@ -85,6 +85,9 @@ impl Field for rug::Rational {
     fn to_rational(&self) -> Option<BigRational> {
         Some(super::mpfr::from_gmp_rational(self))
     }
+    fn to_exact(&self) -> Option<rug::Rational> {
+        Some(self.clone())
+    }
     fn to_plain_string(&self) -> String {
         self.to_string()
     }

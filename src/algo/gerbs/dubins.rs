@@ -27,7 +27,7 @@ use super::GerbsError;
 use crate::curve::expr::ExactReal;
 use crate::curve::parametric::check_domain;
 use crate::scalar::ball::Ball;
-use crate::scalar::{BigRational, Field, Real};
+use crate::scalar::{BigRational, Exact, Field, Real};
 use rug::Float;
 
 /// L (left turn), S (straight) or R (right turn).
@@ -124,9 +124,9 @@ pub enum LegHeading {
         /// +1 or −1.
         sign: i32,
         /// u ∧ v.
-        wedge: BigRational,
+        wedge: Exact,
         /// u · v.
-        dot: BigRational,
+        dot: Exact,
     },
     /// An absolute heading (radians), given exactly; relative angle heading − atan2(dy, dx).
     Absolute(ExactReal),
@@ -136,11 +136,11 @@ pub enum LegHeading {
 #[derive(Clone, Debug, PartialEq)]
 pub struct ExactLeg {
     /// The start waypoint.
-    pub from: [BigRational; 2],
+    pub from: [Exact; 2],
     /// The goal waypoint.
-    pub to: [BigRational; 2],
+    pub to: [Exact; 2],
     /// The turn radius R (> 0).
-    pub radius: BigRational,
+    pub radius: Exact,
     /// The heading at `from`.
     pub start: LegHeading,
     /// The heading at `to`.
@@ -148,7 +148,7 @@ pub struct ExactLeg {
 }
 
 impl ExactLeg {
-    fn chord(&self) -> [BigRational; 2] {
+    fn chord(&self) -> [Exact; 2] {
         [
             self.to[0].clone() - &self.from[0],
             self.to[1].clone() - &self.from[1],
@@ -158,7 +158,7 @@ impl ExactLeg {
 
 /// The legs through `waypoints` with the headings of Algorithm 1, given exactly (the
 /// waypoints must pass [`super::path::check_waypoints`]).
-pub fn algorithm1_legs(waypoints: &[[BigRational; 2]], radius: &BigRational) -> Vec<ExactLeg> {
+pub fn algorithm1_legs(waypoints: &[[Exact; 2]], radius: &Exact) -> Vec<ExactLeg> {
     let n = waypoints.len();
     let chord = |i: usize| {
         [
@@ -191,9 +191,9 @@ pub fn algorithm1_legs(waypoints: &[[BigRational; 2]], radius: &BigRational) -> 
 
 /// The legs between consecutive poses (waypoint, absolute heading), given exactly.
 pub fn legs_with_headings(
-    waypoints: &[[BigRational; 2]],
+    waypoints: &[[Exact; 2]],
     headings: &[ExactReal],
-    radius: &BigRational,
+    radius: &Exact,
 ) -> Vec<ExactLeg> {
     (0..waypoints.len().saturating_sub(1))
         .map(|i| ExactLeg {
@@ -234,7 +234,7 @@ struct Frame<T> {
 
 impl<T: Real> Frame<T> {
     fn new(leg: &ExactLeg, ctx: &T::Ctx) -> (Frame<T>, T, T) {
-        let q = |x: &BigRational| T::from_rational(x, ctx);
+        let q = |x: &Exact| T::from_exact(x, ctx);
         let [dx, dy] = leg.chord().map(|c| q(&c));
         let radius = q(&leg.radius);
         let d = (dx.clone() * &dx + &(dy.clone() * &dy)).sqrt() / &radius;
@@ -502,8 +502,7 @@ impl Candidate {
 /// [`DubinsError::Tie`] when two different paths have equal lengths, at [`PLAN_BITS_CAP`] bits
 /// (precision doubles from 128 until then).
 pub fn plan(leg: &ExactLeg, index: usize) -> Result<DubinsPlan, DubinsError> {
-    let zero = BigRational::from_integer(0.into());
-    if leg.radius <= zero {
+    if leg.radius <= 0 {
         return Err(DubinsError::Degenerate {
             leg: index,
             reason: "the radius must be positive".into(),
@@ -596,8 +595,8 @@ impl DubinsPlan {
         });
         DubinsPath {
             start: [
-                T::from_rational(&leg.from[0], ctx),
-                T::from_rational(&leg.from[1], ctx),
+                T::from_exact(&leg.from[0], ctx),
+                T::from_exact(&leg.from[1], ctx),
                 heading,
             ],
             radius,
@@ -658,10 +657,10 @@ pub fn through_poses<T: Real>(
     radius: &T,
 ) -> Result<Vec<DubinsPath<T>>, usize> {
     let ctx = radius.ctx();
-    let radius_q = exact(radius).ok_or(0usize)?;
+    let radius_q = radius.to_exact().ok_or(0usize)?;
     (0..w.len().saturating_sub(1))
         .map(|i| {
-            let point = |p: &[T; 2]| Some([exact(&p[0])?, exact(&p[1])?]);
+            let point = |p: &[T; 2]| Some([p[0].to_exact()?, p[1].to_exact()?]);
             let heading = |h: &T| exact(h).map(|q| LegHeading::Absolute(ExactReal::Exact(q)));
             let leg = (|| {
                 Some(ExactLeg {
@@ -848,8 +847,8 @@ fn low(x: &Ball) -> f64 {
 mod tests {
     use super::*;
 
-    fn q(n: i64) -> BigRational {
-        BigRational::from_integer(n.into())
+    fn q(n: i64) -> Exact {
+        Exact::from(n)
     }
 
     fn reduce2pi(x: f64) -> f64 {
@@ -882,8 +881,8 @@ mod tests {
             from: [q(0), q(0)],
             to: [q(100), q(0)],
             radius: q(10),
-            start: LegHeading::Absolute(ExactReal::Exact(q(0))),
-            goal: LegHeading::Absolute(ExactReal::Exact(q(0))),
+            start: LegHeading::Absolute(ExactReal::Exact(BigRational::from_integer(0.into()))),
+            goal: LegHeading::Absolute(ExactReal::Exact(BigRational::from_integer(0.into()))),
         };
         let plan = plan(&leg, 0).expect("decided");
         let path = plan.path::<f64>(&leg, &());

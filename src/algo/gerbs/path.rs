@@ -117,11 +117,13 @@ pub fn check_waypoints<T: Field>(w: &[[T; 2]]) -> Result<(), GerbsError> {
 /// [`GerbsError::Waypoints`] as [`check_waypoints`], on the values in `T` and again exactly.
 pub fn turn_signs<T: Field>(w: &[[T; 2]]) -> Result<Vec<i32>, GerbsError> {
     check_waypoints(w)?;
-    let exact: Vec<[crate::scalar::BigRational; 2]> = w
+    // GMP rationals: the wedges' products and sums normalise by gcds, which GMP does far
+    // faster than num-rational (the sign is the same exact sign in either).
+    let exact: Vec<[rug::Rational; 2]> = w
         .iter()
         .map(|p| {
             let q = |x: &T| {
-                x.to_rational()
+                x.to_exact()
                     .ok_or_else(|| GerbsError::Waypoints("every waypoint must be finite".into()))
             };
             Ok([q(&p[0])?, q(&p[1])?])
