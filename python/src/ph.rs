@@ -12,6 +12,7 @@
 //! a flat array; the Python class `trajverify.PhSpline` shapes them.
 
 use numpy::{PyArray1, PyReadonlyArray1};
+use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Mutex};
@@ -20,6 +21,9 @@ use trajverify::algo::ph::piecewise::{
 };
 use trajverify::curve::parametric::{ParamCurve, ParamCurveArclen, ParamCurveFrame};
 use trajverify::curve::{Curve, ExprCurve};
+use trajverify::scalar::ball::Ball;
+use trajverify::scalar::parse::parse_exact;
+use trajverify::Field;
 
 use crate::{input_error, interruptible};
 
@@ -127,21 +131,24 @@ fn convert<C: Curve<f64>>(
     (a, b): (f64, f64),
     options: &FitOptions<f64>,
 ) -> PyResult<NativePhSpline> {
-    let spline = fit(curve, (&a, &b), options).map_err(|e| {
-        // Messages about an option already name it; the others are about the curve.
-        let text = e.to_string();
-        let named = ["segments:", "derivatives:", "tolerance:"];
-        if named.iter().any(|field| text.starts_with(field)) {
-            input_error(text)
-        } else {
-            input_error(format!("curve: {text}"))
-        }
-    })?;
+    let spline = fit(curve, (&a, &b), options).map_err(fit_error)?;
     let sampled_error = conversion_error(curve, &spline, DEFAULT_SAMPLES).max;
     Ok(NativePhSpline {
         spline,
         sampled_error,
     })
+}
+
+/// A refusal of [`fit`]: messages about an option already name it; the others are about the
+/// curve.
+fn fit_error(e: impl std::fmt::Display) -> PyErr {
+    let text = e.to_string();
+    let named = ["segments:", "derivatives:", "tolerance:"];
+    if named.iter().any(|field| text.starts_with(field)) {
+        input_error(text)
+    } else {
+        input_error(format!("curve: {text}"))
+    }
 }
 
 fn curve_error(e: impl std::fmt::Display) -> PyErr {
@@ -250,5 +257,142 @@ impl NativePhSpline {
             .flat_map(|s| s.preimage().iter().flat_map(|q| [q.w, q.x, q.y, q.z]))
             .collect();
         PyArray1::from_vec(py, flat)
+    }
+}
+
+/// A piecewise PH spline converted in ball arithmetic at `bits` bits (an expression curve
+/// only: a Python callable is differentiated in doubles). Every number comes out as the ball
+/// `run` prints for it: a decimal value and a radius, every point of the ball within
+/// [value − radius, value + radius] as printed; the value carries the digits the ball proves.
+#[pyclass(frozen, module = "trajverify._trajverify")]
+pub struct NativeBallPhSpline {
+    spline: PiecewisePh<Ball>,
+    bits: u32,
+}
+
+/// A printed ball: (value, radius).
+type Printed = (String, String);
+
+/// Convert the expression `curve` on [a, b] (exact decimal or fraction texts) with
+/// `segments` segments in balls of `bits` bits.
+#[pyfunction]
+#[pyo3(signature = (curve, interval, segments, derivatives, roll, bits))]
+pub fn ph_fit_ball(
+    py: Python<'_>,
+    curve: &str,
+    interval: (String, String),
+    segments: usize,
+    derivatives: usize,
+    roll: bool,
+    bits: u32,
+) -> PyResult<NativeBallPhSpline> {
+    let parsed = ExprCurve::parse(curve).map_err(|e| input_error(format!("curve: {e}")))?;
+    let end =
+        |text: &str| parse_exact(text).map_err(|e| input_error(format!("interval: {text:?}: {e}")));
+    let (a, b) = (end(&interval.0)?, end(&interval.1)?);
+    if a >= b {
+        return Err(input_error("interval: a < b is needed"));
+    }
+    interruptible(py, move || {
+        let (a, b) = (Ball::from_exact(&a, &bits), Ball::from_exact(&b, &bits));
+        let options = FitOptions {
+            segments,
+            tolerance: None,
+            derivatives,
+            free: None,
+            roll,
+        };
+        let spline = fit(&parsed.compile::<Ball>(&bits), (&a, &b), &options).map_err(fit_error)?;
+        Ok(NativeBallPhSpline { spline, bits })
+    })?
+}
+
+fn printed(x: &Ball) -> PyResult<Printed> {
+    x.printed()
+        .map(|p| (p.value, p.radius))
+        .ok_or_else(|| PyRuntimeError::new_err("a number of the spline is not finite"))
+}
+
+impl NativeBallPhSpline {
+    fn parameter(&self, text: &str, field: &str) -> PyResult<Ball> {
+        let q = parse_exact(text).map_err(|e| input_error(format!("{field}: {text:?}: {e}")))?;
+        Ok(Ball::from_exact(&q, &self.bits))
+    }
+
+    /// `f` of every parameter, its balls printed and flattened.
+    fn each(
+        &self,
+        texts: &[String],
+        field: &str,
+        f: impl Fn(&Ball) -> PyResult<Vec<Ball>>,
+    ) -> PyResult<Vec<Printed>> {
+        let mut out = Vec::new();
+        for text in texts {
+            for x in f(&self.parameter(text, field)?)? {
+                out.push(printed(&x)?);
+            }
+        }
+        Ok(out)
+    }
+}
+
+#[pymethods]
+impl NativeBallPhSpline {
+    /// The number N of segments.
+    fn segments(&self) -> usize {
+        self.spline.segments().len()
+    }
+    /// The derivatives 0…order at each t, flat: len(t)·(order + 1)·3 balls.
+    fn derivatives(&self, t: Vec<String>, order: usize) -> PyResult<Vec<Printed>> {
+        self.each(&t, "t", |t| {
+            let jet = self.spline.derivatives(t, order).map_err(curve_error)?;
+            Ok(jet.into_iter().flatten().collect())
+        })
+    }
+    /// s(t) at each t.
+    fn arc_length(&self, t: Vec<String>) -> PyResult<Vec<Printed>> {
+        self.each(&t, "t", |t| {
+            Ok(vec![self.spline.arc_length(t).map_err(curve_error)?])
+        })
+    }
+    /// The whole length.
+    fn length(&self) -> PyResult<Printed> {
+        printed(&self.spline.length().map_err(curve_error)?)
+    }
+    /// Point (3), axes (9), ω (3) and speed (1) at each t: 16 balls.
+    fn frames(&self, t: Vec<String>) -> PyResult<Vec<Printed>> {
+        self.each(&t, "t", |t| {
+            let f = self.spline.frame(t).map_err(curve_error)?;
+            let mut row: Vec<Ball> = f.point.to_vec();
+            row.extend(f.axes.into_iter().flatten());
+            row.extend(f.omega);
+            row.push(f.speed);
+            Ok(row)
+        })
+    }
+    /// The control points of every segment, flat.
+    fn control_points(&self) -> PyResult<Vec<Printed>> {
+        let points: Vec<Ball> = self
+            .spline
+            .segments()
+            .iter()
+            .flat_map(|s| s.control_points().into_iter().flatten())
+            .collect();
+        points.iter().map(printed).collect()
+    }
+    /// The preimages as quaternions (w, x, y, z), flat.
+    fn preimages(&self) -> PyResult<Vec<Printed>> {
+        let quaternions: Vec<Ball> = self
+            .spline
+            .segments()
+            .iter()
+            .flat_map(|s| {
+                s.preimage()
+                    .iter()
+                    .flat_map(|q| [q.w.clone(), q.x.clone(), q.y.clone(), q.z.clone()])
+                    .collect::<Vec<_>>()
+            })
+            .collect();
+        quaternions.iter().map(printed).collect()
     }
 }

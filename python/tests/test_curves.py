@@ -3,6 +3,7 @@
 import json
 import math
 import subprocess
+from fractions import Fraction
 
 import numpy as np
 import pytest
@@ -81,6 +82,27 @@ def test_arc_length_frames_and_omega_of_a_helix():
             assert np.allclose(de[k], np.cross(f.omega, f.axes[k]), atol=1e-6)
 
 
+def test_a_ball_spline_encloses_the_conversion_computed_at_four_times_the_precision():
+    b128 = tv.ph_spline(HELIX, ("0", "6"), segments=16, scalar="ball:128")
+    b512 = tv.ph_spline(HELIX, ("0", "6"), segments=16, scalar="ball:512")
+    f64 = tv.ph_spline(HELIX, (0.0, 6.0), segments=16)
+    t = ["0", "1/3", "2.5", "6"]
+    coarse, fine = b128.derivatives(t, 2), b512.derivatives(t, 2)
+    assert coarse.shape == (4, 3, 3) and isinstance(coarse[0, 0, 0], tv.Ball)
+    for ball, reference in zip(coarse.reshape(-1), fine.reshape(-1)):
+        assert reference.mid in ball and ball.rad < Fraction(1, 10**25)
+    assert np.allclose(f64.derivatives([0.0, 1 / 3, 2.5, 6.0], 2), [[[float(x.mid) for x in row] for row in p] for p in coarse], atol=1e-12)
+    assert b512.length.mid in b128.length
+    frames = b128.frames(["1", "2"])
+    assert frames.axes.shape == (2, 3, 3) and frames.speed.shape == (2,)
+    assert b128.control_points.shape == (16, 18, 3) and b128.preimages.shape == (16, 9, 4)
+    # mpfr: the digits those balls prove, as mpmath numbers.
+    mpmath = pytest.importorskip("mpmath")
+    digits = tv.ph_spline(HELIX, ("0", "6"), segments=16, scalar="mpfr:128")(["1/3"])
+    with mpmath.workprec(128):
+        assert digits[0, 0] == mpmath.mpf(coarse[1, 0, 0].value)
+
+
 def test_shapes_follow_the_parameters():
     spline = tv.ph_spline(HELIX, (0.0, 1.0), segments=2)
     assert spline(0.5).shape == (3,)
@@ -112,6 +134,11 @@ def test_tolerance_doubles_the_segments_until_the_sampled_error_is_met():
         (lambda: tv.ph_spline(lambda t: (math.sin(t), t, t), (0.0, 1.0)), "curve"),
         (lambda: tv.ph_spline(lambda t: (t, t), (0.0, 1.0)), "curve"),
         (lambda: tv.ph_spline(42, (0.0, 1.0)), "curve"),
+        (lambda: tv.ph_spline(helix, (0, 1), scalar="ball:64"), "curve"),
+        (lambda: tv.ph_spline(HELIX, (0, 1), tolerance=1e-6, scalar="ball:64"), "tolerance"),
+        (lambda: tv.ph_spline(HELIX, (0, 1), scalar="interval:64"), "scalar"),
+        (lambda: tv.ph_spline(HELIX, ("1", "1/2"), scalar="ball:64"), "interval"),
+        (lambda: tv.ph_spline(HELIX, ("0", "1"), scalar="ball:64")("2"), "t"),
         (lambda: tv.ph_spline(HELIX, (0.0, 1.0))(1.5), "t"),
         (lambda: tv.ph_spline(HELIX, (0.0, 1.0)).parameter_at_length(99.0), "s: 99"),
         (lambda: tv.convergence(lambda t: t, (0, 1)), "curve"),

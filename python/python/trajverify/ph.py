@@ -18,6 +18,7 @@ from ._jet import jet_function
 from ._numbers import exact_text, floats, from_text, from_texts
 from ._trajverify import TrajverifyError
 from ._trajverify import ph_fit as _ph_fit
+from ._trajverify import ph_fit_ball as _ph_fit_ball
 
 CurveSpec = Union[str, Callable[[Any], Sequence[Any]]]
 
@@ -41,20 +42,39 @@ def _parameters(t: Any, field: str) -> Tuple[np.ndarray, Tuple[int, ...]]:
 
 
 class PhSpline:
-    """A piecewise PH spline in f64 built by :func:`ph_spline`: a curve of t on [a, b].
+    """A piecewise PH spline built by :func:`ph_spline`: a curve of t on [a, b].
 
     Evaluation takes a number or an array of parameters and returns arrays of that shape with
-    trailing axes for the coordinates. A parameter outside [a, b] raises
-    :class:`TrajverifyError`.
+    trailing axes for the coordinates: float arrays for f64; for ``"ball:<bits>"`` object
+    arrays of :class:`Ball` (proven enclosures, as ``run`` prints them) and for
+    ``"mpfr:<bits>"`` of ``mpmath.mpf`` holding the digits those balls prove. A parameter
+    outside [a, b] raises :class:`TrajverifyError`.
     """
 
-    def __init__(self, native: Any):
+    def __init__(self, native: Any, scalar: str = "f64", interval: Any = None):
         self._native = native
+        self.scalar = scalar
+        self._interval = interval
 
     @property
-    def interval(self) -> Tuple[float, float]:
+    def _f64(self) -> bool:
+        return self.scalar == "f64"
+
+    def _values(self, printed: list, shape: Tuple[int, ...]) -> np.ndarray:
+        """Printed balls (value, radius) as an object array of the scalar's numbers."""
+        out = np.empty(len(printed), dtype=object)
+        for i, (value, radius) in enumerate(printed):
+            out[i] = from_text({"value": value, "radius": radius} if self.scalar.startswith("ball:") else value, self.scalar)
+        return out.reshape(shape)
+
+    def _texts(self, t: Any, field: str) -> Tuple[list, Tuple[int, ...]]:
+        array = np.asarray(t, dtype=object)
+        return [str(exact_text(x, field)) for x in array.reshape(-1)], array.shape
+
+    @property
+    def interval(self) -> Tuple[Any, Any]:
         """(a, b)."""
-        return self._native.interval()
+        return self._native.interval() if self._f64 else self._interval
 
     @property
     def segments(self) -> int:
@@ -62,16 +82,19 @@ class PhSpline:
         return self._native.segments()
 
     @property
-    def sampled_error(self) -> float:
-        """The conversion error max‖γ − p‖ (Eq. 21) measured after the fit: the maximum of 16
-        samples per segment refined by Newton's method, an estimate, not a bound (for a proven
-        bound use :func:`phodcos` with ``scalar="ball:128"``, or :func:`trajverify.convergence`)."""
-        return self._native.sampled_error()
+    def sampled_error(self) -> Optional[float]:
+        """The conversion error max‖γ − p‖ (Eq. 21) measured after an f64 fit: the maximum of
+        16 samples per segment refined by Newton's method, an estimate, not a bound (None in
+        balls; for a proven bound use :func:`phodcos` with ``scalar="ball:128"``, or
+        :func:`trajverify.convergence`)."""
+        return self._native.sampled_error() if self._f64 else None
 
     @property
-    def length(self) -> float:
+    def length(self) -> Any:
         """The whole arc length, exact up to rounding (the speed of a PH curve is a polynomial)."""
-        return self._native.length()
+        if self._f64:
+            return self._native.length()
+        return self._values([self._native.length()], ())[()]
 
     def __call__(self, t: Any) -> np.ndarray:
         """γ(t): shape t.shape + (3,)."""
@@ -79,6 +102,9 @@ class PhSpline:
 
     def derivatives(self, t: Any, order: int = 1) -> np.ndarray:
         """γ(t), γ′(t), …, γ⁽ᵒʳᵈᵉʳ⁾(t): shape t.shape + (order + 1, 3)."""
+        if not self._f64:
+            texts, shape = self._texts(t, "t")
+            return self._values(self._native.derivatives(texts, int(order)), shape + (order + 1, 3))
         flat, shape = _parameters(t, "t")
         return self._native.derivatives(flat, int(order)).reshape(shape + (order + 1, 3))
 
@@ -88,19 +114,28 @@ class PhSpline:
 
     def arc_length(self, t: Any) -> np.ndarray:
         """s(t) = ∫ₐᵗ |γ′|, exact up to rounding: shape t.shape."""
+        if not self._f64:
+            texts, shape = self._texts(t, "t")
+            return self._values(self._native.arc_length(texts), shape)
         flat, shape = _parameters(t, "t")
         return self._native.arc_length(flat).reshape(shape)
 
     def parameter_at_length(self, s: Any, tolerance: float = 1e-12) -> np.ndarray:
         """The parameter t with s(t) = s (for constant-speed trajectories), to |s(t) − s| ≤
-        `tolerance`, by safeguarded Newton on the exact arc length: shape s.shape."""
+        `tolerance`, by safeguarded Newton on the exact arc length: shape s.shape (f64)."""
+        if not self._f64:
+            raise TrajverifyError(f"scalar: parameter_at_length is a search in f64; this spline is {self.scalar}")
         flat, shape = _parameters(s, "s")
         return self._native.parameter_at_length(flat, float(tolerance)).reshape(shape)
 
     def frames(self, t: Any) -> Frames:
         """The Euler–Rodrigues frames and ω at t (see :class:`Frames`)."""
-        flat, shape = _parameters(t, "t")
-        rows = self._native.frames(flat).reshape(shape + (16,))
+        if self._f64:
+            flat, shape = _parameters(t, "t")
+            rows = self._native.frames(flat).reshape(shape + (16,))
+        else:
+            texts, shape = self._texts(t, "t")
+            rows = self._values(self._native.frames(texts), shape + (16,))
         return Frames(
             rows[..., 0:3],
             rows[..., 3:12].reshape(shape + (3, 3)),
@@ -112,41 +147,71 @@ class PhSpline:
     def control_points(self) -> np.ndarray:
         """The Bézier control points of every segment, shape (N, degree + 1, 3); segment k in
         its local parameter ξ = (t − t_k)/h ∈ [0, 1]."""
-        return self._native.control_points().reshape(self.segments, -1, 3)
+        if self._f64:
+            return self._native.control_points().reshape(self.segments, -1, 3)
+        flat = self._native.control_points()
+        return self._values(flat, (self.segments, len(flat) // (3 * self.segments), 3))
 
     @property
     def preimages(self) -> np.ndarray:
         """The preimage A(ξ) of every segment as Bernstein coefficients, quaternions (w, x, y, z):
         shape (N, preimage degree + 1, 4)."""
-        return self._native.preimages().reshape(self.segments, -1, 4)
+        if self._f64:
+            return self._native.preimages().reshape(self.segments, -1, 4)
+        flat = self._native.preimages()
+        return self._values(flat, (self.segments, len(flat) // (4 * self.segments), 4))
 
     def __repr__(self) -> str:
         a, b = self.interval
-        return f"PhSpline([{a}, {b}], {self.segments} segments, sampled error {self.sampled_error:.3g})"
+        error = "" if self.sampled_error is None else f", sampled error {self.sampled_error:.3g}"
+        return f"PhSpline([{a}, {b}], {self.segments} segments, {self.scalar}{error})"
 
 
 def ph_spline(
     curve: CurveSpec,
-    interval: Sequence[float],
+    interval: Sequence[Any],
     segments: int = 8,
     tolerance: Optional[float] = None,
     derivatives: int = 4,
     roll: bool = True,
+    scalar: str = "f64",
 ) -> PhSpline:
-    """The C⁴ PH spline of `curve` on `interval` in f64 (paper 001, Algorithm 2; the library's
-    ``fit`` with its defaults): `segments` uniform segments, or with `tolerance` doubled from
-    there until the sampled error is at most `tolerance`; `derivatives` = m matched at every
-    joint (degree-(4m+1) segments); `roll` applies Eq. 22 so the frame and ω are continuous.
+    """The C⁴ PH spline of `curve` on `interval` (paper 001, Algorithm 2; the library's ``fit``
+    with its defaults): `segments` uniform segments, or with `tolerance` doubled from there
+    until the sampled error is at most `tolerance`; `derivatives` = m matched at every joint
+    (degree-(4m+1) segments); `roll` applies Eq. 22 so the frame and ω are continuous.
 
     `curve` is an expression ``"[x(t), y(t), z(t)]"`` (numbers, t, pi, + - * / ^, sin cos tan
     exp ln sqrt atan) or a Python callable ``f(t) -> (x, y, z)`` written with arithmetic and
     numpy functions: its derivatives are taken by Taylor arithmetic, exactly up to rounding.
+
+    `scalar` ``"f64"`` (the default) converts in doubles; ``"ball:<bits>"`` converts an
+    expression in ball arithmetic on the exact interval (its ends read exactly), so that every
+    number the spline gives is a proven enclosure of what exact arithmetic would give for
+    that conversion, and ``"mpfr:<bits>"`` returns those balls' proven digits as mpmath numbers.
+    In balls the number of segments is given (no `tolerance`: the sampled error is an f64
+    search).
 
     >>> import numpy as np
     >>> helix = ph_spline(lambda t: (np.cos(t), np.sin(t), t / 5), (0.0, 6.0), segments=32)
     >>> round(float(helix.length), 9) == round(6 * 1.04 ** 0.5, 9)
     True
     """
+    if isinstance(segments, bool) or not isinstance(segments, (int, np.integer)) or segments < 1:
+        raise TrajverifyError(f"segments: expected a positive integer, found {segments!r}")
+    if isinstance(derivatives, bool) or not isinstance(derivatives, (int, np.integer)) or derivatives < 1:
+        raise TrajverifyError(f"derivatives: expected a positive integer, found {derivatives!r}")
+    if scalar != "f64":
+        kind, _, bits = scalar.partition(":")
+        if kind not in ("mpfr", "ball") or not bits.isdigit() or not 2 <= int(bits) <= 1 << 16:
+            raise TrajverifyError(f'scalar: expected "f64", "mpfr:<bits>" or "ball:<bits>", found {scalar!r}')
+        if not isinstance(curve, str):
+            raise TrajverifyError("curve: a conversion in balls needs an expression (a callable is differentiated in doubles)")
+        if tolerance is not None:
+            raise TrajverifyError("tolerance: only with scalar f64 (the sampled error is an f64 search); give segments")
+        ends = tuple(str(exact_text(x, "interval")) for x in interval)
+        native = _ph_fit_ball(curve, ends, int(segments), int(derivatives), bool(roll), int(bits))
+        return PhSpline(native, scalar, ends)
     a, b = (float(x) for x in interval)
     if isinstance(curve, str):
         spec: Any = curve
@@ -154,10 +219,6 @@ def ph_spline(
         spec = jet_function(curve)
     else:
         raise TrajverifyError(f"curve: expected an expression string or a callable, found {type(curve).__name__}")
-    if isinstance(segments, bool) or not isinstance(segments, (int, np.integer)) or segments < 1:
-        raise TrajverifyError(f"segments: expected a positive integer, found {segments!r}")
-    if isinstance(derivatives, bool) or not isinstance(derivatives, (int, np.integer)) or derivatives < 1:
-        raise TrajverifyError(f"derivatives: expected a positive integer, found {derivatives!r}")
     tol = None if tolerance is None else float(tolerance)
     return PhSpline(_ph_fit(spec, (a, b), int(segments), tol, int(derivatives), bool(roll)))
 
