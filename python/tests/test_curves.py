@@ -218,3 +218,13 @@ def test_ctrl_c_stops_the_wait_at_once(call):
     assert time.perf_counter() - started < 1.5
     # The package still answers afterwards.
     assert tv.hermite([0.0, 1.0], [1.0, 1.0]).tolist()[1] == 1 / 3
+
+
+def test_a_convergence_study_plots_with_matplotlib():
+    matplotlib = pytest.importorskip("matplotlib")
+    matplotlib.use("Agg")
+    study = tv.convergence(HELIX, ("0", "2"), method="hermite:1", levels="2-4", scalar="ball:64")
+    ax = study.plot()
+    errors = ax.get_lines()[0].get_ydata()
+    assert list(errors) == [lv.error for lv in study.levels]
+    assert ax.get_xscale() == "log" and ax.get_yscale() == "log"
