@@ -173,6 +173,11 @@ def test_verify_returns_the_ledger():
     ledger = tv.verify(["marin"])
     claims = ledger["claims"]
     assert claims and all(c["paper"].startswith("004") for c in claims)
+    assert len(ledger) == len(claims) == ledger.summary["total"]
+    assert ledger.verdicts() == {k: v for k, v in ledger.summary["verdicts"].items() if v}
+    first = ledger.claim(claims[0]["id"])
+    assert isinstance(first, tv.Claim) and first.record == claims[0] and first.verdict == claims[0]["verdict"]
+    assert all(c.verdict == "discrepancy" for c in ledger.by_verdict("discrepancy"))
     committed = REPO / "reports" / "claims.json"
     if committed.exists():
         mine = {c["id"]: c for c in json.loads(committed.read_text())["claims"]}

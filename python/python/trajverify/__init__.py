@@ -40,12 +40,15 @@ from .jobs import (
     ph_hermite,
     spline_fit,
 )
+from .ledger import Claim, Ledger
 from .ph import Frames, PhSpline, ph_spline, phodcos
 
 __all__ = [
     "Ball",
+    "Claim",
     "ConvergenceStudy",
     "Frames",
+    "Ledger",
     "PhSpline",
     "SplineJet",
     "TrajverifyError",
@@ -146,18 +149,18 @@ def _verify(out: str, papers: Optional[List[str]]) -> None:
     command(args)
 
 
-def verify(papers: Optional[List[str]] = None, out: Optional[str] = None) -> dict:
+def verify(papers: Optional[List[str]] = None, out: Optional[str] = None) -> Ledger:
     """Check the papers' claims (all five, or those named: ids or short names such as
-    ``"marin"``) and return the ledger (``claims.json``: ``summary`` and ``claims``, one dict
-    per claim with its published and reproduced values, assurance and verdict). The reports
+    ``"marin"``) and return the ledger (``claims.json`` as a :class:`Ledger`: a dict with
+    ``summary`` and ``claims``, whose claims are also :class:`Claim` objects). The reports
     and figures are written to `out` (must not exist or be empty), or to a temporary
     directory that is removed."""
     if out is not None:
         _verify(os.fspath(out), papers)
         with open(os.path.join(out, "claims.json"), encoding="utf-8") as f:
-            return json.load(f)
+            return Ledger(json.load(f))
     with tempfile.TemporaryDirectory() as scratch:
         target = os.path.join(scratch, "reports")
         _verify(target, papers)
         with open(os.path.join(target, "claims.json"), encoding="utf-8") as f:
-            return json.load(f)
+            return Ledger(json.load(f))
