@@ -23,7 +23,7 @@ use trajverify::curve::parametric::{ParamCurve, ParamCurveArclen, ParamCurveFram
 use trajverify::curve::{Curve, ExprCurve};
 use trajverify::scalar::ball::Ball;
 use trajverify::scalar::parse::parse_exact;
-use trajverify::Field;
+use trajverify::{Field, Real};
 
 use crate::{input_error, interruptible};
 
@@ -155,6 +155,44 @@ fn curve_error(e: impl std::fmt::Display) -> PyErr {
     input_error(e.to_string())
 }
 
+/// The numbers both classes return, written once over the number type: the jet of order
+/// `order` at t (3·(order + 1) numbers), a frame row (point 3, axes 9, ω 3, speed 1), the
+/// control points and the preimages' quaternions (w, x, y, z) of every segment, flat.
+fn jet_numbers<T: Real>(spline: &PiecewisePh<T>, t: &T, order: usize) -> PyResult<Vec<T>> {
+    let jet = spline.derivatives(t, order).map_err(curve_error)?;
+    Ok(jet.into_iter().flatten().collect())
+}
+
+fn frame_numbers<T: Real>(spline: &PiecewisePh<T>, t: &T) -> PyResult<Vec<T>> {
+    let f = spline.frame(t).map_err(curve_error)?;
+    let mut row: Vec<T> = f.point.to_vec();
+    row.extend(f.axes.into_iter().flatten());
+    row.extend(f.omega);
+    row.push(f.speed);
+    Ok(row)
+}
+
+fn control_point_numbers<T: Real>(spline: &PiecewisePh<T>) -> Vec<T> {
+    spline
+        .segments()
+        .iter()
+        .flat_map(|s| s.control_points().into_iter().flatten())
+        .collect()
+}
+
+fn preimage_numbers<T: Real>(spline: &PiecewisePh<T>) -> Vec<T> {
+    spline
+        .segments()
+        .iter()
+        .flat_map(|s| {
+            s.preimage()
+                .iter()
+                .flat_map(|q| [q.w.clone(), q.x.clone(), q.y.clone(), q.z.clone()])
+                .collect::<Vec<_>>()
+        })
+        .collect()
+}
+
 /// Apply `f` to every parameter, flattening the rows it returns.
 fn each<'py>(
     py: Python<'py>,
@@ -189,10 +227,7 @@ impl NativePhSpline {
         t: PyReadonlyArray1<'py, f64>,
         order: usize,
     ) -> PyResult<Bound<'py, PyArray1<f64>>> {
-        each(py, &t, |t| {
-            let jet = self.spline.derivatives(&t, order).map_err(curve_error)?;
-            Ok(jet.into_iter().flatten().collect())
-        })
+        each(py, &t, |t| jet_numbers(&self.spline, &t, order))
     }
     /// s(t) at each t.
     fn arc_length<'py>(
@@ -229,34 +264,15 @@ impl NativePhSpline {
         py: Python<'py>,
         t: PyReadonlyArray1<'py, f64>,
     ) -> PyResult<Bound<'py, PyArray1<f64>>> {
-        each(py, &t, |t| {
-            let f = self.spline.frame(&t).map_err(curve_error)?;
-            let mut row: Vec<f64> = f.point.to_vec();
-            row.extend(f.axes.iter().flatten());
-            row.extend(f.omega);
-            row.push(f.speed);
-            Ok(row)
-        })
+        each(py, &t, |t| frame_numbers(&self.spline, &t))
     }
     /// The control points of every segment, flat: N·(degree + 1)·3 numbers.
     fn control_points<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        let flat = self
-            .spline
-            .segments()
-            .iter()
-            .flat_map(|s| s.control_points().into_iter().flatten())
-            .collect();
-        PyArray1::from_vec(py, flat)
+        PyArray1::from_vec(py, control_point_numbers(&self.spline))
     }
     /// The preimage A(ξ) of every segment as quaternions (w, x, y, z), flat.
     fn preimages<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        let flat = self
-            .spline
-            .segments()
-            .iter()
-            .flat_map(|s| s.preimage().iter().flat_map(|q| [q.w, q.x, q.y, q.z]))
-            .collect();
-        PyArray1::from_vec(py, flat)
+        PyArray1::from_vec(py, preimage_numbers(&self.spline))
     }
 }
 
@@ -344,10 +360,7 @@ impl NativeBallPhSpline {
     }
     /// The derivatives 0…order at each t, flat: len(t)·(order + 1)·3 balls.
     fn derivatives(&self, t: Vec<String>, order: usize) -> PyResult<Vec<Printed>> {
-        self.each(&t, "t", |t| {
-            let jet = self.spline.derivatives(t, order).map_err(curve_error)?;
-            Ok(jet.into_iter().flatten().collect())
-        })
+        self.each(&t, "t", |t| jet_numbers(&self.spline, t, order))
     }
     /// s(t) at each t.
     fn arc_length(&self, t: Vec<String>) -> PyResult<Vec<Printed>> {
@@ -361,38 +374,17 @@ impl NativeBallPhSpline {
     }
     /// Point (3), axes (9), ω (3) and speed (1) at each t: 16 balls.
     fn frames(&self, t: Vec<String>) -> PyResult<Vec<Printed>> {
-        self.each(&t, "t", |t| {
-            let f = self.spline.frame(t).map_err(curve_error)?;
-            let mut row: Vec<Ball> = f.point.to_vec();
-            row.extend(f.axes.into_iter().flatten());
-            row.extend(f.omega);
-            row.push(f.speed);
-            Ok(row)
-        })
+        self.each(&t, "t", |t| frame_numbers(&self.spline, t))
     }
     /// The control points of every segment, flat.
     fn control_points(&self) -> PyResult<Vec<Printed>> {
-        let points: Vec<Ball> = self
-            .spline
-            .segments()
+        control_point_numbers(&self.spline)
             .iter()
-            .flat_map(|s| s.control_points().into_iter().flatten())
-            .collect();
-        points.iter().map(printed).collect()
+            .map(printed)
+            .collect()
     }
     /// The preimages as quaternions (w, x, y, z), flat.
     fn preimages(&self) -> PyResult<Vec<Printed>> {
-        let quaternions: Vec<Ball> = self
-            .spline
-            .segments()
-            .iter()
-            .flat_map(|s| {
-                s.preimage()
-                    .iter()
-                    .flat_map(|q| [q.w.clone(), q.x.clone(), q.y.clone(), q.z.clone()])
-                    .collect::<Vec<_>>()
-            })
-            .collect();
-        quaternions.iter().map(printed).collect()
+        preimage_numbers(&self.spline).iter().map(printed).collect()
     }
 }
