@@ -121,13 +121,22 @@ def test_ph_hermite_and_phodcos_are_the_command_line():
         (lambda: tv.dubins(WAYPOINTS, -1), "radius"),
         (lambda: tv.gerbs_path(WAYPOINTS, 30, kind="spline"), "kind"),
         (lambda: tv.marin([[0, 0]]), "points"),
-        (lambda: tv.marin_1d([0, 1, 3, 2], scalar="rational"), "scalar"),
+        (lambda: tv.marin_1d([0, 1, 3, 2], scalar="rational"), "scalar: rational"),  # not "option --scalar"
         (lambda: tv.spline_fit([0], [1], controls=1), "times"),
         (lambda: tv.bang_bang(float("nan")), "xi"),
         (lambda: tv.bspline_basis(-1), "degree"),
+        (lambda: tv.dubins([0, 0, 1, 1], 1), "waypoints"),
+        (lambda: tv.marin([0, 1, 2, 3]), "points"),
     ],
 )
 def test_hostile_jobs_raise_a_value_error_naming_the_field(call, field):
     with pytest.raises(tv.TrajverifyError) as caught:
         call()
     assert field in str(caught.value), str(caught.value)
+
+
+def test_a_ball_run_gives_balls_even_for_the_numbers_it_prints_exactly():
+    result = tv.marin([[0, 0], [1, 2], [3, 3], [4, 0]], scalar="ball:128")
+    assert all(isinstance(t, tv.Ball) for t in result.t)
+    assert result.t[0].rad == 0 and 0 in result.t[0] and 1 in result.t[-1]
+

@@ -145,6 +145,14 @@ def test_run_prints_what_the_command_line_prints():
         (lambda: tv.run("no-such-algorithm", {}), "algorithm"),
         (lambda: tv.run("hermite", {"start": [1], "end": [1], "interval": [0, 1]}, "mpfr:x"), "scalar"),
         (lambda: tv.run("hermite", {"start": [True], "end": [1], "interval": [0, 1]}), "start"),
+        (lambda: tv.hermite([0, 1], [1, 1], interval=(0, 1, 2)), "interval"),
+        (lambda: tv.hermite([0, 1], [1, 1], interval=1), "interval"),
+        (lambda: tv.hermite([0, 1], [1, 1], interval=("0", "2*pi")), "interval"),
+        (lambda: tv.hermite([0, 1], [1, 1], scalar=5), "scalar"),
+        (lambda: tv.hermite_batch(np.zeros(3), np.ones(3)), "start"),
+        (lambda: tv.hermite_batch(np.zeros((0, 2)), np.ones((0, 2))), "start"),
+        (lambda: tv.natural_spline([[0, 1], [2, 3]], [0, 1], [0.5]), "t"),
+        (lambda: tv.run("hermite", {"start": [1], "end": [1], "interval": [0, 1]}, "float:2"), "scalar:"),
     ],
 )
 def test_hostile_input_raises_a_value_error_naming_the_field(call, field):
@@ -170,7 +178,7 @@ def test_hostile_shapes_and_values_never_crash():
 
 
 def test_verify_returns_the_ledger():
-    ledger = tv.verify(["marin"])
+    ledger = tv.verify("marin")  # one name, or a list
     claims = ledger["claims"]
     assert claims and all(c["paper"].startswith("004") for c in claims)
     assert len(ledger) == len(claims) == ledger.summary["total"]
@@ -214,4 +222,18 @@ def test_balls_become_arbs_as_narrow_as_printed():
             # arb keeps a radius in 30 bits, rounded up: at most a few parts in 10⁹ wider.
             assert float(arb.rad()) <= float(ball.rad) * (1 + 2**-26)
             assert not arb.contains(flint.fmpq(1, 3) + flint.fmpq(1, 2 ** (bits - 8)))
+
+
+def test_numbers_as_exact_strings_and_the_default_scalar_work_in_f64():
+    assert np.array_equal(tv.hermite(["1/3", 1.0], [1.0, "2e-1"]), tv.hermite([1 / 3, 1.0], [1.0, 0.2]))
+    assert np.array_equal(tv.hermite([0, 1], [1, 1], interval=("0", "1/3")), tv.hermite([0, 1], [1, 1], (0, 1 / 3)))
+    assert np.array_equal(tv.hermite([0, 1], [1, 1], scalar=None), tv.hermite([0, 1], [1, 1]))
+    assert np.array_equal(tv.natural_spline([0, 1, 2], [0, 1, 0], [0.5], scalar=None).values, [0.6875])
+
+
+def test_verify_refuses_a_directory_that_is_not_empty(tmp_path):
+    (tmp_path / "keep.txt").write_text("mine")
+    with pytest.raises(tv.TrajverifyError, match="out"):
+        tv.verify("marin", out=tmp_path)
+    assert [p.name for p in tmp_path.iterdir()] == ["keep.txt"]
 

@@ -23,7 +23,18 @@ from typing import Any, List, NamedTuple, Optional, Sequence
 import numpy as np
 
 from ._cli import command, run
-from ._numbers import Ball, Number, as_rows, exact_text, floats, from_text
+from ._numbers import (
+    Ball,
+    Number,
+    as_rows,
+    exact_text,
+    floats,
+    from_text,
+    interval_floats,
+    pair,
+    scalar_name,
+    vector,
+)
 from ._trajverify import TrajverifyError
 from ._trajverify import hermite_f64 as _hermite_f64
 from ._trajverify import natural_spline_f64 as _natural_spline_f64
@@ -42,6 +53,8 @@ from .jobs import (
 )
 from .ledger import Claim, Ledger
 from .ph import Frames, PhSpline, ph_spline, phodcos
+
+__version__ = "0.1.0"
 
 __all__ = [
     "Ball",
@@ -74,7 +87,7 @@ __all__ = [
     "verify",
 ]
 
-def hermite(start: Any, end: Any, interval: Sequence[Number] = (0.0, 1.0), scalar: str = "f64") -> Any:
+def hermite(start: Any, end: Any, interval: Sequence[Number] = (0.0, 1.0), scalar: Optional[str] = "f64") -> Any:
     """Bernstein control points of the degree-(2m+1) polynomial with the m+1 derivatives
     `start` at t0 and `end` at t1 (paper 000; scipy's ``BPoly.from_derivatives`` for two
     times). `start[j]` is the j-th derivative, a number or a point.
@@ -86,13 +99,14 @@ def hermite(start: Any, end: Any, interval: Sequence[Number] = (0.0, 1.0), scala
     >>> hermite([0.0, 1.0], [1.0, 1.0]).tolist()
     [0.0, 0.3333333333333333, 0.6666666666666666, 1.0]
     """
+    scalar = scalar_name(scalar)
     if scalar != "f64":
-        doc = {"start": start, "end": end, "interval": list(interval)}
+        doc = {"start": start, "end": end, "interval": list(pair(interval, "interval"))}
         out = run("hermite", doc, scalar)
         return from_text(out["control_points"], scalar)
     rows_start, points = as_rows(start, "start")
     rows_end, _ = as_rows(end, "end")
-    t0, t1 = (float(x) for x in interval)
+    t0, t1 = interval_floats(interval)
     points_out = _hermite_f64(rows_start, rows_end, t1 - t0)
     return points_out if points else points_out[:, 0]
 
@@ -101,17 +115,19 @@ def hermite_batch(start: Any, end: Any, interval: Sequence[float] = (0.0, 1.0)) 
     """:func:`hermite` in f64 for N problems at once: `start` and `end` of shape (N, m+1) or
     (N, m+1, d); returns (N, 2m+2) or (N, 2m+2, d). One call, one pass without the GIL."""
     s, e = floats(start, "start"), floats(end, "end")
-    if s.shape != e.shape or s.ndim not in (2, 3):
-        raise TrajverifyError(
-            f'field "end": shape {e.shape} where "start" has {s.shape} (expected (N, m+1) or (N, m+1, d))'
-        )
+    if s.ndim not in (2, 3):
+        raise TrajverifyError(f'field "start": expected shape (N, m+1) or (N, m+1, d), found {s.shape}')
+    if s.shape != e.shape:
+        raise TrajverifyError(f'field "end": shape {e.shape} where "start" has {s.shape}')
+    if s.shape[0] == 0:
+        raise TrajverifyError('field "start": no problems (N = 0)')
     scalar_points = s.ndim == 2
     if scalar_points:
         s, e = s[:, :, None], e[:, :, None]
     n, m1, d = s.shape
     # One problem of N·d coordinates: the map acts on each coordinate alone.
     flat = lambda a: np.ascontiguousarray(a.transpose(1, 0, 2).reshape(m1, n * d))
-    t0, t1 = (float(x) for x in interval)
+    t0, t1 = interval_floats(interval)
     points = _hermite_f64(flat(s), flat(e), t1 - t0)
     out = points.reshape(-1, n, d).transpose(1, 0, 2)
     return out[:, :, 0] if scalar_points else out
@@ -125,7 +141,7 @@ class SplineJet(NamedTuple):
     second: Any
 
 
-def natural_spline(t: Any, z: Any, at: Any, scalar: str = "f64") -> SplineJet:
+def natural_spline(t: Any, z: Any, at: Any, scalar: Optional[str] = "f64") -> SplineJet:
     """The natural cubic spline through (t_i, z_i) (paper 004, Eq. 2.3; scipy's
     ``CubicSpline(t, z, bc_type="natural")``) and its first two derivatives at `at`.
 
@@ -134,17 +150,18 @@ def natural_spline(t: Any, z: Any, at: Any, scalar: str = "f64") -> SplineJet:
     >>> natural_spline([0.0, 1.0, 2.0], [0.0, 1.0, 0.0], [0.5]).values.tolist()
     [0.6875]
     """
+    scalar = scalar_name(scalar)
     if scalar != "f64":
         out = run("natural-spline", {"t": t, "z": z, "at": at}, scalar)
         return SplineJet(*(from_text(out[k], scalar) for k in ("values", "first", "second")))
     rows, points = as_rows(z, "z")
-    jets = _natural_spline_f64(floats(t, "t"), np.ascontiguousarray(rows), floats(at, "at"))
+    jets = _natural_spline_f64(vector(t, "t"), np.ascontiguousarray(rows), vector(at, "at"))
     return SplineJet(*(j if points else j[:, 0] for j in jets))
 
 
 def _verify(out: str, papers: Optional[List[str]]) -> None:
     args = ["verify", "--out", out]
-    for paper in papers or []:
+    for paper in [papers] if isinstance(papers, str) else papers or []:
         args += ["--paper", paper]
     command(args)
 
@@ -152,10 +169,12 @@ def _verify(out: str, papers: Optional[List[str]]) -> None:
 def verify(papers: Optional[List[str]] = None, out: Optional[str] = None) -> Ledger:
     """Check the papers' claims (all five, or those named: ids or short names such as
     ``"marin"``) and return the ledger (``claims.json`` as a :class:`Ledger`: a dict with
-    ``summary`` and ``claims``, whose claims are also :class:`Claim` objects). The reports
-    and figures are written to `out` (must not exist or be empty), or to a temporary
-    directory that is removed."""
+    ``summary`` and ``claims`` as JSON records; ``ledger.claims`` gives them as :class:`Claim`
+    objects). `papers` is a list, or one name. The reports and figures are written to `out`
+    (which must not exist or be empty), or to a temporary directory that is removed."""
     if out is not None:
+        if os.path.isdir(out) and os.listdir(out):
+            raise TrajverifyError(f"out: {os.fspath(out)} is not empty (give a new or an empty directory)")
         _verify(os.fspath(out), papers)
         with open(os.path.join(out, "claims.json"), encoding="utf-8") as f:
             return Ledger(json.load(f))

@@ -4,11 +4,19 @@ command (``verify``, ``report convergence``) on its arguments."""
 from __future__ import annotations
 
 import json
+import re
 from typing import List, Optional, Union
 
 from ._numbers import exact_tree
+from ._trajverify import TrajverifyError
 from ._trajverify import command as _command
 from ._trajverify import run as _run
+
+
+def _in_python_words(error: TrajverifyError) -> TrajverifyError:
+    """The command line's refusal with its option names as the keyword arguments' names
+    ("option --scalar: …" → "scalar: …")."""
+    return TrajverifyError(re.sub(r"option --([a-z-]+)", lambda m: m.group(1).replace("-", "_"), str(error)))
 
 
 def run(algorithm: str, input: Union[dict, str], scalar: Optional[str] = None) -> dict:
@@ -20,9 +28,15 @@ def run(algorithm: str, input: Union[dict, str], scalar: Optional[str] = None) -
     ['0', '1/3', '2/3', '1']
     """
     text = input if isinstance(input, str) else json.dumps(exact_tree(input, ""))
-    return json.loads(_run(algorithm, text, scalar))
+    try:
+        return json.loads(_run(algorithm, text, scalar))
+    except TrajverifyError as e:
+        raise _in_python_words(e) from None
 
 
 def command(args: List[str]) -> str:
     """Run ``trajverify <args>`` in process (the GIL released) and return what it prints."""
-    return _command([str(a) for a in args])
+    try:
+        return _command([str(a) for a in args])
+    except TrajverifyError as e:
+        raise _in_python_words(e) from None

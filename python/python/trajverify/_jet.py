@@ -24,6 +24,20 @@ import numpy as np
 from ._trajverify import TrajverifyError
 
 
+def _div(x: float, y: float) -> float:
+    """x / y, NaN for y = 0 (a pole: the library reports the curve not finite there)."""
+    return x / y if y != 0 else math.nan
+
+
+def _at(f: Callable[[float], float], x: float) -> float:
+    """f(x), or NaN outside f's domain or range (as numpy gives): the library then reports
+    where the curve is not finite, naming the segment, rather than a math domain error."""
+    try:
+        return float(f(x))
+    except (ValueError, OverflowError, ZeroDivisionError):
+        return math.nan
+
+
 class Jet:
     """The Taylor coefficients c_0 … c_n of a function at a point."""
 
@@ -77,7 +91,7 @@ class Jet:
         b = self._lift(other).c
         a, q = self.c, self._series(len(self.c))
         for k in range(len(a)):
-            q[k] = (a[k] - sum(b[j] * q[k - j] for j in range(1, k + 1))) / b[0]
+            q[k] = _div(a[k] - sum(b[j] * q[k - j] for j in range(1, k + 1)), b[0])
         return Jet(q)
 
     def __rtruediv__(self, other: Any) -> "Jet":
@@ -96,9 +110,9 @@ class Jet:
         # a^α by the recurrence of (a^α)' a = α a' a^α; needs a_0 ≠ 0.
         alpha, a = float(p), self.c
         r = self._series(len(a))
-        r[0] = a[0] ** alpha
+        r[0] = _at(lambda x: x**alpha if x > 0 or alpha.is_integer() else math.nan, a[0])
         for k in range(1, len(a)):
-            r[k] = sum(((alpha + 1) * j - k) * a[j] * r[k - j] for j in range(1, k + 1)) / (k * a[0])
+            r[k] = _div(sum(((alpha + 1) * j - k) * a[j] * r[k - j] for j in range(1, k + 1)), k * a[0])
         return Jet(r)
 
     def __rpow__(self, base: Any) -> "Jet":
@@ -107,16 +121,16 @@ class Jet:
     # ----- elementary functions -----
     def exp(self) -> "Jet":
         a, e = self.c, self._series(len(self.c))
-        e[0] = math.exp(a[0])
+        e[0] = _at(math.exp, a[0])
         for k in range(1, len(a)):
             e[k] = sum(j * a[j] * e[k - j] for j in range(1, k + 1)) / k
         return Jet(e)
 
     def log(self) -> "Jet":
         a, r = self.c, self._series(len(self.c))
-        r[0] = math.log(a[0])
+        r[0] = _at(math.log, a[0])
         for k in range(1, len(a)):
-            r[k] = (a[k] - sum(j * r[j] * a[k - j] for j in range(1, k)) / k) / a[0]
+            r[k] = _div(a[k] - sum(j * r[j] * a[k - j] for j in range(1, k)) / k, a[0])
         return Jet(r)
 
     def _sin_cos(self):
@@ -149,9 +163,9 @@ class Jet:
 
     def sqrt(self) -> "Jet":
         a, r = self.c, self._series(len(self.c))
-        r[0] = math.sqrt(a[0])
+        r[0] = _at(math.sqrt, a[0])
         for k in range(1, len(a)):
-            r[k] = (a[k] - sum(r[j] * r[k - j] for j in range(1, k))) / (2 * r[0])
+            r[k] = _div(a[k] - sum(r[j] * r[k - j] for j in range(1, k)), 2 * r[0])
         return Jet(r)
 
     def _integral_of(self, derivative: "Jet", value: float) -> "Jet":
@@ -165,10 +179,10 @@ class Jet:
         return self._integral_of(self._derivative() / (1.0 + self * self), math.atan(self.c[0]))
 
     def arcsin(self) -> "Jet":
-        return self._integral_of(self._derivative() / (1.0 - self * self).sqrt(), math.asin(self.c[0]))
+        return self._integral_of(self._derivative() / (1.0 - self * self).sqrt(), _at(math.asin, self.c[0]))
 
     def arccos(self) -> "Jet":
-        return self._integral_of(-self._derivative() / (1.0 - self * self).sqrt(), math.acos(self.c[0]))
+        return self._integral_of(-self._derivative() / (1.0 - self * self).sqrt(), _at(math.acos, self.c[0]))
 
     # ----- numpy -----
     _UFUNCS = {
@@ -214,7 +228,10 @@ def jet_function(curve: Callable[[Any], Sequence[Any]]) -> Callable[[float, int]
             ) from None
         if len(components) != 3:
             raise TrajverifyError(f"curve: the callable returned {len(components)} components, expected 3 (x, y, z)")
-        series = [identity._lift(c).c for c in components]
+        try:
+            series = [identity._lift(c).c for c in components]
+        except TypeError as e:
+            raise TrajverifyError(f"curve: the callable must return three numbers (x, y, z); {e}") from None
         flat = []
         factorial = 1.0
         for k in range(order + 1):

@@ -82,6 +82,10 @@ class Ball:
         q = x if isinstance(x, Fraction) else Fraction(exact_text(x))
         return self.lower <= q <= self.upper
 
+    def __float__(self) -> float:
+        """The midpoint rounded to a double."""
+        return float(self.mid)
+
     def to_arb(self):
         """The same ball as a python-flint ``arb`` (needs python-flint): the printed midpoint
         is read at a precision that holds all its digits (python-flint's default of 53 bits
@@ -106,6 +110,8 @@ def from_text(text: Any, scalar: str) -> Any:
         return [from_text(t, scalar) for t in text]
     if scalar == "rational":
         return Fraction(text)
+    if scalar.startswith("ball:"):
+        return Ball(text, "0")  # a number a ball run prints plainly is exact
     if scalar.startswith("mpfr:"):
         try:
             import mpmath
@@ -116,12 +122,71 @@ def from_text(text: Any, scalar: str) -> Any:
     return float(text)
 
 
+def _to_float(x: Any, field: str) -> Any:
+    """A number, or nested lists of them, as floats: strings such as "1/3" or "1e-3" are read
+    exactly, then rounded once (``float(Fraction)`` rounds correctly)."""
+    if isinstance(x, (list, tuple, np.ndarray)):
+        return [_to_float(v, field) for v in x]
+    if isinstance(x, str):
+        try:
+            return float(Fraction(x))
+        except (ValueError, ZeroDivisionError):
+            raise TrajverifyError(f'field "{field}": "{x}" is not a number') from None
+    return x
+
+
 def floats(values: Any, field: str) -> np.ndarray:
     """`values` as a contiguous float array, or the refusal naming `field`."""
     try:
         return np.ascontiguousarray(values, dtype=float)
+    except (TypeError, ValueError):
+        pass
+    try:
+        return np.ascontiguousarray(_to_float(values, field), dtype=float)
     except (TypeError, ValueError) as e:
         raise TrajverifyError(f'field "{field}": expected numbers or points of one dimension ({e})') from None
+
+
+def vector(values: Any, field: str) -> np.ndarray:
+    """`values` as a 1-D float array, or the refusal naming `field`."""
+    array = floats(values, field)
+    if array.ndim != 1:
+        raise TrajverifyError(f'field "{field}": expected a list of numbers, found an array of shape {array.shape}')
+    return array
+
+
+def pair(values: Any, field: str) -> Tuple[Any, Any]:
+    """The two ends of an interval, or the refusal naming `field`."""
+    if isinstance(values, (str, bytes)) or not hasattr(values, "__len__") or len(values) != 2:
+        raise TrajverifyError(f'field "{field}": expected two ends [t0, t1], found {values!r}')
+    return values[0], values[1]
+
+
+def interval_floats(values: Any, field: str = "interval") -> Tuple[float, float]:
+    """The two ends of an interval as doubles (exact strings such as "1/3" rounded once)."""
+    a, b = pair(values, field)
+    ends = floats([a, b], field)
+    return float(ends[0]), float(ends[1])
+
+
+def points(values: Any, field: str) -> list:
+    """A list of points (each a list of numbers), or the refusal naming `field`."""
+    if isinstance(values, np.ndarray):
+        values = values.tolist()
+    try:
+        rows = [list(p) for p in values]
+    except TypeError:
+        raise TrajverifyError(f'field "{field}": expected a list of points [[x, y, ...], ...]') from None
+    return rows
+
+
+def scalar_name(scalar: Any, default: str = "f64") -> str:
+    """The number type asked for (None: `default`), or the refusal naming the argument."""
+    if scalar is None:
+        return default
+    if not isinstance(scalar, str):
+        raise TrajverifyError(f'scalar: expected "f64", "rational", "mpfr:<bits>" or "ball:<bits>", found {scalar!r}')
+    return scalar
 
 
 def as_rows(values: Any, field: str) -> Tuple[np.ndarray, bool]:

@@ -18,7 +18,7 @@ from fractions import Fraction
 from typing import Any, List, NamedTuple, Optional, Sequence, Tuple, Union
 
 from ._cli import command
-from ._numbers import exact_text
+from ._numbers import exact_text, pair
 from ._trajverify import TrajverifyError
 
 
@@ -82,6 +82,10 @@ class ConvergenceStudy:
         self.fit = _fit(doc["fit"])
         self.f64_stops_improving_at: Optional[int] = doc.get("f64_stops_improving_at")
         self.notes: List[str] = doc.get("notes", [])
+
+    def __repr__(self) -> str:
+        fit = f"fitted order {self.fit.order:.4f}" if self.fit.outcome == "fitted" and self.fit.order is not None else self.fit.outcome
+        return f"ConvergenceStudy({self.method}, {len(self.levels)} levels, expected order {self.expected_order}, {fit})"
 
     def __str__(self) -> str:
         head = f"{self.method} on {self.curve}, {self.scalar}, expected order {self.expected_order}"
@@ -173,8 +177,14 @@ def convergence(
         raise TrajverifyError("curve: give either an expression or a data file, not both or neither")
     if callable(curve):
         raise TrajverifyError("curve: a convergence study needs an expression (the proof evaluates it in balls)")
-    level_text = levels if isinstance(levels, str) else ",".join(str(int(n)) for n in levels)
-    a, b = (str(exact_text(x, "interval")) for x in interval)
+    if isinstance(levels, str):
+        level_text = levels
+    else:
+        chosen = list(levels)
+        if not chosen or any(isinstance(n, bool) or not isinstance(n, int) or n < 0 for n in chosen):
+            raise TrajverifyError(f"levels: expected whole numbers n ≥ 0 (2ⁿ segments), found {chosen!r}")
+        level_text = ",".join(str(n) for n in chosen)
+    a, b = (str(exact_text(x, "interval")) for x in pair(interval, "interval"))
     with tempfile.TemporaryDirectory() as scratch:
         out = os.path.join(scratch, "report")
         args = ["report", "convergence"]

@@ -14,6 +14,7 @@ from typing import Any, List, NamedTuple, Optional, Sequence
 
 from ._cli import run
 from ._numbers import exact_text, from_text, from_texts
+from ._numbers import points as points_of
 
 
 def _scalar(out: dict) -> str:
@@ -115,8 +116,9 @@ def marin(
     scalar: Optional[str] = None,
 ) -> Marin:
     """The parameters t_0 = 0 < … < t_N = 1 minimizing Marin's objective (paper 004, Eq. 30;
-    ``"exact"`` Eq. 31 or ``"approx"``) for `points`, with optional weights a_1 … a_N."""
-    doc: dict = {"points": [list(p) for p in points], "objective": objective}
+    ``"exact"`` Eq. 31 or ``"approx"``) for `points` (N + 1 points of dimension K), with
+    optional weights a_1 … a_K, one per coordinate (default 1)."""
+    doc: dict = {"points": points_of(points, "points"), "objective": objective}
     if weights is not None:
         doc["weights"] = list(weights)
     out = run("marin", doc, scalar)
@@ -160,7 +162,7 @@ def gerbs_path(
     (``"bfbs"`` or ``"erbs"`` blending; `params` their parameters), sampled at `samples`
     parameters (default 101)."""
     doc: dict = {
-        "waypoints": [list(w) for w in waypoints],
+        "waypoints": points_of(waypoints, "waypoints"),
         "radius": exact_text(radius, "radius"),
         "theta_o": exact_text(theta_o, "theta_o"),
         "kind": kind,
@@ -236,7 +238,7 @@ def dubins(
     """The shortest Dubins path of turn `radius` between consecutive `waypoints` (2-D) with
     `headings` (default: from the paper's Algorithm 1), each leg sampled at `samples` points
     (default 33)."""
-    doc: dict = {"waypoints": [list(w) for w in waypoints], "radius": exact_text(radius, "radius")}
+    doc: dict = {"waypoints": points_of(waypoints, "waypoints"), "radius": exact_text(radius, "radius")}
     if headings is not None:
         doc["headings"] = [exact_text(h, "headings") for h in headings]
     if samples is not None:

@@ -15,7 +15,7 @@ import numpy as np
 
 from ._cli import run
 from ._jet import jet_function
-from ._numbers import exact_text, floats, from_text, from_texts
+from ._numbers import exact_text, floats, from_text, from_texts, interval_floats, pair, scalar_name
 from ._trajverify import TrajverifyError
 from ._trajverify import ph_fit as _ph_fit
 from ._trajverify import ph_fit_ball as _ph_fit_ball
@@ -102,6 +102,8 @@ class PhSpline:
 
     def derivatives(self, t: Any, order: int = 1) -> np.ndarray:
         """γ(t), γ′(t), …, γ⁽ᵒʳᵈᵉʳ⁾(t): shape t.shape + (order + 1, 3)."""
+        if isinstance(order, bool) or not isinstance(order, (int, np.integer)) or not 0 <= order <= 64:
+            raise TrajverifyError(f"order: expected a whole number from 0 to 64, found {order!r}")
         if not self._f64:
             texts, shape = self._texts(t, "t")
             return self._values(self._native.derivatives(texts, int(order)), shape + (order + 1, 3))
@@ -174,7 +176,7 @@ def ph_spline(
     tolerance: Optional[float] = None,
     derivatives: int = 4,
     roll: bool = True,
-    scalar: str = "f64",
+    scalar: Optional[str] = "f64",
 ) -> PhSpline:
     """The C⁴ PH spline of `curve` on `interval` (paper 001, Algorithm 2; the library's ``fit``
     with its defaults): `segments` uniform segments, or with `tolerance` doubled from there
@@ -192,15 +194,20 @@ def ph_spline(
     In balls the number of segments is given (no `tolerance`: the sampled error is an f64
     search).
 
+    There is no work budget: an expression converts 65536 segments in about half a second, but
+    a Python callable is called for every joint and every sample of the error search (about
+    20 calls a segment), so its time is the user's code's; Ctrl-C stops it.
+
     >>> import numpy as np
     >>> helix = ph_spline(lambda t: (np.cos(t), np.sin(t), t / 5), (0.0, 6.0), segments=32)
     >>> round(float(helix.length), 9) == round(6 * 1.04 ** 0.5, 9)
     True
     """
-    if isinstance(segments, bool) or not isinstance(segments, (int, np.integer)) or segments < 1:
-        raise TrajverifyError(f"segments: expected a positive integer, found {segments!r}")
-    if isinstance(derivatives, bool) or not isinstance(derivatives, (int, np.integer)) or derivatives < 1:
+    if isinstance(segments, bool) or not isinstance(segments, (int, np.integer)) or not 1 <= segments < 2**32:
+        raise TrajverifyError(f"segments: expected a positive integer below 2^32, found {segments!r}")
+    if isinstance(derivatives, bool) or not isinstance(derivatives, (int, np.integer)) or not 1 <= derivatives < 2**32:
         raise TrajverifyError(f"derivatives: expected a positive integer, found {derivatives!r}")
+    scalar = scalar_name(scalar)
     if scalar != "f64":
         kind, _, bits = scalar.partition(":")
         if kind not in ("mpfr", "ball") or not bits.isdigit() or not 2 <= int(bits) <= 1 << 16:
@@ -209,10 +216,10 @@ def ph_spline(
             raise TrajverifyError("curve: a conversion in balls needs an expression (a callable is differentiated in doubles)")
         if tolerance is not None:
             raise TrajverifyError("tolerance: only with scalar f64 (the sampled error is an f64 search); give segments")
-        ends = tuple(str(exact_text(x, "interval")) for x in interval)
+        ends = tuple(str(exact_text(x, "interval")) for x in pair(interval, "interval"))
         native = _ph_fit_ball(curve, ends, int(segments), int(derivatives), bool(roll), int(bits))
         return PhSpline(native, scalar, ends)
-    a, b = (float(x) for x in interval)
+    a, b = interval_floats(interval)
     if isinstance(curve, str):
         spec: Any = curve
     elif callable(curve):
@@ -245,9 +252,11 @@ def phodcos(
     scalar: str = "f64",
 ) -> Phodcos:
     """``trajverify run phodcos``: `curve` (an expression) converted to C⁴ PH segments on
-    `interval` (numbers or constants such as ``"4*pi"``, read exactly) in any number type,
-    with `segments` or a `tolerance` (then at most `max_segments`, default 4096)."""
-    doc: dict = {"curve": curve, "interval": [exact_text(x, "interval") for x in interval]}
+    `interval` (numbers, read exactly) in any number type, with `segments` or a `tolerance`
+    (then at most `max_segments`, default 4096)."""
+    if not isinstance(curve, str):
+        raise TrajverifyError("curve: phodcos needs an expression string (ph_spline takes a Python callable)")
+    doc: dict = {"curve": curve, "interval": [exact_text(x, "interval") for x in pair(interval, "interval")]}
     if segments is not None:
         doc["segments"] = segments
     if tolerance is not None:
