@@ -288,6 +288,7 @@ fn _trajverify(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(ph::ph_fit, m)?)?;
     m.add_class::<ph::NativePhSpline>()?;
     m.add_function(wrap_pyfunction!(ph::ph_fit_ball, m)?)?;
+    m.add_function(wrap_pyfunction!(ph::python_workers, m)?)?;
     m.add_class::<ph::NativeBallPhSpline>()?;
     Ok(())
 }

@@ -237,3 +237,21 @@ def test_a_convergence_study_plots_with_matplotlib():
     errors = ax.get_lines()[0].get_ydata()
     assert list(errors) == [lv.error for lv in study.levels]
     assert ax.get_xscale() == "log" and ax.get_yscale() == "log"
+
+
+def test_the_interpreter_exits_cleanly_after_an_interrupted_python_curve():
+    # A worker that asks for the GIL while Python 3.11 finalises would abort the process.
+    import subprocess
+    import sys
+
+    script = """
+import os, signal, threading, numpy as np, trajverify as tv
+threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT)).start()
+try:
+    tv.ph_spline(lambda t: (np.cos(t), np.sin(t), t / 5), (0, 6), segments=200000)
+except KeyboardInterrupt:
+    print("interrupted")
+"""
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=60)
+    assert done.returncode == 0 and done.stdout.strip() == "interrupted", done.stderr
+

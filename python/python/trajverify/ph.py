@@ -9,6 +9,8 @@ ball).
 
 from __future__ import annotations
 
+import atexit
+import time
 from typing import Any, Callable, NamedTuple, Optional, Sequence, Tuple, Union
 
 import numpy as np
@@ -19,6 +21,17 @@ from ._numbers import exact_text, floats, from_text, from_texts, interval_floats
 from ._trajverify import TrajverifyError
 from ._trajverify import ph_fit as _ph_fit
 from ._trajverify import ph_fit_ball as _ph_fit_ball
+from ._trajverify import python_workers as _python_workers
+
+
+@atexit.register
+def _wait_for_python_curves(timeout: float = 30.0) -> None:
+    """At exit, let an interrupted conversion of a Python curve finish its current call (it
+    answers NaN to the rest, so this is short): Python 3.11 ends a thread that asks for the
+    GIL during finalisation in a way that aborts the process."""
+    deadline = time.monotonic() + timeout
+    while _python_workers() > 0 and time.monotonic() < deadline:
+        time.sleep(0.01)
 
 CurveSpec = Union[str, Callable[[Any], Sequence[Any]]]
 
