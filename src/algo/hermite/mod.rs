@@ -40,10 +40,7 @@ pub mod piecewise;
 
 use crate::curve::bezier::BezierCurve;
 use crate::numeric::linalg::Matrix;
-use crate::numeric::poly::differences::{
-    anti_difference, anti_difference_lanes, backward_anti_difference,
-    backward_anti_difference_lanes,
-};
+use crate::numeric::poly::differences::{anti_difference_lanes, backward_anti_difference_lanes};
 use crate::numeric::poly::{binomial, falling_factorial, falling_factorial_in, int_in, Bernstein};
 use crate::scalar::{powi, Field};
 
@@ -127,12 +124,7 @@ impl<T: Field> HermiteData<T> {
     /// The shape `new` checks, checked again where the fields may have been set directly.
     fn check(&self) -> Result<(), HermiteError> {
         check_shape(self.start.len(), self.end.len(), (&self.t0, &self.t1))?;
-        for (name, list) in [("start", &self.start), ("end", &self.end)] {
-            if let Some(j) = list.iter().position(|x| !x.is_finite()) {
-                return Err(HermiteError::NotFinite(format!("{name}[{j}]")));
-            }
-        }
-        Ok(())
+        check_lane(&self.start, &self.end, 1, 0)
     }
 
     /// Data whose shape the caller built right (equal non-empty lengths, t₀ < t₁): the
@@ -173,20 +165,8 @@ impl<T: Field> HermiteData<T> {
     /// Those of [`HermiteData::new`] (checked again); [`HermiteError::ScaleNotRepresentable`] as
     /// [`derivative_scales`].
     pub fn solve(&self) -> Result<Bernstein<T>, HermiteError> {
-        self.check()?;
-        let scales = derivative_scales(self.derivatives(), (&self.t0, &self.t1))?;
-        self.solve_scaled(&scales)
-    }
-
-    /// [`HermiteData::solve`] after [`HermiteData::check`], with the scales of
-    /// [`derivative_scales`] for this data's m and interval already formed: they depend on
-    /// nothing else.
-    fn solve_scaled(&self, scales: &[T]) -> Result<Bernstein<T>, HermiteError> {
-        let scaled =
-            |x: &[T]| -> Vec<T> { x.iter().zip(scales).map(|(v, s)| v.clone() * s).collect() };
-        let head = anti_difference(&scaled(&self.start)); // p₀…pₘ
-        let tail = backward_anti_difference(&scaled(&self.end)); // pₘ₊₁…pₙ
-        let points = head.into_iter().chain(tail).collect();
+        // One problem is one lane of `solve_lanes`, which checks what `new` checks, in order.
+        let points = solve_lanes(&self.start, &self.end, 1, (&self.t0, &self.t1))?;
         Bernstein::new(points, (self.t0.clone(), self.t1.clone())).map_err(|e| match e {
             crate::numeric::poly::bernstein::BernsteinError::Empty => HermiteError::Empty,
             crate::numeric::poly::bernstein::BernsteinError::Interval => {
