@@ -443,6 +443,8 @@ impl Ledger {
     /// Record the outcome of the claim `id`. An id missing from the spec table, or recorded
     /// twice, becomes a `failed` claim (never a panic), and a test keeps the tables honest.
     pub fn record(&mut self, id: &str, outcome: Outcome) {
+        // Between claims, `verify` may stop (the Python package's Ctrl-C).
+        crate::cancel::checkpoint();
         let spec = self.specs.iter().find(|s| s.id == id);
         let duplicate = self.claims.iter().any(|c| c.id == id);
         let (verdict, evidence) = match (spec, duplicate) {

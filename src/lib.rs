@@ -21,6 +21,8 @@
 //!   differences, binomials), [`quat`](numeric::quat) (quaternions),
 //!   [`quadrature`](numeric::quadrature).
 //! - [`scalar`]: the `Field` and `Real` traits over f64, MPFR and rationals.
+//! - [`cancel`]: stopping a long computation midway (the checkpoints every long loop calls);
+//!   every layer may use it.
 //!
 //! One algorithm, three number types: the Hermite data of the paper's Fig. 2 mapped to
 //! Bernstein control points exactly, in MPFR and in f64.
@@ -47,6 +49,7 @@
 #![deny(missing_docs)]
 
 pub mod algo;
+pub mod cancel;
 #[doc(hidden)]
 pub mod cli;
 pub mod curve;

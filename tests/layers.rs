@@ -27,8 +27,20 @@ const ALGORITHMS: &[&str] = &[
 /// Top-level folders whose children are separate modules of the layer table.
 const GROUPS: &[&str] = &["algo", "numeric"];
 
-/// The modules `module` may use, or `None` for a module missing from the layer order.
+/// The modules `module` may use, or `None` for a module missing from the layer order:
+/// those of [`layer_allowed`] and `cancel`, the checkpoints of long loops, which is below
+/// every layer and uses none.
 fn allowed(module: &str) -> Option<Vec<&'static str>> {
+    if module == "cancel" {
+        return Some(vec![]);
+    }
+    let mut uses = layer_allowed(module)?;
+    uses.push("cancel");
+    Some(uses)
+}
+
+/// The modules of the layer order `module` may use, or `None` for a module missing from it.
+fn layer_allowed(module: &str) -> Option<Vec<&'static str>> {
     Some(match module {
         "scalar" | "ledger" | "algo" | "numeric" => vec![],
         "numeric::linalg" | "numeric::quat" | "numeric::quadrature" | "numeric::maximum" => {

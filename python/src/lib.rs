@@ -19,8 +19,10 @@ use pyo3::create_exception;
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use std::borrow::Cow;
+use std::sync::atomic::{AtomicUsize, Ordering};
 use trajverify::algo::hermite::solve_lanes;
 use trajverify::algo::param::natural::piece_index;
+use trajverify::cancel::{run_stoppable, StopFlag};
 use trajverify::cli::{run_text, Algorithm, Failure};
 use trajverify::scalar::ScalarKind;
 use trajverify::NaturalCubicSpline;
@@ -209,7 +211,7 @@ fn run(py: Python<'_>, algorithm: &str, input: &str, scalar: Option<&str>) -> Py
         .transpose()
         .map_err(|e| input_error(format!("scalar: {e}")))?;
     let input = input.to_string();
-    match interruptible(py, move || run_text(algorithm, scalar, &input))? {
+    match interruptible(py, 0, move || run_text(algorithm, scalar, &input))? {
         Ok(mut line) => {
             line.truncate(line.trim_end().len());
             Ok(line)
@@ -218,23 +220,52 @@ fn run(py: Python<'_>, algorithm: &str, input: &str, scalar: Option<&str>) -> Py
     }
 }
 
-/// Run `job` on a worker thread while this thread, without the GIL, waits for it and checks
-/// every 50 ms for a signal: Ctrl-C raises `KeyboardInterrupt` at once. The library has no
-/// way to stop a computation midway, so an interrupted job runs on in the background until
-/// it ends (within the budgets of `run`) and its answer is dropped. A job that panics is a
-/// `RuntimeError`, not a crash of the interpreter.
+/// How many jobs of [`interruptible`] are running, interrupted or not ([`running_jobs`]).
+static RUNNING_JOBS: AtomicUsize = AtomicUsize::new(0);
+
+/// One running job, counted in [`RUNNING_JOBS`] until dropped.
+struct RunningJob;
+
+impl RunningJob {
+    fn start() -> RunningJob {
+        RUNNING_JOBS.fetch_add(1, Ordering::SeqCst);
+        RunningJob
+    }
+}
+
+impl Drop for RunningJob {
+    fn drop(&mut self) {
+        RUNNING_JOBS.fetch_sub(1, Ordering::SeqCst);
+    }
+}
+
+/// The number of jobs still running on worker threads: 0 shortly after Ctrl-C stopped one
+/// (for the tests, and for a caller who wants to see the work end).
+#[pyfunction]
+fn running_jobs() -> usize {
+    RUNNING_JOBS.load(Ordering::SeqCst)
+}
+
+/// Run `job` on worker threads (a rayon pool of `threads`, 0 for one per core) while this
+/// thread, without the GIL, waits for it and checks every 50 ms for a signal. Ctrl-C raises
+/// `KeyboardInterrupt` at once and raises the job's [`StopFlag`]: the library's long loops
+/// stop at their next checkpoint ([`trajverify::cancel`]), so the work ends too, not only
+/// the wait. A job that panics is a `RuntimeError`, not a crash of the interpreter.
 pub(crate) fn interruptible<R: Send + 'static>(
     py: Python<'_>,
+    threads: usize,
     job: impl FnOnce() -> R + Send + 'static,
 ) -> PyResult<R> {
     use std::sync::mpsc::{channel, RecvTimeoutError};
     use std::time::Duration;
     let (send, receive) = channel();
-    // The command line's worker stack: expression nesting is limited for it.
+    let flag = StopFlag::new();
+    let stop = flag.clone();
+    let running = RunningJob::start();
     std::thread::Builder::new()
-        .stack_size(8 << 20)
         .spawn(move || {
-            let _ = send.send(job());
+            let _running = running;
+            let _ = send.send(run_stoppable(&flag, threads, job));
         })
         .map_err(|e| PyRuntimeError::new_err(format!("could not start a worker thread: {e}")))?;
     let mut receive = receive;
@@ -246,8 +277,14 @@ pub(crate) fn interruptible<R: Send + 'static>(
         });
         receive = back;
         match waited {
-            Ok(answer) => return Ok(answer),
-            Err(RecvTimeoutError::Timeout) => py.check_signals()?,
+            Ok(Ok(answer)) => return Ok(answer),
+            Ok(Err(stopped)) => return Err(PyRuntimeError::new_err(stopped.to_string())),
+            Err(RecvTimeoutError::Timeout) => {
+                if let Err(interrupt) = py.check_signals() {
+                    stop.stop();
+                    return Err(interrupt);
+                }
+            }
             Err(RecvTimeoutError::Disconnected) => {
                 return Err(PyRuntimeError::new_err(
                     "internal: the computation stopped without an answer (a panic in the library)",
@@ -275,7 +312,7 @@ fn command(py: Python<'_>, args: Vec<String>) -> PyResult<String> {
         let text = e.render().to_string();
         input_error(text.lines().next().unwrap_or("").to_string())
     })?;
-    interruptible(py, move || trajverify::cli::execute(cli))?.map_err(failure_error)
+    interruptible(py, 0, move || trajverify::cli::execute(cli))?.map_err(failure_error)
 }
 
 #[pymodule]
@@ -289,6 +326,7 @@ fn _trajverify(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<ph::NativePhSpline>()?;
     m.add_function(wrap_pyfunction!(ph::ph_fit_ball, m)?)?;
     m.add_function(wrap_pyfunction!(ph::python_workers, m)?)?;
+    m.add_function(wrap_pyfunction!(running_jobs, m)?)?;
     m.add_class::<ph::NativeBallPhSpline>()?;
     Ok(())
 }

@@ -4,9 +4,9 @@
 //! A Python curve reaches the library as a [`Curve`] whose `jet(t, order)` calls back into
 //! Python (the package differentiates the user's callable by Taylor arithmetic, so the
 //! derivatives are exact up to rounding, never finite differences). The conversion runs on a
-//! worker thread without the GIL (Ctrl-C interrupts the wait, [`interruptible`], and makes the
-//! remaining callbacks answer NaN so the abandoned conversion stops); each callback takes the
-//! GIL for its call. An exception raised by the callable
+//! worker thread without the GIL (Ctrl-C interrupts the wait and stops the conversion at its
+//! next checkpoint, [`interruptible`]; the callbacks until then answer NaN, so no more of the
+//! user's code runs); each callback takes the GIL for its call. An exception raised by the callable
 //! is kept and raised once the conversion returns (the library sees a non-finite jet and stops
 //! at that segment). Every method that evaluates takes a flat array of parameters and returns
 //! a flat array; the Python class `trajverify.PhSpline` shapes them.
@@ -134,7 +134,7 @@ pub fn ph_fit(
     };
     if let Ok(text) = curve.extract::<String>() {
         let parsed = ExprCurve::parse(&text).map_err(|e| input_error(format!("curve: {e}")))?;
-        return interruptible(py, move || {
+        return interruptible(py, 0, move || {
             let compiled = parsed.compile::<f64>(&());
             convert(&compiled, (a, b), &options)
         })?;
@@ -150,12 +150,8 @@ pub fn ph_fit(
     // would only hand it back and forth, and attaching a thread to Python for each call costs
     // more than the call (measured on 4096 segments: 6.6 s with half of it in the kernel).
     // Python's eval loop still yields the GIL to the waiting caller between callbacks.
-    let result = interruptible(py, move || {
-        let one = rayon::ThreadPoolBuilder::new()
-            .num_threads(1)
-            .build()
-            .map_err(|e| PyRuntimeError::new_err(format!("could not start a thread pool: {e}")))?;
-        let converted = one.install(|| Python::attach(|_| convert(&*worker, (a, b), &options)));
+    let result = interruptible(py, 1, move || {
+        let converted = Python::attach(|_| convert(&*worker, (a, b), &options));
         // The curve (a Python object) goes before the count says this worker is done.
         drop(worker);
         drop(running);
@@ -352,7 +348,7 @@ pub fn ph_fit_ball(
     if a >= b {
         return Err(input_error("interval: a < b is needed"));
     }
-    interruptible(py, move || {
+    interruptible(py, 0, move || {
         let (a, b) = (Ball::from_exact(&a, &bits), Ball::from_exact(&b, &bits));
         let options = FitOptions {
             segments,

@@ -212,20 +212,36 @@ def interrupt_after(seconds):
     "call",
     [
         # κ₂ proven in 64-bit balls for m = 40: seconds of work (docs/limits.md).
-        lambda: tv.run("hermite-condition", {"derivatives": 40, "interval": [0, 1], "matrix": "transform"}, "ball:64"),
+        lambda out: tv.run("hermite-condition", {"derivatives": 40, "interval": [0, 1], "matrix": "transform"}, "ball:64"),
+        # κ₂ at two MPFR precisions for m = 40: about 9 s of Jacobi sweeps.
+        lambda out: tv.run("hermite-condition", {"derivatives": 40, "interval": [0, 1], "matrix": "transform"}, "mpfr:1024"),
+        # A convergence study: about 6 s of conversions and proven maxima.
+        lambda out: tv.run("convergence", {"curve": HELIX, "interval": [0, 6], "levels": [12, 13]}),
+        # All five papers: about a minute.
+        lambda out: tv.verify(out=out),
         # A slow Python curve (2 ms a jet) on 1000 segments.
-        lambda: tv.ph_spline(slow_helix, (0.0, 6.0), segments=1000),
+        lambda out: tv.ph_spline(slow_helix, (0.0, 6.0), segments=1000),
     ],
 )
-def test_ctrl_c_stops_the_wait_at_once(call):
+def test_ctrl_c_stops_the_wait_at_once_and_the_work_soon_after(call, tmp_path):
     import time
 
+    from trajverify._trajverify import python_workers, running_jobs
+
+    out = tmp_path / "reports"
     started = time.perf_counter()
     interrupt_after(0.3)
     with pytest.raises(KeyboardInterrupt):
-        call()
+        call(str(out))
     assert time.perf_counter() - started < 1.5
-    # The package still answers afterwards.
+    # The library's loops stop at their next checkpoint (trajverify::cancel): the work ends
+    # within a fraction of a second (uninterrupted, each job above runs for seconds).
+    interrupted = time.perf_counter()
+    while running_jobs() + python_workers() > 0:
+        assert time.perf_counter() - interrupted < 2.0, "the interrupted job is still running"
+        time.sleep(0.01)
+    # Nothing half written, and the package still answers afterwards.
+    assert not out.exists() or not any(out.iterdir())
     assert tv.hermite([0.0, 1.0], [1.0, 1.0]).tolist()[1] == 1 / 3
 
 

@@ -692,6 +692,7 @@ pub fn study<C: StudyCurve + ?Sized>(
         .then(|| 16.0 * size * 2f64.powi(-(options.bits.min(2000) as i32) / 2));
     let mut rows = Vec::with_capacity(options.levels.len());
     for &n in &options.levels {
+        crate::cancel::checkpoint();
         rows.push(level(curve, interval, options, n, precision_floor)?);
         progress(n, 1 << n);
     }

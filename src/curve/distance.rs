@@ -257,6 +257,7 @@ pub fn net_turning(
         })
         .collect();
     while let Some((lo, hi, level)) = stack.pop() {
+        crate::cancel::checkpoint();
         let (va, vb) = (v(&Ball::exact(lo.clone())), v(&Ball::exact(hi.clone())));
         let whole = v(&Ball::from_bounds_at(&lo, &hi, bits));
         // Every vector of the box within 90° of v(a): its turning on the box is below 90°.

@@ -387,6 +387,7 @@ fn pieces<C: Curve<Ball> + ?Sized, P: BernsteinPieces<Ball> + ?Sized>(
     };
     let mut done = Vec::new();
     while let Some((a, b, depth, parent, known)) = todo.pop() {
+        crate::cancel::checkpoint();
         let m = known.unwrap_or_else(|| model(curve, pw, (k, points), (&a, &b), None));
         // Past the deadline a piece is kept whole: its remainder is in both bounds, so the
         // enclosure stays proven, only wider. A remainder that halving no longer shrinks
@@ -710,6 +711,7 @@ impl ErrorModels {
         // low for the target; it stops there rather than at the deadline.
         let mut checkpoint = (boxes, f64::INFINITY);
         let upper = loop {
+            crate::cancel::checkpoint();
             let Some(top) = heap.pop() else { break best.0 };
             // No bisection narrows a box below its model's Taylor remainder (both bounds
             // carry it) and the precision floor: stop there too.
@@ -762,6 +764,7 @@ impl ErrorModels {
                 let mut found = Vec::new();
                 let mut todo = vec![(Float::with_val(bits, 0), m.half_width.clone(), 0u32)];
                 while let Some((centre, half_width, depth)) = todo.pop() {
+                    crate::cancel::checkpoint();
                     if box_bounds(m, &centre, &half_width).1 < threshold {
                         continue;
                     }

@@ -208,6 +208,7 @@ fn refine<F: Fn(&Ball, usize) -> Option<Taylor<Ball>>>(
 ) -> Result<ProvenIntegral, IntegralError> {
     let mut count = queue.len();
     loop {
+        crate::cancel::checkpoint();
         let total = sum(&queue, ends);
         let target = options.tolerance.unwrap_or_else(|| {
             (total.mid().to_f64().abs() * (2f64).powi(16 - bits.min(1000) as i32))
@@ -296,6 +297,7 @@ fn split_into<F: Fn(&Ball, usize) -> Option<Taylor<Ball>>>(
 ) -> Result<(), IntegralError> {
     let mut pending = vec![(lo, hi)];
     while let Some((lo, hi)) = pending.pop() {
+        crate::cancel::checkpoint();
         // Both are enclosures of one integral: the narrower is kept (next to an essential
         // singularity the series may be finite but far wider than the range's bound).
         let series = piece_integral(integrand.series, &lo, &hi, order);

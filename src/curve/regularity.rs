@@ -110,6 +110,7 @@ pub fn check<C: Curve<Ball> + ?Sized>(
         slowest_at: start,
     };
     while let Some((lo, hi)) = boxes.pop() {
+        crate::cancel::checkpoint();
         seen += 1;
         let ball = Ball::from_bounds_at(&lo, &hi, bits);
         let jet = curve.jet(&ball, order);

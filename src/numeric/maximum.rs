@@ -184,6 +184,7 @@ where
     };
     frontier.visit(start.clone(), end.clone(), &evaluate)?;
     while let Some(top) = frontier.heap.pop() {
+        crate::cancel::checkpoint();
         let gap = Float::with_val_round(64, &top.upper - &frontier.best.0, Round::Up).0;
         let mid = Float::with_val(bits, Float::with_val(bits + 2, &top.lo + &top.hi) / 2u32);
         // Done when the gap is within tolerance or the budget is spent; a box that cannot be

@@ -182,7 +182,12 @@ pub fn tally<R>(f: impl FnOnce() -> R) -> (R, u64) {
 /// (for closures run on rayon's worker threads: `.map(carried(|k| …))`).
 pub fn carried<A, R, F: Fn(A) -> R + Sync + Send>(f: F) -> impl Fn(A) -> R + Sync + Send {
     let counter = CURRENT.with(|c| c.borrow().clone());
-    move |a| installed(counter.clone(), || f(a))
+    // Every parallel loop of the library goes through here: one checkpoint per item lets a
+    // stopped job end within an item (`crate::cancel`).
+    move |a| {
+        crate::cancel::checkpoint();
+        installed(counter.clone(), || f(a))
+    }
 }
 
 fn installed<R>(counter: Option<Arc<AtomicU64>>, f: impl FnOnce() -> R) -> R {

@@ -525,6 +525,7 @@ pub fn plan(leg: &ExactLeg, index: usize) -> Result<DubinsPlan, DubinsError> {
 }
 
 fn plan_at(leg: &ExactLeg, index: usize, bits: u32) -> Result<DubinsPlan, DubinsError> {
+    crate::cancel::checkpoint();
     let (frame, _, _) = Frame::<Ball>::new(leg, &bits);
     let mut candidates = Vec::new();
     for w in 0..WORDS.len() {
@@ -801,6 +802,7 @@ impl<T: Real> DubinsPath<T> {
 
     /// `count` ≥ 2 poses at equal arc-length steps from the start to the end of the path.
     pub fn samples(&self, count: usize) -> Vec<[T; 3]> {
+        crate::cancel::checkpoint();
         let ctx = self.radius.ctx();
         let last = count.max(2) as i64 - 1;
         let length = self.total();

@@ -257,6 +257,7 @@ pub fn gradient_projection_observed<T: Real>(
     let mut iterations = 0;
     let target = tolerance.clone() * &initial;
     while iterations < max_iterations && norm > target && !norm.is_zero() {
+        crate::cancel::checkpoint();
         // λ_max: the first spacing to reach zero along −p.
         let lambda_max = h
             .iter()
@@ -411,6 +412,7 @@ pub fn newton_polish_outcome<T: Real>(
     let ad: Vec<Dual<T>> = alpha.iter().cloned().map(Dual::constant).collect();
     let (mut taken, mut converged) = (0, false);
     for _ in 0..steps {
+        crate::cancel::checkpoint();
         let g = gradient(&h, z, alpha, form)?;
         let mut hessian = Matrix::zeros(n + 1, n + 1, &ctx);
         for k in 0..n {

@@ -35,6 +35,7 @@ pub fn gradient<T: Field>(
     let (two, three) = (T::from_i64(2, &ctx), T::from_i64(3, &ctx));
     let mut grad = vec![T::zero_in(&ctx); n];
     for (zl, al) in z.iter().zip(alpha) {
+        crate::cancel::checkpoint();
         let m: Vec<T> = match form {
             Objective::Exact => NaturalCubicSpline::new(knots_from_spacing(h, &ctx), zl.clone())?
                 .second_derivatives_at_knots()

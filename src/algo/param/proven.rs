@@ -149,6 +149,7 @@ fn hessian(h: &[Ball], z: &[Vec<Ball>], alpha: &[Ball], form: Objective) -> Opti
     let ad: Vec<Dual<Ball>> = alpha.iter().cloned().map(Dual::constant).collect();
     let mut out = Matrix::zeros(n, n, &bits);
     for k in 0..n {
+        crate::cancel::checkpoint();
         let column = gradient(&Dual::seeded(h, k), &zd, &ad, form).ok()?;
         for (i, c) in column.into_iter().enumerate() {
             out[(i, k)] = c.du;

@@ -304,6 +304,7 @@ pub fn fit<T: Real, C: Curve<T> + ?Sized>(
     };
     let mut n = options.segments;
     loop {
+        crate::cancel::checkpoint();
         let pw = convert(curve, (a, b), n, m, &free, options.roll)?;
         let Some(tol) = &options.tolerance else {
             return Ok(pw);

@@ -62,6 +62,7 @@ fn eliminate<T: Field>(
     check_shape(n, a.cols(), b.rows())?;
     let mut swapped_odd = false;
     for col in 0..n {
+        crate::cancel::checkpoint();
         // Largest magnitude pivot: exactness does not need it, floating point does.
         let mut best = col;
         let mut best_abs = a[(col, col)].abs();
@@ -189,6 +190,7 @@ pub fn ldl_pivots<T: Field>(a: &Matrix<T>) -> Option<Vec<T>> {
     let mut work = a.clone();
     let mut pivots = Vec::with_capacity(n);
     for c in 0..n {
+        crate::cancel::checkpoint();
         let d = work[(c, c)].clone();
         if d.is_zero() {
             return None;

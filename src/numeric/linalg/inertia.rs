@@ -127,6 +127,7 @@ impl IntegerSymmetric {
         let mut previous = rug::Integer::from(1);
         let mut negative = 0usize;
         for k in 0..n {
+            crate::cancel::checkpoint();
             let pivot = m[k][k].clone();
             if pivot == 0 {
                 return None;

@@ -65,6 +65,7 @@ pub fn singular_values<T: Real>(a: &Matrix<T>) -> Result<Vec<T>, NoConvergence> 
         let mut rotated = false;
         for i in 0..n {
             for j in i + 1..n {
+                crate::cancel::checkpoint();
                 let gamma = dot(&rows[i], &rows[j]);
                 if gamma.is_zero()
                     || gamma.abs() <= tolerance.clone() * &(norms[i].clone() * &norms[j]).sqrt()
