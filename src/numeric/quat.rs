@@ -167,20 +167,27 @@ impl<T: Field> Quat<T> {
     /// (a_w b_w + a_x b_x − a_y b_y − a_z b_z, a_w b_z + a_z b_w + a_x b_y + a_y b_x,
     ///  a_x b_z + a_z b_x − a_w b_y − a_y b_w).
     pub fn star(&self, b: &Quat<T>) -> [T; 3] {
+        let mut out = [self.w.clone(), self.w.clone(), self.x.clone()];
+        self.star_into(b, &mut out);
+        out
+    }
+    /// [`Quat::star`] written into `out`, bit for bit, reusing its storage (a loop of many
+    /// products keeps one scratch vector instead of allocating three numbers a product).
+    pub fn star_into(&self, b: &Quat<T>, out: &mut [T; 3]) {
         let (a, b) = (self, b);
-        let mut x = a.w.clone() * &b.w;
+        let [x, y, z] = out;
+        x.assign_mul(&a.w, &b.w);
         x.mul_add_assign(&a.x, &b.x);
         x.mul_sub_assign(&a.y, &b.y);
         x.mul_sub_assign(&a.z, &b.z);
-        let mut y = a.w.clone() * &b.z;
+        y.assign_mul(&a.w, &b.z);
         y.mul_add_assign(&a.z, &b.w);
         y.mul_add_assign(&a.x, &b.y);
         y.mul_add_assign(&a.y, &b.x);
-        let mut z = a.x.clone() * &b.z;
+        z.assign_mul(&a.x, &b.z);
         z.mul_add_assign(&a.z, &b.x);
         z.mul_sub_assign(&a.w, &b.y);
         z.mul_sub_assign(&a.y, &b.w);
-        [x, y, z]
     }
     /// A ⋆ A = A i A*, the Euler–Rodrigues image of i under A (Eq. 9).
     pub fn star_square(&self) -> [T; 3] {

@@ -724,11 +724,7 @@ impl Field for Ball {
             // No number: the ball of every number, as for NaN.
             return Ball::new(Float::with_val(precision(*bits), 0), f64::INFINITY);
         }
-        let q = rug::Rational::from((n, d));
-        Ball::rounded(
-            Float::with_val_round(precision(*bits), &q, Round::Nearest),
-            0.0,
-        )
+        Ball::rounded(super::mpfr::ratio_rounded(n, d, precision(*bits)), 0.0)
     }
     fn from_rational(q: &BigRational, bits: &u32) -> Self {
         Self::from_exact(&super::mpfr::to_gmp_rational(q), bits)

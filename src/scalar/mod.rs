@@ -151,6 +151,12 @@ pub trait Field:
     fn to_exact(&self) -> Option<rug::Rational> {
         self.to_rational().map(|q| mpfr::to_gmp_rational(&q))
     }
+    /// `self ← a·b`, rounded exactly as `a.clone() * b`, reusing `self`'s storage where the
+    /// number type has any (MPFR: no allocation when `self` has `a`'s precision), for loops
+    /// that keep a scratch product.
+    fn assign_mul(&mut self, a: &Self, b: &Self) {
+        *self = a.clone() * b;
+    }
     /// `self += a·b`. MPFR fuses it into one rounding without a temporary; the default (used
     /// by f64 and rationals) multiplies, then adds.
     fn mul_add_assign(&mut self, a: &Self, b: &Self) {

@@ -8,7 +8,8 @@ use super::{BigInt, BigRational, Field, Real};
 use num_bigint::Sign;
 use rug::float::{Constant, Round};
 use rug::integer::Order;
-use rug::{Float, Integer, Rational};
+use rug::ops::DivAssignRound;
+use rug::{Assign, Float, Integer, Rational};
 
 /// num-bigint → GMP integer, exactly.
 pub fn bigint_to_integer(n: &BigInt) -> Integer {
@@ -92,6 +93,20 @@ pub fn gmp_rational_to_f64(r: &rug::Rational) -> f64 {
 /// A precision MPFR accepts: `bits` clamped to [`rug::float::prec_min`],
 /// [`rug::float::prec_max`] (a context of 0 bits would make MPFR abort), so the `Field`
 /// constructors of `Float` and `Ball` never panic.
+/// n/d (d ≠ 0) rounded to nearest at `prec` bits, with the direction of the rounding (as
+/// `mpfr_set_q` gives for the fraction): at 64 bits or more n is exact in a Float, so one
+/// correctly rounded division by d gives the same number and direction without building a
+/// GMP rational (a gcd and two allocations; the hot constants of the PH conversion).
+pub(crate) fn ratio_rounded(n: i64, d: i64, prec: u32) -> (Float, std::cmp::Ordering) {
+    if prec >= 64 {
+        let mut x = Float::with_val(prec, n);
+        let direction = x.div_assign_round(d, Round::Nearest);
+        (x, direction)
+    } else {
+        Float::with_val_round(prec, Rational::from((n, d)), Round::Nearest)
+    }
+}
+
 pub fn precision(bits: u32) -> u32 {
     bits.clamp(rug::float::prec_min(), rug::float::prec_max())
 }
@@ -116,7 +131,7 @@ impl Field for Float {
             // IEEE: ±∞, or NaN for 0/0 (a GMP rational with denominator 0 would abort).
             return Float::with_val(precision(*bits), n) / 0u32;
         }
-        Float::with_val(precision(*bits), Rational::from((n, d)))
+        ratio_rounded(n, d, precision(*bits)).0
     }
     fn from_rational(q: &BigRational, bits: &u32) -> Self {
         Float::with_val(precision(*bits), &to_gmp_rational(q))
@@ -144,6 +159,14 @@ impl Field for Float {
     }
     fn to_exact(&self) -> Option<Rational> {
         Float::to_rational(self)
+    }
+    fn assign_mul(&mut self, a: &Self, b: &Self) {
+        if self.prec() == a.prec() {
+            // mpfr_mul into self at a's precision: `a.clone() * b` without the allocation.
+            self.assign(a * b);
+        } else {
+            *self = a.clone() * b;
+        }
     }
     fn mul_add_assign(&mut self, a: &Self, b: &Self) {
         *self += a * b; // mpfr_fma: one rounding, no temporary

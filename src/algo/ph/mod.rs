@@ -141,8 +141,9 @@ impl<T: Field> PhCurve<T> {
         let ctx = self.ctx();
         // Each pair (i, j), i ≤ j, contributes A_i ⋆ A_j; (i, j) and (j, i) give the same
         // vector, so the cached weight of i < j holds the factor 2.
+        let mut v = vec3::zero::<T>(&ctx);
         for term in weights::product_terms(self.preimage_degree()) {
-            let v = self.preimage[term.i].star(&self.preimage[term.j]);
+            self.preimage[term.i].star_into(&self.preimage[term.j], &mut v);
             vec3::axpy(&mut h[term.i + term.j], &term.weight.to(&ctx), &v);
         }
     }
