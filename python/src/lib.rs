@@ -223,19 +223,20 @@ fn run(py: Python<'_>, algorithm: &str, input: &str, scalar: Option<&str>) -> Py
 /// How many jobs of [`interruptible`] are running, interrupted or not ([`running_jobs`]).
 static RUNNING_JOBS: AtomicUsize = AtomicUsize::new(0);
 
-/// One running job, counted in [`RUNNING_JOBS`] until dropped.
-struct RunningJob;
+/// One running worker, counted in `count` (a static: [`RUNNING_JOBS`], the Python curves'
+/// workers) from [`Counted::start`] until it is dropped.
+pub(crate) struct Counted(&'static AtomicUsize);
 
-impl RunningJob {
-    fn start() -> RunningJob {
-        RUNNING_JOBS.fetch_add(1, Ordering::SeqCst);
-        RunningJob
+impl Counted {
+    pub(crate) fn start(count: &'static AtomicUsize) -> Counted {
+        count.fetch_add(1, Ordering::SeqCst);
+        Counted(count)
     }
 }
 
-impl Drop for RunningJob {
+impl Drop for Counted {
     fn drop(&mut self) {
-        RUNNING_JOBS.fetch_sub(1, Ordering::SeqCst);
+        self.0.fetch_sub(1, Ordering::SeqCst);
     }
 }
 
@@ -261,7 +262,7 @@ pub(crate) fn interruptible<R: Send + 'static>(
     let (send, receive) = channel();
     let flag = StopFlag::new();
     let stop = flag.clone();
-    let running = RunningJob::start();
+    let running = Counted::start(&RUNNING_JOBS);
     std::thread::Builder::new()
         .spawn(move || {
             let _running = running;

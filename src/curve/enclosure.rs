@@ -706,17 +706,17 @@ impl ErrorModels {
         let (models, floor, bits) = (&self.models, self.floor, self.bits);
         let (mut heap, mut best) = first_boxes(models, bits);
         let mut boxes = models.len();
-        // The gap upper − lower at the last checkpoint: a search that no longer narrows it
+        // The gap upper − lower at the last check: a search that no longer narrows it
         // (by 1 % in a window of boxes) has met rounding it cannot halve, at a precision too
         // low for the target; it stops there rather than at the deadline.
-        // The window is fixed when a checkpoint is taken: STALL_BOXES, or twice the boxes then
+        // The window is fixed at each check: STALL_BOXES, or twice the boxes then
         // waiting, since the gap narrows only once every box above the new upper bound has
         // been split, and with many segments the heap holds about one such box per model (a
         // fixed window stopped 8192 segments of a helix at an upper bound 90 times the
         // error, at every precision). A window that grew with the heap would never close
         // on a search that rounding stalls, whose heap grows with every split.
         let window = |waiting: usize| STALL_BOXES.max(2 * waiting);
-        let mut checkpoint = (boxes, f64::INFINITY, window(heap.len()));
+        let mut last_check = (boxes, f64::INFINITY, window(heap.len()));
         let upper = loop {
             crate::cancel::checkpoint();
             let Some(top) = heap.pop() else { break best.0 };
@@ -725,11 +725,11 @@ impl ErrorModels {
             let irreducible = 2.0 * (models[top.model].remainder + floor);
             let gap = top.upper - best.0;
             let done = top.upper <= best.0 * (1.0 + target) || gap <= irreducible;
-            if boxes - checkpoint.0 >= checkpoint.2 {
-                if gap > 0.99 * checkpoint.1 {
+            if boxes - last_check.0 >= last_check.2 {
+                if gap > 0.99 * last_check.1 {
                     break top.upper;
                 }
-                checkpoint = (boxes, gap, window(heap.len()));
+                last_check = (boxes, gap, window(heap.len()));
             }
             if done || boxes >= max_boxes || passed(deadline) {
                 break top.upper;
