@@ -5,9 +5,9 @@
 //! decimal text and `0.1` means 1/10, not the double nearest to it). Each number type then
 //! rounds once from the exact value ([`Field::from_exact`](crate::scalar::Field::from_exact)).
 
+use super::json::{Map, Value};
 use crate::scalar::parse::parse_exact;
 use crate::scalar::Exact;
-use serde_json::{Map, Value};
 
 /// A user-facing input error: one line, naming the field.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
@@ -44,19 +44,30 @@ impl RunError {
 }
 
 /// Parse the whole input document, which must be a JSON object with no key repeated in any
-/// object (serde_json would silently keep the last of two equal keys).
-pub fn parse_document(text: &str) -> Result<Map<String, Value>, InputError> {
-    let value = serde_json::from_str::<Value>(text)
-        .map_err(|e| InputError(format!("input: malformed JSON: {e}")))?;
-    if let Some((key, offset)) = repeated_key(text) {
-        let before = text.get(..offset).unwrap_or(text);
-        let line = before.matches('\n').count() + 1;
-        let column = before.len() - before.rfind('\n').map_or(0, |i| i + 1);
+/// object (serde_json would silently keep the last of two equal keys). Numbers keep their
+/// text ([`json`](super::json)); a text that is not JSON gets serde_json's message.
+pub fn parse_document(text: &str) -> Result<Map<'_>, InputError> {
+    let parsed = match super::json::parse(text) {
+        Ok(parsed) => parsed,
+        Err(malformed) => {
+            let message = match serde_json::from_str::<serde_json::Value>(text) {
+                Err(e) => e.to_string(),
+                // Not expected (the tests compare the two parsers): say where this one stopped.
+                Ok(_) => {
+                    let (line, column) = line_column(text, malformed.offset);
+                    format!("unexpected text at line {line} column {column}")
+                }
+            };
+            return fail(format!("input: malformed JSON: {message}"));
+        }
+    };
+    if let Some((key, offset)) = parsed.repeated_key {
+        let (line, column) = line_column(text, offset);
         return fail(format!(
             "input: malformed JSON: the key \"{key}\" appears twice at line {line} column {column}"
         ));
     }
-    match value {
+    match parsed.value {
         Value::Object(map) => Ok(map),
         other => fail(format!(
             "input: expected a JSON object, found {}",
@@ -65,70 +76,12 @@ pub fn parse_document(text: &str) -> Result<Map<String, Value>, InputError> {
     }
 }
 
-/// The first key that an object of `text` repeats, with the byte offset just after it.
-///
-/// `text` has already parsed as JSON, so a scan of its bytes suffices: a string is a key when
-/// it opens an object's member (after `{` or after `,` inside an object). A key with escapes
-/// is decoded before it is compared (`"a"` and `"\u0061"` are the same key). One pass over
-/// the bytes, against a second serde pass that cost as much as the parse itself.
-fn repeated_key(text: &str) -> Option<(String, usize)> {
-    use std::borrow::Cow;
-    use std::collections::HashSet;
-    let bytes = text.as_bytes();
-    // One entry per open container: the keys seen so far for an object, None for an array.
-    let mut open: Vec<Option<HashSet<Cow<str>>>> = Vec::new();
-    let mut expect_key = false;
-    let mut i = 0;
-    while let Some(&byte) = bytes.get(i) {
-        match byte {
-            b'{' => {
-                open.push(Some(HashSet::new()));
-                expect_key = true;
-            }
-            b'[' => {
-                open.push(None);
-                expect_key = false;
-            }
-            b'}' | b']' => {
-                open.pop();
-                expect_key = false;
-            }
-            b',' => expect_key = matches!(open.last(), Some(Some(_))),
-            b'"' => {
-                let start = i;
-                let mut escaped = false;
-                i += 1;
-                while let Some(&b) = bytes.get(i) {
-                    match b {
-                        b'"' => break,
-                        b'\\' => {
-                            escaped = true;
-                            i += 2;
-                        }
-                        _ => i += 1,
-                    }
-                }
-                if expect_key {
-                    let quoted = text.get(start..=i)?;
-                    let key: Cow<str> = if escaped {
-                        Cow::Owned(serde_json::from_str::<String>(quoted).ok()?)
-                    } else {
-                        Cow::Borrowed(&quoted[1..quoted.len() - 1])
-                    };
-                    if let Some(Some(seen)) = open.last_mut() {
-                        if seen.contains(&key) {
-                            return Some((key.into_owned(), i + 1));
-                        }
-                        seen.insert(key);
-                    }
-                    expect_key = false;
-                }
-            }
-            _ => {}
-        }
-        i += 1;
-    }
-    None
+/// The line (from 1) and column (bytes since the line's start) of byte `offset` of `text`.
+fn line_column(text: &str, offset: usize) -> (usize, usize) {
+    let before = text.get(..offset).unwrap_or(text);
+    let line = before.matches('\n').count() + 1;
+    let column = before.len() - before.rfind('\n').map_or(0, |i| i + 1);
+    (line, column)
 }
 
 /// A short name for the JSON type of `v`, for error messages.
@@ -144,15 +97,15 @@ pub fn kind(v: &Value) -> &'static str {
 }
 
 /// The field `name` of `obj`, or an error naming it.
-pub fn field<'a>(obj: &'a Map<String, Value>, name: &str) -> Result<&'a Value, InputError> {
+pub fn field<'a>(obj: &'a Map<'a>, name: &str) -> Result<&'a Value<'a>, InputError> {
     obj.get(name)
         .ok_or_else(|| InputError(format!("input: missing field \"{name}\"")))
 }
 
 /// Reject fields the algorithm does not know (a misspelt optional field would otherwise be
 /// silently ignored).
-pub fn only_fields(obj: &Map<String, Value>, known: &[&str]) -> Result<(), InputError> {
-    match obj.keys().find(|k| !known.contains(&k.as_str())) {
+pub fn only_fields(obj: &Map, known: &[&str]) -> Result<(), InputError> {
+    match obj.keys().find(|k| !known.contains(k)) {
         Some(k) => fail(format!(
             "input: unknown field \"{k}\" (expected {})",
             known.join(", ")
@@ -172,7 +125,7 @@ pub fn number(v: &Value, path: impl std::fmt::Display) -> Result<Exact, InputErr
 fn number_text<'a>(v: &'a Value, path: &dyn std::fmt::Display) -> Result<&'a str, InputError> {
     match v {
         Value::Number(n) => Ok(n.as_str()),
-        Value::String(s) => Ok(s.as_str()),
+        Value::String(s) => Ok(s),
         other => fail(format!(
             "field \"{path}\": expected a number or a numeric string, found {}",
             kind(other)
@@ -199,7 +152,10 @@ pub fn number_in<T: crate::scalar::Field>(
 
 /// The JSON value at `path` if it can be a number (a JSON number or a string), read later
 /// by [`number_in`] in the number type of the run.
-pub fn number_value(v: &Value, path: impl std::fmt::Display) -> Result<&Value, InputError> {
+pub fn number_value<'a>(
+    v: &'a Value<'a>,
+    path: impl std::fmt::Display,
+) -> Result<&'a Value<'a>, InputError> {
     number_text(v, &path).map(|_| v)
 }
 
@@ -250,7 +206,7 @@ pub fn real(v: &Value, path: &str) -> Result<RealInput, InputError> {
 /// One of the keywords `options` (name, value) at `path`; `default` when the field is absent
 /// (`None`: the field is required).
 pub fn choice<T: Copy>(
-    obj: &Map<String, Value>,
+    obj: &Map,
     path: &str,
     options: &[(&str, T)],
     default: Option<T>,
@@ -318,7 +274,7 @@ pub fn count(v: &Value, path: &str, max: usize) -> Result<usize, InputError> {
 }
 
 /// An array at `path`.
-pub fn array<'a>(v: &'a Value, path: &str) -> Result<&'a Vec<Value>, InputError> {
+pub fn array<'a>(v: &'a Value<'a>, path: &str) -> Result<&'a Vec<Value<'a>>, InputError> {
     v.as_array().ok_or_else(|| {
         InputError(format!(
             "field \"{path}\": expected an array, found {}",
@@ -362,9 +318,9 @@ pub fn uniform_values(v: &Value, path: &str) -> Result<(Vec<Vec<Exact>>, bool), 
 /// [`uniform_values`] with each number read by `read` (given the value and its path):
 /// [`number`] reads exactly, [`number_value`] keeps the JSON values for [`number_in`].
 pub fn uniform_values_with<'a, N>(
-    v: &'a Value,
+    v: &'a Value<'a>,
     path: &str,
-    read: impl Fn(&'a Value, &dyn std::fmt::Display) -> Result<N, InputError>,
+    read: impl Fn(&'a Value<'a>, &dyn std::fmt::Display) -> Result<N, InputError>,
 ) -> Result<(Vec<Vec<N>>, bool), InputError> {
     let items = array(v, path)?;
     if items.is_empty() {
@@ -423,54 +379,55 @@ pub fn uniform_values_with<'a, N>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use serde_json::json;
+
+    /// The JSON value of `text`.
+    fn value(text: &str) -> Value<'_> {
+        super::super::json::parse(text).unwrap().value
+    }
 
     #[test]
     fn numbers_are_exact_from_json_and_strings() {
         let doc = parse_document(r#"{"a": 0.1, "b": "3/5", "c": 1e-3}"#).unwrap();
-        assert_eq!(number(&doc["a"], "a").unwrap(), Exact::from((1, 10)));
-        assert_eq!(number(&doc["b"], "b").unwrap(), Exact::from((3, 5)));
-        assert_eq!(number(&doc["c"], "c").unwrap(), Exact::from((1, 1000)));
+        let read = |name: &str| number(field(&doc, name).unwrap(), name).unwrap();
+        assert_eq!(read("a"), Exact::from((1, 10)));
+        assert_eq!(read("b"), Exact::from((3, 5)));
+        assert_eq!(read("c"), Exact::from((1, 1000)));
     }
 
     #[test]
     fn errors_name_the_field() {
-        let e = number(&json!("NaN"), "start[2]").unwrap_err();
+        let e = number(&value("\"NaN\""), "start[2]").unwrap_err();
         assert!(e.0.starts_with("field \"start[2]\""), "{e}");
-        let e = uniform_values(&json!([1, [1, 2]]), "end").unwrap_err();
+        let e = uniform_values(&value("[1, [1, 2]]"), "end").unwrap_err();
         assert!(
             e.0.contains("end[1]") && e.0.contains("mixed dimensions"),
             "{e}"
         );
-        let e = interval(&json!([1, 1]), "interval").unwrap_err();
+        let e = interval(&value("[1, 1]"), "interval").unwrap_err();
         assert!(e.0.contains("interval"), "{e}");
         assert!(parse_document("[1]").is_err());
-        assert!(parse_document("{")
-            .unwrap_err()
-            .0
-            .contains("malformed JSON"));
-        let e = parse_document(r#"{"a": 1, "b": {"c": 2, "c": 3}}"#).unwrap_err();
-        assert!(e.0.contains("\"c\" appears twice"), "{e}");
+        let e = count(&value("2.5"), "derivatives", 10).unwrap_err();
+        assert!(e.0.contains("whole number"), "{e}");
     }
 
     #[test]
-    fn repeated_keys_are_found_in_their_own_object_only() {
-        let repeated = |text: &str| repeated_key(text).map(|(key, _)| key);
-        // Decoded before comparison: an escaped spelling is the same key.
-        assert_eq!(repeated(r#"{"a": 1, "\u0061": 2}"#), Some("a".into()));
+    fn malformed_documents_get_serde_json_messages_and_repeated_keys_their_place() {
+        // serde_json's own message, position included.
         assert_eq!(
-            repeated(r#"{"x": [1, {"k": 1, "k": 2}]}"#),
-            Some("k".into())
+            parse_document("{").unwrap_err().0,
+            "input: malformed JSON: EOF while parsing an object at line 1 column 1"
         );
-        // Equal keys of different objects, and keys spelt inside string values, are not.
-        assert_eq!(repeated(r#"[{"a": 1}, {"a": 1}]"#), None);
-        assert_eq!(repeated(r#"{"a": {"b": 1}, "b": 2}"#), None);
-        assert_eq!(repeated(r#"{"a": "x,\"a\":{", "b": ["a", "a"]}"#), None);
-        assert_eq!(repeated(r#"{"a\"": 1, "a": 2}"#), None);
+        assert_eq!(
+            parse_document("{\"a\": [1, 2,]}").unwrap_err().0,
+            "input: malformed JSON: trailing comma at line 1 column 13"
+        );
+        let e = parse_document(r#"{"a": 1, "b": {"c": 2, "c": 3}}"#).unwrap_err();
+        assert!(e.0.contains("\"c\" appears twice"), "{e}");
         let e = parse_document("{\n \"a\": 1,\n \"a\": 2}").unwrap_err();
         assert!(e.0.ends_with("appears twice at line 3 column 4"), "{e}");
+        // A text that is not JSON is refused as such even after a repeated key.
+        let e = parse_document(r#"{"a": 1, "a": 2, }"#).unwrap_err();
+        assert!(e.0.contains("trailing comma"), "{e}");
         assert!(parse_document(r#"{"a": [1, {"c": 2}, {"c": 3}], "b": 1.5}"#).is_ok());
-        let e = count(&json!(2.5), "derivatives", 10).unwrap_err();
-        assert!(e.0.contains("whole number"), "{e}");
     }
 }

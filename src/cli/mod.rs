@@ -9,6 +9,7 @@
 pub mod budget;
 mod dispatch;
 mod input;
+mod json;
 mod output;
 mod report_convergence;
 mod run_bspline;
@@ -232,7 +233,7 @@ enum Body {
 impl Rendered {
     /// An output in one number type, printed as it is.
     pub fn plain<T: crate::scalar::Field>(out: Out<T>) -> Self {
-        let mut text = String::new();
+        let mut text = String::with_capacity(out.text_size_hint());
         let body = match output::write_plain(&out, &mut text) {
             Some(keys) => Body::Text(text, keys),
             None => Body::Value(render_plain(&out)),

@@ -3,6 +3,7 @@
 use super::budget::{self, Rates};
 use super::dispatch::{run_field, run_real, FieldJob, RealJob};
 use super::input::{self, fail, InputError, RunError};
+use super::json::{Map, Value};
 use super::output::Out;
 use super::Rendered;
 use crate::algo::bspline::bang_bang;
@@ -12,14 +13,13 @@ use crate::algo::bspline::CardinalBSpline;
 use crate::scalar::ball::Ball;
 use crate::scalar::qsqrt2::QSqrt2;
 use crate::scalar::{Exact, Field, Real, ScalarKind};
-use serde_json::{Map, Value};
 
 /// The highest degree accepted by the basis and Gram commands (exact polynomials of degree k).
 pub const MAX_DEGREE: usize = 60;
 /// The most control points accepted by `spline-fit`.
 pub const MAX_CONTROLS: usize = 2000;
 
-fn degree(doc: &Map<String, Value>, minimum: usize) -> Result<usize, InputError> {
+fn degree(doc: &Map, minimum: usize) -> Result<usize, InputError> {
     let value = input::field(doc, "degree")?;
     let k = input::count(value, "degree", MAX_DEGREE)?;
     if k < minimum {
@@ -29,7 +29,7 @@ fn degree(doc: &Map<String, Value>, minimum: usize) -> Result<usize, InputError>
 }
 
 /// `run bspline-basis`: the pieces of B_k in s = t − j, exact.
-pub fn run_basis(doc: &Map<String, Value>) -> Result<Rendered, RunError> {
+pub fn run_basis(doc: &Map) -> Result<Rendered, RunError> {
     input::only_fields(doc, &["degree"])?;
     let k = degree(doc, 0)?;
     let b = CardinalBSpline::<Exact>::from_algorithm1(k, &());
@@ -45,7 +45,7 @@ pub fn run_basis(doc: &Map<String, Value>) -> Result<Rendered, RunError> {
 }
 
 /// `run bspline-gram`: ĝ₀…ĝ_k, exact.
-pub fn run_gram(doc: &Map<String, Value>) -> Result<Rendered, RunError> {
+pub fn run_gram(doc: &Map) -> Result<Rendered, RunError> {
     input::only_fields(doc, &["degree"])?;
     let k = degree(doc, 1)?;
     Ok(Rendered::plain(Out::object(vec![
@@ -63,7 +63,7 @@ struct FitInput {
     weights: Option<Vec<Exact>>,
 }
 
-fn read_fit(doc: &Map<String, Value>) -> Result<FitInput, InputError> {
+fn read_fit(doc: &Map) -> Result<FitInput, InputError> {
     input::only_fields(doc, &["degree", "controls", "times", "values", "weights"])?;
     let degree = degree(doc, 1)?;
     let controls = input::count(input::field(doc, "controls")?, "controls", MAX_CONTROLS)?;
@@ -194,7 +194,7 @@ fn check_conditioning<T: Field>(
 }
 
 /// `run spline-fit`: optimal interpolating (weights null) or smoothing control points.
-pub fn run_fit(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, RunError> {
+pub fn run_fit(doc: &Map, scalar: ScalarKind) -> Result<Rendered, RunError> {
     let data = read_fit(doc)?;
     // Dense elimination per coordinate: on max(M, N) unknowns for interpolation, on the M
     // controls for smoothing (the data enter through banded products), so (size)^3
@@ -259,7 +259,7 @@ impl FieldJob for FitInput {
 }
 
 /// `run bang-bang`: switching times and amplitude of the minimum-L∞ control through x(2) = ξ.
-pub fn run_bang_bang(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, RunError> {
+pub fn run_bang_bang(doc: &Map, scalar: ScalarKind) -> Result<Rendered, RunError> {
     input::only_fields(doc, &["xi"])?;
     let xi = input::number(input::field(doc, "xi")?, "xi")?;
     let Some(exact_times) = bang_bang::exact_switching_times() else {
@@ -284,7 +284,7 @@ fn bounds_of(exact: &Out<QSqrt2>, bits: u32) -> Out<Ball> {
     match exact {
         Out::Num(q) | Out::MaybeZero(q, _) => {
             let (lo, hi) = q.bounds(bits);
-            Out::Bounds(lo, hi)
+            Out::Bounds(Box::new((lo, hi)))
         }
         Out::List(items) => Out::List(items.iter().map(|v| bounds_of(v, bits)).collect()),
         Out::Object(fields) => Out::Object(

@@ -10,6 +10,7 @@
 use super::budget::{self, check_time, Rates};
 use super::dispatch::{run_real, run_real_or_exact, RealJob};
 use super::input::{self, fail, InputError, RealInput, RunError};
+use super::json::{Map, Value};
 use super::output::{flush, largest, noise_level, Out};
 use super::Rendered;
 use crate::algo::gerbs::bfbs::{Bfbs, MAX_EXPONENT};
@@ -27,7 +28,6 @@ use crate::algo::gerbs::{basis_derivatives_located, Blend, GerbsError, Knots, Lo
 use crate::curve::integral::IntegralOptions;
 use crate::scalar::ball::Ball;
 use crate::scalar::{mpfr_rational, Exact, Field, Real, ScalarKind};
-use serde_json::{Map, Value};
 
 /// The highest derivative order `run gerbs-basis` accepts.
 pub const MAX_DERIVATIVES: usize = 30;
@@ -82,7 +82,7 @@ enum Kind {
     Erbs,
 }
 
-fn kind(doc: &Map<String, Value>) -> Result<Kind, InputError> {
+fn kind(doc: &Map) -> Result<Kind, InputError> {
     input::choice(
         doc,
         "kind",
@@ -106,12 +106,8 @@ enum BasisParams {
 /// Read `params` for `kind` on knots t_1 … t_{n+2} (`nonempty[j]`: interval j+1 is not
 /// empty). A per-interval array has one entry per knot interval, or one per non-empty
 /// interval (the empty end intervals of doubled end knots then copy their neighbour).
-fn basis_params(
-    doc: &Map<String, Value>,
-    kind: Kind,
-    nonempty: &[bool],
-) -> Result<BasisParams, InputError> {
-    let empty = Map::new();
+fn basis_params(doc: &Map, kind: Kind, nonempty: &[bool]) -> Result<BasisParams, InputError> {
+    let empty = Map::default();
     let params = match doc.get("params") {
         None => &empty,
         Some(Value::Object(map)) => map,
@@ -129,7 +125,7 @@ fn basis_params(
 }
 
 /// `params` of a BFBS: `i`, one exponent for all `basis_count` basis functions or one each.
-fn bfbs_params(params: &Map<String, Value>, basis_count: usize) -> Result<BasisParams, InputError> {
+fn bfbs_params(params: &Map, basis_count: usize) -> Result<BasisParams, InputError> {
     input::only_fields(params, &["i"])
         .map_err(|e| InputError(e.0.replacen("input:", "field \"params\":", 1)))?;
     let exponent = |v: &Value, path: &str| {
@@ -163,7 +159,7 @@ fn bfbs_params(params: &Map<String, Value>, basis_count: usize) -> Result<BasisP
 
 /// `params` of an ERBS: each of α, β, γ, λ, σ one value or one per knot interval, and the
 /// reading of the centre.
-fn erbs_params(params: &Map<String, Value>, nonempty: &[bool]) -> Result<BasisParams, InputError> {
+fn erbs_params(params: &Map, nonempty: &[bool]) -> Result<BasisParams, InputError> {
     let mut known = ERBS_FIELDS.to_vec();
     known.push("centre");
     input::only_fields(params, &known)
@@ -185,7 +181,7 @@ fn erbs_params(params: &Map<String, Value>, nonempty: &[bool]) -> Result<BasisPa
     let mut single = Vec::new();
     for (name, (n, d)) in ERBS_FIELDS.iter().zip(ERBS_DEFAULTS) {
         let path = format!("params.{name}");
-        match params.get(*name) {
+        match params.get(name) {
             None => {
                 single.push(RealInput::Exact(crate::scalar::BigRational::new(
                     n.into(),
@@ -324,7 +320,7 @@ impl BasisParams {
 }
 
 /// A list of knots read exactly and checked (`field "knots": …`).
-fn knots(doc: &Map<String, Value>) -> Result<Knots<Exact>, InputError> {
+fn knots(doc: &Map) -> Result<Knots<Exact>, InputError> {
     let items = input::array(input::field(doc, "knots")?, "knots")?;
     let t = items
         .iter()
@@ -338,7 +334,7 @@ fn nonempty_intervals<T: Field>(knots: &Knots<T>) -> Vec<bool> {
     knots.as_slice().windows(2).map(|w| w[0] < w[1]).collect()
 }
 
-fn side(doc: &Map<String, Value>) -> Result<Side, InputError> {
+fn side(doc: &Map) -> Result<Side, InputError> {
     input::choice(
         doc,
         "side",
@@ -483,7 +479,7 @@ impl RealJob for BasisJob {
 }
 
 /// `run gerbs-basis`: B_2 … B_{n+1} and their derivatives at the given points.
-pub fn run_gerbs_basis(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, RunError> {
+pub fn run_gerbs_basis(doc: &Map, scalar: ScalarKind) -> Result<Rendered, RunError> {
     input::only_fields(
         doc,
         &["knots", "kind", "params", "at", "derivatives", "side"],
@@ -520,10 +516,7 @@ pub fn run_gerbs_basis(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<R
 }
 
 /// The points `at`, each inside the knots, read exactly.
-fn evaluation_points(
-    doc: &Map<String, Value>,
-    knots: &Knots<Exact>,
-) -> Result<Vec<Exact>, InputError> {
+fn evaluation_points(doc: &Map, knots: &Knots<Exact>) -> Result<Vec<Exact>, InputError> {
     let items = input::array(input::field(doc, "at")?, "at")?;
     if items.len() > MAX_POINTS {
         return fail(format!(
@@ -602,7 +595,7 @@ fn basis_budget(
 }
 
 /// Waypoints [[x, y], …], read exactly and checked for Algorithm 1 (at least `min`).
-fn waypoints(doc: &Map<String, Value>) -> Result<Vec<[Exact; 2]>, InputError> {
+fn waypoints(doc: &Map) -> Result<Vec<[Exact; 2]>, InputError> {
     let items = input::array(input::field(doc, "waypoints")?, "waypoints")?;
     if items.len() > MAX_POINTS {
         return fail(format!(
@@ -617,7 +610,7 @@ fn waypoints(doc: &Map<String, Value>) -> Result<Vec<[Exact; 2]>, InputError> {
         .collect()
 }
 
-fn positive(doc: &Map<String, Value>, name: &str, what: &str) -> Result<Exact, InputError> {
+fn positive(doc: &Map, name: &str, what: &str) -> Result<Exact, InputError> {
     let r = input::number(input::field(doc, name)?, name)?;
     if r <= 0 {
         return fail(format!(
@@ -833,7 +826,7 @@ impl PathJob {
 
 /// `run gerbs-path`: Algorithm 2 through the waypoints, sampled, with length and the
 /// values at the waypoints' knots.
-pub fn run_gerbs_path(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, RunError> {
+pub fn run_gerbs_path(doc: &Map, scalar: ScalarKind) -> Result<Rendered, RunError> {
     input::only_fields(
         doc,
         &[
@@ -1070,7 +1063,7 @@ impl RealJob for DubinsJob {
 /// The headings of `run dubins`: `None` for Algorithm 1's (whose checks then apply to the
 /// waypoints), or one exact angle per waypoint.
 fn dubins_headings(
-    doc: &Map<String, Value>,
+    doc: &Map,
     waypoints: &[[Exact; 2]],
 ) -> Result<Option<Vec<RealInput>>, InputError> {
     Ok(match doc.get("headings") {
@@ -1174,7 +1167,7 @@ fn leg_out<T: Real>(i: usize, leg: &DubinsPath<T>, samples: usize, levels: &Leve
 }
 
 /// `run dubins`: the shortest Dubins path of radius R between consecutive waypoint poses.
-pub fn run_dubins(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, RunError> {
+pub fn run_dubins(doc: &Map, scalar: ScalarKind) -> Result<Rendered, RunError> {
     input::only_fields(doc, &["waypoints", "headings", "radius", "samples"])?;
     let waypoints = waypoints(doc)?;
     let headings = dubins_headings(doc, &waypoints)?;

@@ -3,6 +3,7 @@
 use super::budget::{self, check_output, Rates};
 use super::dispatch::{run_field, run_proven_job, FieldJob, ProvenJob};
 use super::input::{self, fail, InputError, RunError, ValuePath};
+use super::json::{Map, Value};
 use super::output::Out;
 use super::Rendered;
 use crate::algo::hermite::{self, condition, TransformKind};
@@ -10,7 +11,6 @@ use crate::scalar::ball::Ball;
 use crate::scalar::certify::correct_digits;
 use crate::scalar::{big_rational, BigRational, Exact, Field, Float, ScalarKind};
 use rug::float::Round;
-use serde_json::{Map, Value};
 
 /// The most derivatives accepted by `run hermite` (degree 1001).
 pub const MAX_HERMITE_DERIVATIVES: usize = 500;
@@ -21,14 +21,14 @@ pub const MAX_CONDITION_DERIVATIVES: usize = 60;
 /// The Hermite data of `run hermite`. The derivatives stay JSON values until the run's number
 /// type reads them ([`input::number_in`]: an f64 run reads no big rational).
 struct HermiteInput<'a> {
-    start: Vec<Vec<&'a Value>>,
-    end: Vec<Vec<&'a Value>>,
+    start: Vec<Vec<&'a Value<'a>>>,
+    end: Vec<Vec<&'a Value<'a>>>,
     t0: Exact,
     t1: Exact,
     is_point: bool,
 }
 
-fn read_hermite(doc: &Map<String, Value>) -> Result<HermiteInput<'_>, InputError> {
+fn read_hermite<'a>(doc: &'a Map<'a>) -> Result<HermiteInput<'a>, InputError> {
     input::only_fields(doc, &["start", "end", "interval"])?;
     let values = |name: &str| {
         input::uniform_values_with(input::field(doc, name)?, name, |x, p| {
@@ -125,7 +125,7 @@ fn hermite_in<T: Field>(data: &HermiteInput, ctx: &T::Ctx) -> Result<Out<T>, Inp
 }
 
 /// `run hermite`: two-point Hermite data → Bernstein control points.
-pub fn run_hermite(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, RunError> {
+pub fn run_hermite(doc: &Map, scalar: ScalarKind) -> Result<Rendered, RunError> {
     let data = read_hermite(doc)?;
     // The binomial transforms cost about (m+1)^3 operations per coordinate (measured: 0.03 s
     // at mpfr:256 for m = 200). In rationals the numbers grow with m and with the bits of the
@@ -163,7 +163,7 @@ pub fn run_hermite(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rende
 }
 
 /// `run hermite-condition`: κ₂ of the transform or of its binomial part.
-pub fn run_condition(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, RunError> {
+pub fn run_condition(doc: &Map, scalar: ScalarKind) -> Result<Rendered, RunError> {
     input::only_fields(doc, &["derivatives", "interval", "matrix"])?;
     let m = input::count(
         input::field(doc, "derivatives")?,
@@ -284,7 +284,7 @@ impl ProvenJob for ConditionJob {
         let lo = Float::with_val_round(bits, &lo, Round::Down).0;
         let hi = Float::with_val_round(bits, &hi, Round::Up).0;
         Ok(Out::object(vec![
-            ("condition_number", Out::Bounds(lo, hi)),
+            ("condition_number", Out::Bounds(Box::new((lo, hi)))),
             ("f64", self.reference.map_or(Out::Null, Out::F64)),
             ("f64_note", Out::Text(self.f64_note.into())),
             ("size", Out::Int(2 * self.m as i64 + 2)),

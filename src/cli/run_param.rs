@@ -3,6 +3,7 @@
 use super::budget::{self, check_output, Rates};
 use super::dispatch::{run_field, run_real, run_real_or_exact, FieldJob, RealJob};
 use super::input::{self, fail, InputError, RunError, ValuePath};
+use super::json::{Map, Value};
 use super::output::Out;
 use super::Rendered;
 use crate::algo::param::descent::{descend, refine, Descent};
@@ -12,9 +13,9 @@ use crate::algo::param::one_d::{
     chord_length_1d, classify, parametrization_exact, Case, ParamError, Shape,
 };
 use crate::algo::param::proven::prove_minimum;
-use crate::scalar::ball::Ball;
+use crate::scalar::ball::{carried, Ball};
 use crate::scalar::{Exact, Field, Float, Real, ScalarKind};
-use serde_json::{Map, Value};
+use rayon::prelude::*;
 
 /// The most points accepted by `marin` (a dense Newton step on N unknowns).
 pub const MAX_POINTS: usize = 500;
@@ -32,7 +33,7 @@ fn param_error(e: ParamError, field: &str) -> InputError {
 }
 
 /// `run marin-1d`: the exact minimizing parametrization of scalar ordinates.
-pub fn run_marin_1d(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, RunError> {
+pub fn run_marin_1d(doc: &Map, scalar: ScalarKind) -> Result<Rendered, RunError> {
     input::only_fields(doc, &["z"])?;
     let z = numbers(input::field(doc, "z")?, "z")?;
     let case = classify(&z).map_err(|e| param_error(e, "z"))?;
@@ -110,10 +111,7 @@ impl RealJob for MarinOneDJob {
 }
 
 /// `run natural-spline`: values and first and second derivatives at requested parameters.
-pub fn run_natural_spline(
-    doc: &Map<String, Value>,
-    scalar: ScalarKind,
-) -> Result<Rendered, RunError> {
+pub fn run_natural_spline(doc: &Map, scalar: ScalarKind) -> Result<Rendered, RunError> {
     input::only_fields(doc, &["t", "z", "at"])?;
     let t = numbers(input::field(doc, "t")?, "t")?;
     let (z, is_point) = input::uniform_values_with(input::field(doc, "z")?, "z", |x, p| {
@@ -195,7 +193,7 @@ pub fn run_natural_spline(
 /// stay JSON values until the run's number type reads them ([`input::number_in`]).
 struct NaturalSplineJob<'a> {
     t: Vec<Exact>,
-    z: Vec<Vec<&'a Value>>,
+    z: Vec<Vec<&'a Value<'a>>>,
     at: Vec<Exact>,
     is_point: bool,
 }
@@ -205,6 +203,10 @@ impl FieldJob for NaturalSplineJob<'_> {
         Ok(eval(&self.t, &self.z, &self.at, self.is_point, ctx)?)
     }
 }
+
+/// Below this many spline evaluations a run does not start rayon's threads (their start
+/// costs about as much as 64 rational evaluations, or thousands in f64).
+const PARALLEL_EVALUATIONS: usize = 64;
 
 /// Values, first and second derivatives of the natural spline of each coordinate at `at`.
 fn eval<T: Field>(
@@ -241,21 +243,25 @@ fn eval<T: Field>(
                 .map_err(|e| InputError(format!("field \"t\": {e}")))
         })
         .collect::<Result<Vec<_>, _>>()?;
-    // Value, slope and curvature of every coordinate at each point, each point evaluated once.
-    let rows: Vec<Vec<[T; 3]>> = at
-        .iter()
-        .map(|q| {
-            // The piece is located on the exact point: the first i ≥ 1 with q ≤ tᵢ.
-            let piece = crate::algo::param::natural::piece_index(t, q);
-            // The distances to the piece's ends, exact, then rounded once.
-            let u = conv(&(t[piece].clone() - q));
-            let v = conv(&(q.clone() - &t[piece - 1]));
-            splines
-                .iter()
-                .map(|s| s.eval_offsets(&u, &v, piece))
-                .collect()
-        })
-        .collect();
+    // Value, slope and curvature of every coordinate at each point, each point evaluated once
+    // and on its own (the points on two threads: in rationals each output costs a gcd of
+    // numbers of thousands of bits).
+    let row = |q: &Exact| -> Vec<[T; 3]> {
+        // The piece is located on the exact point: the first i ≥ 1 with q ≤ tᵢ.
+        let piece = crate::algo::param::natural::piece_index(t, q);
+        // The distances to the piece's ends, exact, then rounded once.
+        let u = conv(&(t[piece].clone() - q));
+        let v = conv(&(q.clone() - &t[piece - 1]));
+        splines
+            .iter()
+            .map(|s| s.eval_offsets(&u, &v, piece))
+            .collect()
+    };
+    let rows: Vec<Vec<[T; 3]>> = if at.len() * splines.len() >= PARALLEL_EVALUATIONS {
+        at.par_iter().map(carried(row)).collect()
+    } else {
+        at.iter().map(row).collect()
+    };
     let column = |j: usize| -> Out<T> {
         Out::List(
             rows.iter()
@@ -297,7 +303,7 @@ impl MarinInput {
     }
 }
 
-fn read_marin(doc: &Map<String, Value>) -> Result<MarinInput, InputError> {
+fn read_marin(doc: &Map) -> Result<MarinInput, InputError> {
     input::only_fields(doc, &["points", "weights", "objective"])?;
     let (points, _) = input::uniform_values(input::field(doc, "points")?, "points")?;
     if points.len() < 2 {
@@ -343,7 +349,7 @@ fn read_marin(doc: &Map<String, Value>) -> Result<MarinInput, InputError> {
 
 /// `run marin`: the minimizing parametrization of K-dimensional points (gradient projection
 /// from chord length, then Newton's method in the chosen number type).
-pub fn run_marin(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, RunError> {
+pub fn run_marin(doc: &Map, scalar: ScalarKind) -> Result<Rendered, RunError> {
     let data = read_marin(doc)?;
     // Gradient projection in f64 then Newton on N unknowns: about N^2.3 operations, in
     // proportion to the number of components. Measured with three components, N = 300:

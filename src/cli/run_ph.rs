@@ -3,6 +3,7 @@
 use super::budget::{self, Rates};
 use super::dispatch::{run_proven_job, run_real, ProvenJob, RealJob};
 use super::input::{self, fail, InputError, RunError};
+use super::json::{Map, Value};
 use super::output::{flush, largest, noise_level, Out};
 use super::Rendered;
 use crate::algo::ph::hermite::{interpolate, FreeParameters, HermiteData, PhHermiteError};
@@ -15,7 +16,6 @@ use crate::curve::{Curve, ExprCurve};
 use crate::scalar::ball::Ball;
 use crate::scalar::certify::format_float_digits;
 use crate::scalar::{Exact, Field, Float, Real, ScalarKind};
-use serde_json::{Map, Value};
 use std::cell::Cell;
 
 /// The most segments `run phodcos` accepts (directly or as the tolerance search's limit).
@@ -31,7 +31,7 @@ const FREE_FIELDS: [&str; 9] = [
 ];
 
 /// The optional `free` object: θ0, τ1, τ2, τ3, θ4, τ5, τ6, τ7, θ8 (missing ones are 0).
-fn free_parameters(doc: &Map<String, Value>) -> Result<FreeParameters<Exact>, InputError> {
+fn free_parameters(doc: &Map) -> Result<FreeParameters<Exact>, InputError> {
     let mut f = FreeParameters::zero(4, &());
     let Some(v) = doc.get("free") else {
         return Ok(f);
@@ -105,7 +105,7 @@ fn curve_out<T: Real>(c: &PhCurve<T>) -> Vec<(&'static str, Out<T>)> {
 }
 
 /// `run ph-hermite`: C⁴ Hermite data → the degree-17 PH interpolant (Algorithm 1).
-pub fn run_ph_hermite(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, RunError> {
+pub fn run_ph_hermite(doc: &Map, scalar: ScalarKind) -> Result<Rendered, RunError> {
     let mut known = DATA_FIELDS.to_vec();
     known.push("free");
     input::only_fields(doc, &known)?;
@@ -152,7 +152,7 @@ struct CurveInput {
     text_len: usize,
 }
 
-fn read_curve(doc: &Map<String, Value>) -> Result<(CurveInput, Exact, Exact), InputError> {
+fn read_curve(doc: &Map) -> Result<(CurveInput, Exact, Exact), InputError> {
     let text = match input::field(doc, "curve")? {
         Value::String(s) => s,
         other => {
@@ -162,7 +162,8 @@ fn read_curve(doc: &Map<String, Value>) -> Result<(CurveInput, Exact, Exact), In
             ))
         }
     };
-    let curve = ExprCurve::parse(text).map_err(|e| InputError(format!("field \"curve\": {e}")))?;
+    let curve =
+        ExprCurve::parse(text.as_ref()).map_err(|e| InputError(format!("field \"curve\": {e}")))?;
     let (a, b) = input::interval(input::field(doc, "interval")?, "interval")?;
     // Proven before any conversion: finite derivatives up to the 4th and a tangent that
     // never vanishes on [a, b] (a cusp is named at its t, not as the empty tangent of a
@@ -364,7 +365,7 @@ impl PhodcosJob {
 }
 
 /// `run phodcos`: a curve on uniform segments (or the fewest meeting a tolerance).
-pub fn run_phodcos(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, RunError> {
+pub fn run_phodcos(doc: &Map, scalar: ScalarKind) -> Result<Rendered, RunError> {
     input::only_fields(
         doc,
         &["curve", "interval", "segments", "tolerance", "max_segments"],
@@ -525,7 +526,7 @@ impl ProvenJob for ConvergenceJob {
 }
 
 /// `run convergence`: the error on 2ⁿ segments for each level, with ratios and orders.
-pub fn run_convergence(doc: &Map<String, Value>, scalar: ScalarKind) -> Result<Rendered, RunError> {
+pub fn run_convergence(doc: &Map, scalar: ScalarKind) -> Result<Rendered, RunError> {
     input::only_fields(doc, &["curve", "interval", "levels", "free"])?;
     let (curve, a, b) = read_curve(doc)?;
     let levels: Vec<u32> = input::array(input::field(doc, "levels")?, "levels")?

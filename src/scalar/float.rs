@@ -42,6 +42,9 @@ impl Field for f64 {
     /// long), zeros (a rational has no −0) and overflows (which it reports); a finite non-zero
     /// double from at most 40 characters has an exponent well inside the exact reader's range.
     fn from_json_number(text: &str, _: &()) -> Option<Self> {
+        if let Some(x) = short_decimal(text) {
+            return Some(x);
+        }
         if text.len() > 40 || !is_json_number(text) {
             return None;
         }
@@ -73,6 +76,90 @@ impl Field for f64 {
     fn write_plain_string(&self, out: &mut String) {
         write_f64(*self, out);
     }
+}
+
+/// Powers of ten that are exact doubles: 10⁰ … 10²².
+const EXACT_POWERS_OF_TEN: [f64; 23] = [
+    1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16,
+    1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
+];
+
+/// The double nearest to a JSON number of at most 19 digits whose digits w, read as an
+/// integer, are at most 2⁵³ and whose value is w·10^e with |e| ≤ 22: then w and 10^|e| are
+/// both exact doubles, so one multiplication or division rounds the exact value once,
+/// correctly (Clinger's fast path, the one core's parser also takes first, without its
+/// general machinery). `None` for every other text, zeros included (and for any text
+/// outside the JSON grammar), which [`Field::from_json_number`] then reads the long way.
+fn short_decimal(text: &str) -> Option<f64> {
+    let bytes = text.as_bytes();
+    let (negative, mut at) = match bytes.first() {
+        Some(b'-') => (true, 1),
+        _ => (false, 0),
+    };
+    let mut w: u64 = 0;
+    let mut digits = 0u32;
+    let whole_start = at;
+    while let Some(&b) = bytes.get(at).filter(|b| b.is_ascii_digit()) {
+        w = w.wrapping_mul(10).wrapping_add(u64::from(b - b'0'));
+        digits += 1;
+        at += 1;
+    }
+    let whole = at - whole_start;
+    if whole == 0 || (whole > 1 && bytes[whole_start] == b'0') {
+        return None;
+    }
+    let mut exponent: i32 = 0;
+    if bytes.get(at) == Some(&b'.') {
+        at += 1;
+        let fraction_start = at;
+        while let Some(&b) = bytes.get(at).filter(|b| b.is_ascii_digit()) {
+            w = w.wrapping_mul(10).wrapping_add(u64::from(b - b'0'));
+            digits += 1;
+            at += 1;
+        }
+        if at == fraction_start {
+            return None;
+        }
+        exponent -= (at - fraction_start) as i32;
+    }
+    if matches!(bytes.get(at), Some(b'e' | b'E')) {
+        at += 1;
+        let sign = match bytes.get(at) {
+            Some(b'-') => {
+                at += 1;
+                -1
+            }
+            Some(b'+') => {
+                at += 1;
+                1
+            }
+            _ => 1,
+        };
+        let start = at;
+        let mut written: i32 = 0;
+        while let Some(&b) = bytes.get(at).filter(|b| b.is_ascii_digit()) {
+            if at - start >= 4 {
+                return None; // |exponent| ≥ 10⁴: far outside the fast path
+            }
+            written = written * 10 + i32::from(b - b'0');
+            at += 1;
+        }
+        if at == start {
+            return None;
+        }
+        exponent += sign * written;
+    }
+    // 19 digits cannot overflow u64 (10¹⁹ − 1 < 2⁶⁴); w = 0 is a zero, read the long way.
+    if at != bytes.len() || digits > 19 || w == 0 || w > 1 << 53 {
+        return None;
+    }
+    let power = *EXACT_POWERS_OF_TEN.get(exponent.unsigned_abs() as usize)?;
+    let magnitude = if exponent >= 0 {
+        w as f64 * power
+    } else {
+        w as f64 / power
+    };
+    Some(if negative { -magnitude } else { magnitude })
 }
 
 /// Whether `text` is a number of the JSON grammar: `-?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?`.
@@ -443,8 +530,25 @@ mod tests {
             f64::from_json_number("2.4703282292062328e-324", &()),
             Some(5e-324)
         );
+        // The fast path's edges: 2⁵³ and 10²² are exact, one past them is read the long way.
+        for text in [
+            "9007199254740992",
+            "9007199254740993e0",
+            "1e22",
+            "1e23",
+            "1e-22",
+            "1e-23",
+            "4.5e-1",
+            "0.000000000000000000001",
+            "12345678901234567890",
+            "1.2e+03",
+            "0.50",
+        ] {
+            assert!(agrees_with_exact_path(text), "{text}");
+        }
         for declined in [
-            "1e400", "1e-400", "0", "-0", "+1", ".5", "5.", "01", "inf", "1/3", "0x10",
+            "1e400", "1e-400", "0", "-0", "+1", ".5", "5.", "01", "inf", "1/3", "0x10", "1e",
+            "1e+", "-", "1.5x", "00.5", "0.0e5",
         ] {
             assert_eq!(f64::from_json_number(declined, &()), None, "{declined}");
         }
@@ -466,6 +570,29 @@ mod tests {
                 text += &format!("e{e}");
             }
             prop_assert!(agrees_with_exact_path(&text), "{}", text);
+        }
+
+        /// Short decimals with small exponents, where the fast path (`short_decimal`)
+        /// answers: bit for bit the exact path's double, and core's.
+        #[test]
+        fn short_decimals_read_as_the_exact_path_rounds_them(
+            negative in any::<bool>(),
+            whole in "0|[1-9][0-9]{0,9}",
+            fraction in proptest::option::of("[0-9]{1,9}"),
+            exponent in proptest::option::of(-30i32..30),
+            capital in any::<bool>(),
+        ) {
+            let mut text = format!("{}{whole}", if negative { "-" } else { "" });
+            if let Some(f) = fraction {
+                text += &format!(".{f}");
+            }
+            if let Some(e) = exponent {
+                text += &format!("{}{e:+}", if capital { "E" } else { "e" });
+            }
+            prop_assert!(agrees_with_exact_path(&text), "{}", text);
+            if let Some(x) = f64::from_json_number(&text, &()) {
+                prop_assert_eq!(x.to_bits(), text.parse::<f64>().unwrap().to_bits(), "{}", text);
+            }
         }
     }
 

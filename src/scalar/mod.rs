@@ -224,6 +224,12 @@ pub trait Field:
     fn write_plain_string(&self, out: &mut String) {
         out.push_str(&self.to_plain_string());
     }
+    /// About the length of [`Field::to_plain_string`], without writing it: for reserving an
+    /// output's text and deciding whether to print it on two threads (exact fractions run to
+    /// thousands of digits; a double to at most 24 characters).
+    fn plain_string_len_hint(&self) -> usize {
+        24
+    }
 }
 
 /// `acc ← c + acc·x` through a copy of `c` and [`Field::mul_add_assign`]: the default

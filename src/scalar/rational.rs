@@ -91,6 +91,11 @@ impl Field for rug::Rational {
     fn to_plain_string(&self) -> String {
         self.to_string()
     }
+    fn plain_string_len_hint(&self) -> usize {
+        // log10(2) ≈ 0.30103 decimal digits per bit, for numerator and denominator.
+        let bits = self.numer().significant_bits() + self.denom().significant_bits();
+        (bits as usize * 30103).div_ceil(100_000) + 2
+    }
     // The product straight into its own value, not into a copy of `a` (the default clones
     // `a`, then multiplies): one allocation and one big-number copy fewer per step, and no
     // addition at all onto a zero (the first term of every convolution).
