@@ -104,7 +104,14 @@ impl<T> Out<T> {
         T: Field,
     {
         match self {
-            Out::List(items) => 2 + items.iter().map(|v| 1 + v.text_size_hint()).sum::<usize>(),
+            // A list of numbers is taken as its first number's length times its length: an
+            // estimate costs nothing next to the printing of 10⁵ numbers it is made for.
+            Out::List(items) => match items.first() {
+                Some(first @ (Out::Num(_) | Out::MaybeZero(..))) => {
+                    2 + items.len() * (1 + first.text_size_hint())
+                }
+                _ => 2 + items.iter().map(|v| 1 + v.text_size_hint()).sum::<usize>(),
+            },
             Out::Object(fields) => {
                 2 + fields
                     .iter()
