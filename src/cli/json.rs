@@ -389,6 +389,85 @@ mod tests {
         }
     }
 
+    /// The serde_json value of a tree (numbers by their text, which serde_json built with
+    /// `arbitrary_precision` keeps as written).
+    fn to_serde(value: &Value) -> serde_json::Value {
+        match value {
+            Value::Null => serde_json::Value::Null,
+            Value::Bool(b) => serde_json::Value::Bool(*b),
+            Value::Number(n) => serde_json::from_str(n.as_str()).unwrap(),
+            Value::String(s) => serde_json::Value::String(s.to_string()),
+            Value::Array(items) => serde_json::Value::Array(items.iter().map(to_serde).collect()),
+            Value::Object(map) => serde_json::Value::Object(
+                map.members
+                    .iter()
+                    .map(|(k, v)| (k.to_string(), to_serde(v)))
+                    .collect(),
+            ),
+        }
+    }
+
+    proptest::proptest! {
+        /// Texts spliced from JSON's tokens and near misses: accepted exactly when serde_json
+        /// accepts them, and then (without a repeated key) read as the same tree.
+        #[test]
+        fn random_texts_parse_as_serde_json_parses_them(
+            tokens in proptest::collection::vec(proptest::sample::select(vec![
+                "{", "}", "[", "]", ",", ":", " ", "\n", "\"k\"", "\"a\\\"b\"", "\"\\u00e9\"",
+                "\"\\ud800\"", "\"\\q\"", "0", "1", "-", ".", "5", "e", "E", "+", "01", "1.5e-3",
+                "true", "false", "null", "tru", "\"", "\\", "\u{1}", "x",
+            ]), 0..24),
+        ) {
+            let text: String = tokens.concat();
+            let ours = parse(&text);
+            let theirs = serde_json::from_str::<serde_json::Value>(&text);
+            proptest::prop_assert_eq!(ours.is_ok(), theirs.is_ok(), "{:?}", text);
+            if let (Ok(ours), Ok(theirs)) = (ours, theirs) {
+                if ours.repeated_key.is_none() {
+                    proptest::prop_assert_eq!(to_serde(&ours.value), theirs, "{:?}", text);
+                }
+            }
+        }
+    }
+
+    /// Random JSON values: numbers of the whole grammar, strings of any characters (escaped
+    /// when printed), nested arrays and objects.
+    fn any_json() -> impl proptest::strategy::Strategy<Value = serde_json::Value> {
+        use proptest::prelude::*;
+        let leaf = prop_oneof![
+            Just(serde_json::Value::Null),
+            any::<bool>().prop_map(serde_json::Value::Bool),
+            "-?(0|[1-9][0-9]{0,25})(\\.[0-9]{1,12})?([eE][+-]?[0-9]{1,4})?"
+                .prop_map(|t| serde_json::from_str(&t).unwrap()),
+            any::<String>().prop_map(serde_json::Value::String),
+        ];
+        leaf.prop_recursive(4, 48, 6, |inner| {
+            prop_oneof![
+                proptest::collection::vec(inner.clone(), 0..6).prop_map(serde_json::Value::Array),
+                proptest::collection::vec((any::<String>(), inner), 0..6)
+                    .prop_map(|members| serde_json::Value::Object(members.into_iter().collect())),
+            ]
+        })
+    }
+
+    proptest::proptest! {
+        /// Every JSON text serde_json prints, compact or pretty, is read back as its tree.
+        #[test]
+        fn printed_json_reads_back(value in any_json(), pretty in proptest::prelude::any::<bool>()) {
+            let text = if pretty {
+                serde_json::to_string_pretty(&value).unwrap()
+            } else {
+                serde_json::to_string(&value).unwrap()
+            };
+            let parsed = parse(&text);
+            proptest::prop_assert!(parsed.is_ok(), "{:?}", text);
+            if let Ok(parsed) = parsed {
+                proptest::prop_assert!(parsed.repeated_key.is_none());
+                proptest::prop_assert_eq!(to_serde(&parsed.value), value);
+            }
+        }
+    }
+
     #[test]
     fn numbers_keep_their_text_and_strings_borrow() {
         let parsed = parse("{\"x\": [0.1, -2e-3], \"s\": \"plain\", \"e\": \"a\\tb\"}").unwrap();
