@@ -1,8 +1,8 @@
 //! Reading the JSON input of `run`: every error names the field it is about.
 //!
 //! Numbers may be JSON numbers or strings; both are read exactly as GMP rationals
-//! ([`Exact`]; serde_json is built with `arbitrary_precision`, so a JSON number keeps its
-//! decimal text and `0.1` means 1/10, not the double nearest to it). Each number type then
+//! ([`Exact`]; the input's tree, [`json`](super::json), keeps a JSON number's decimal text, so
+//! `0.1` means 1/10, not the double nearest to it). Each number type then
 //! rounds once from the exact value ([`Field::from_exact`](crate::scalar::Field::from_exact)).
 
 use super::json::{Map, Value};

@@ -291,8 +291,6 @@ fn write_plain_node<T: Field>(out: &Out<T>, text: &mut String, splits: u32) -> O
     Some(())
 }
 
-/// Whether serde_json escapes a character of `s` (a quote, a backslash or a control
-/// character): only then is a string written through serde_json.
 /// Lists whose text is estimated at least this long are written in two halves on two
 /// threads: printing is most of an f64 `run` on large data (ryu's digits of 48 000 doubles,
 /// about 2.5 ms), and a GMP rational's decimal digits are costlier still; a thread costs
@@ -343,6 +341,8 @@ fn write_halves<T: Field>(
     Some(())
 }
 
+/// Whether serde_json escapes a character of `s` (a quote, a backslash or a control
+/// character): only then is a string written through serde_json.
 fn needs_escape(s: &str) -> bool {
     // A fold without an early exit, which the compiler vectorizes: every number of an
     // output passes through here, and none needs an escape.

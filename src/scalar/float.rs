@@ -42,10 +42,11 @@ impl Field for f64 {
     /// long), zeros (a rational has no −0) and overflows (which it reports); a finite non-zero
     /// double from at most 40 characters has an exponent well inside the exact reader's range.
     fn from_json_number(text: &str, _: &()) -> Option<Self> {
-        if let Some(x) = short_decimal(text) {
+        let decimal = JsonDecimal::parse(text)?;
+        if let Some(x) = decimal.clinger() {
             return Some(x);
         }
-        if text.len() > 40 || !is_json_number(text) {
+        if text.len() > 40 {
             return None;
         }
         text.parse::<f64>()
@@ -84,115 +85,104 @@ const EXACT_POWERS_OF_TEN: [f64; 23] = [
     1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
 ];
 
-/// The double nearest to a JSON number of at most 19 digits whose digits w, read as an
-/// integer, are at most 2⁵³ and whose value is w·10^e with |e| ≤ 22: then w and 10^|e| are
-/// both exact doubles, so one multiplication or division rounds the exact value once,
-/// correctly (Clinger's fast path, the one core's parser also takes first, without its
-/// general machinery). `None` for every other text, zeros included (and for any text
-/// outside the JSON grammar), which [`Field::from_json_number`] then reads the long way.
-fn short_decimal(text: &str) -> Option<f64> {
-    let bytes = text.as_bytes();
-    let (negative, mut at) = match bytes.first() {
-        Some(b'-') => (true, 1),
-        _ => (false, 0),
-    };
-    let mut w: u64 = 0;
-    let mut digits = 0u32;
-    let whole_start = at;
-    while let Some(&b) = bytes.get(at).filter(|b| b.is_ascii_digit()) {
-        w = w.wrapping_mul(10).wrapping_add(u64::from(b - b'0'));
-        digits += 1;
-        at += 1;
-    }
-    let whole = at - whole_start;
-    if whole == 0 || (whole > 1 && bytes[whole_start] == b'0') {
-        return None;
-    }
-    let mut exponent: i32 = 0;
-    if bytes.get(at) == Some(&b'.') {
-        at += 1;
-        let fraction_start = at;
-        while let Some(&b) = bytes.get(at).filter(|b| b.is_ascii_digit()) {
-            w = w.wrapping_mul(10).wrapping_add(u64::from(b - b'0'));
-            digits += 1;
-            at += 1;
-        }
-        if at == fraction_start {
-            return None;
-        }
-        exponent -= (at - fraction_start) as i32;
-    }
-    if matches!(bytes.get(at), Some(b'e' | b'E')) {
-        at += 1;
-        let sign = match bytes.get(at) {
-            Some(b'-') => {
-                at += 1;
-                -1
-            }
-            Some(b'+') => {
-                at += 1;
-                1
-            }
-            _ => 1,
-        };
-        let start = at;
-        let mut written: i32 = 0;
-        while let Some(&b) = bytes.get(at).filter(|b| b.is_ascii_digit()) {
-            if at - start >= 4 {
-                return None; // |exponent| ≥ 10⁴: far outside the fast path
-            }
-            written = written * 10 + i32::from(b - b'0');
-            at += 1;
-        }
-        if at == start {
-            return None;
-        }
-        exponent += sign * written;
-    }
-    // 19 digits cannot overflow u64 (10¹⁹ − 1 < 2⁶⁴); w = 0 is a zero, read the long way.
-    if at != bytes.len() || digits > 19 || w == 0 || w > 1 << 53 {
-        return None;
-    }
-    let power = *EXACT_POWERS_OF_TEN.get(exponent.unsigned_abs() as usize)?;
-    let magnitude = if exponent >= 0 {
-        w as f64 * power
-    } else {
-        w as f64 / power
-    };
-    Some(if negative { -magnitude } else { magnitude })
+/// A number of the JSON grammar `-?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?`, taken apart:
+/// its value is ±w·10^exponent, w the integer of all its digits.
+struct JsonDecimal {
+    negative: bool,
+    /// w modulo 2⁶⁴ (exact while `digit_count` ≤ 19, as 10¹⁹ − 1 < 2⁶⁴).
+    digits: u64,
+    /// The number of digits of w, leading zeros included.
+    digit_count: usize,
+    /// The written exponent less the fraction's digits (saturating).
+    exponent: i64,
 }
 
-/// Whether `text` is a number of the JSON grammar: `-?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?`.
-fn is_json_number(text: &str) -> bool {
-    let digits = |s: &[u8]| s.iter().take_while(|b| b.is_ascii_digit()).count();
-    let mut rest = text.as_bytes();
-    if let [b'-', tail @ ..] = rest {
-        rest = tail;
-    }
-    let whole = digits(rest);
-    if whole == 0 || (whole > 1 && rest[0] == b'0') {
-        return false;
-    }
-    rest = &rest[whole..];
-    if let [b'.', tail @ ..] = rest {
-        let fraction = digits(tail);
-        if fraction == 0 {
-            return false;
+impl JsonDecimal {
+    /// `text` taken apart in one pass, or `None` if it is not a number of the JSON grammar.
+    fn parse(text: &str) -> Option<Self> {
+        let bytes = text.as_bytes();
+        let mut at = 0;
+        let negative = bytes.first() == Some(&b'-');
+        if negative {
+            at += 1;
         }
-        rest = &tail[fraction..];
-    }
-    if let [b'e' | b'E', tail @ ..] = rest {
-        let tail = match tail {
-            [b'+' | b'-', signed @ ..] => signed,
-            _ => tail,
+        let mut digits: u64 = 0;
+        let mut digit_count = 0;
+        // The run of digits from `at`, appended to w; how many.
+        let mut take_digits = |at: &mut usize, append: bool| {
+            let start = *at;
+            while let Some(&b) = bytes.get(*at).filter(|b| b.is_ascii_digit()) {
+                if append {
+                    digits = digits.wrapping_mul(10).wrapping_add(u64::from(b - b'0'));
+                    digit_count += 1;
+                }
+                *at += 1;
+            }
+            *at - start
         };
-        let exponent = digits(tail);
-        if exponent == 0 {
-            return false;
+        let whole_start = at;
+        let whole = take_digits(&mut at, true);
+        if whole == 0 || (whole > 1 && bytes[whole_start] == b'0') {
+            return None;
         }
-        rest = &tail[exponent..];
+        let mut exponent: i64 = 0;
+        if bytes.get(at) == Some(&b'.') {
+            at += 1;
+            let fraction = take_digits(&mut at, true);
+            if fraction == 0 {
+                return None;
+            }
+            exponent = -(fraction as i64);
+        }
+        if matches!(bytes.get(at), Some(b'e' | b'E')) {
+            at += 1;
+            let sign = match bytes.get(at) {
+                Some(b'-') => {
+                    at += 1;
+                    -1
+                }
+                Some(b'+') => {
+                    at += 1;
+                    1
+                }
+                _ => 1,
+            };
+            let start = at;
+            if take_digits(&mut at, false) == 0 {
+                return None;
+            }
+            let written = text[start..at].bytes().fold(0i64, |e, b| {
+                e.saturating_mul(10).saturating_add(i64::from(b - b'0'))
+            });
+            exponent = exponent.saturating_add(sign * written);
+        }
+        (at == bytes.len()).then_some(JsonDecimal {
+            negative,
+            digits,
+            digit_count,
+            exponent,
+        })
     }
-    rest.is_empty()
+
+    /// The double nearest to the number when its digits w, read as an integer, are at most
+    /// 2⁵³ and |exponent| ≤ 22: then w and 10^|exponent| are both exact doubles, so one
+    /// multiplication or division rounds the exact value once, correctly (Clinger's fast path,
+    /// the one core's parser also takes first, without its general machinery). `None`
+    /// otherwise, zeros included (a rational has no −0; they are read the long way).
+    fn clinger(&self) -> Option<f64> {
+        if self.digit_count > 19 || self.digits == 0 || self.digits > 1 << 53 {
+            return None;
+        }
+        let power =
+            *EXACT_POWERS_OF_TEN.get(usize::try_from(self.exponent.unsigned_abs()).ok()?)?;
+        let w = self.digits as f64;
+        let magnitude = if self.exponent >= 0 {
+            w * power
+        } else {
+            w / power
+        };
+        Some(if self.negative { -magnitude } else { magnitude })
+    }
 }
 
 /// The shortest decimal that reads back as the same double ("0.6", "1e-7", "1.5e300").
@@ -554,6 +544,18 @@ mod tests {
         }
     }
 
+    /// "-" if negative, the whole digits, "." and the fraction's if any, then the exponent.
+    fn decimal_text(
+        negative: bool,
+        whole: &str,
+        fraction: Option<String>,
+        exponent: Option<String>,
+    ) -> String {
+        let sign = if negative { "-" } else { "" };
+        let fraction = fraction.map_or(String::new(), |f| format!(".{f}"));
+        format!("{sign}{whole}{fraction}{}", exponent.unwrap_or_default())
+    }
+
     proptest! {
         #[test]
         fn random_decimals_read_as_the_exact_path_rounds_them(
@@ -562,17 +564,11 @@ mod tests {
             fraction in proptest::option::of("[0-9]{1,18}"),
             exponent in proptest::option::of(-340i32..320),
         ) {
-            let mut text = format!("{}{whole}", if negative { "-" } else { "" });
-            if let Some(f) = fraction {
-                text += &format!(".{f}");
-            }
-            if let Some(e) = exponent {
-                text += &format!("e{e}");
-            }
+            let text = decimal_text(negative, &whole, fraction, exponent.map(|e| format!("e{e}")));
             prop_assert!(agrees_with_exact_path(&text), "{}", text);
         }
 
-        /// Short decimals with small exponents, where the fast path (`short_decimal`)
+        /// Short decimals with small exponents, where the fast path (`JsonDecimal::clinger`)
         /// answers: bit for bit the exact path's double, and core's.
         #[test]
         fn short_decimals_read_as_the_exact_path_rounds_them(
@@ -582,13 +578,9 @@ mod tests {
             exponent in proptest::option::of(-30i32..30),
             capital in any::<bool>(),
         ) {
-            let mut text = format!("{}{whole}", if negative { "-" } else { "" });
-            if let Some(f) = fraction {
-                text += &format!(".{f}");
-            }
-            if let Some(e) = exponent {
-                text += &format!("{}{e:+}", if capital { "E" } else { "e" });
-            }
+            let marker = if capital { "E" } else { "e" };
+            let text =
+                decimal_text(negative, &whole, fraction, exponent.map(|e| format!("{marker}{e:+}")));
             prop_assert!(agrees_with_exact_path(&text), "{}", text);
             if let Some(x) = f64::from_json_number(&text, &()) {
                 prop_assert_eq!(x.to_bits(), text.parse::<f64>().unwrap().to_bits(), "{}", text);
