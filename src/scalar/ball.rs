@@ -220,7 +220,7 @@ fn undecided() {
 }
 
 /// The next double above x (`f64::next_up`, which needs Rust 1.86, spelled out for 1.85).
-fn next_double(x: f64) -> f64 {
+pub(super) fn next_double(x: f64) -> f64 {
     if x.is_nan() || x == f64::INFINITY {
         x
     } else if x == 0.0 {

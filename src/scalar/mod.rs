@@ -9,6 +9,7 @@
 //! | [`BigRational`] | `()` | exact field arithmetic; no square roots, so it implements only [`Field`] |
 //! | [`rug::Rational`] (GMP) | `()` | the same exact values with GMP's integer arithmetic, 20–30× faster where fractions grow (`benches/param.rs`); only [`Field`] |
 //! | [`ball::Ball`] | precision in bits (`u32`) | a proven enclosure: MPFR midpoint, f64 radius rounded up |
+//! | [`double_interval::DoubleInterval`] | `()` | a proven enclosure with f64 ends: a cheap first try before balls (no `exp`, `ln`) |
 //!
 //! The context is never a hidden global: a new constant is made with the context of the
 //! operands it will meet (`T::from_i64(3, &x.ctx())`), so MPFR precision flows through the
@@ -21,6 +22,7 @@
 
 pub mod ball;
 pub mod certify;
+pub mod double_interval;
 pub mod dual;
 mod float;
 mod mpfr;

@@ -22,11 +22,12 @@
 //! that are zero to the cap are dropped); then the first word in the order above is taken,
 //! otherwise the leg is refused ([`DubinsError`]): its shortest path is not unique.
 
-use super::path::tangents;
+use super::path::unit_tangents;
 use super::GerbsError;
 use crate::curve::expr::ExactReal;
 use crate::curve::parametric::check_domain;
 use crate::scalar::ball::Ball;
+use crate::scalar::double_interval::DoubleInterval;
 use crate::scalar::{BigRational, Exact, Field, Real};
 use rug::Float;
 
@@ -160,23 +161,33 @@ impl ExactLeg {
 /// waypoints must pass [`super::path::check_waypoints`]).
 pub fn algorithm1_legs(waypoints: &[[Exact; 2]], radius: &Exact) -> Vec<ExactLeg> {
     let n = waypoints.len();
-    let chord = |i: usize| {
-        [
-            waypoints[i + 1][0].clone() - &waypoints[i][0],
-            waypoints[i + 1][1].clone() - &waypoints[i][1],
-        ]
-    };
+    // Each chord once, and each interior waypoint's wedge and dot once (both legs that meet
+    // there read them).
+    let chords: Vec<[Exact; 2]> = waypoints
+        .windows(2)
+        .map(|p| {
+            [
+                Exact::from(&p[1][0] - &p[0][0]),
+                Exact::from(&p[1][1] - &p[0][1]),
+            ]
+        })
+        .collect();
+    let turns: Vec<(Exact, Exact)> = chords
+        .windows(2)
+        .map(|uv| {
+            let [u, v] = [&uv[0], &uv[1]];
+            let wedge = Exact::from(&u[0] * &v[1]) - Exact::from(&u[1] * &v[0]);
+            let dot = Exact::from(&u[0] * &v[0]) + Exact::from(&u[1] * &v[1]);
+            (wedge, dot)
+        })
+        .collect();
     // The heading at waypoint i relative to the chord leaving (sign −1) or arriving (+1).
     let heading = |i: usize, sign: i32| {
         if i == 0 || i == n - 1 {
             return LegHeading::AlongChord;
         }
-        let (u, v) = (chord(i - 1), chord(i));
-        LegHeading::HalfTurn {
-            sign,
-            wedge: u[0].clone() * &v[1] - &(u[1].clone() * &v[0]),
-            dot: u[0].clone() * &v[0] + &(u[1].clone() * &v[1]),
-        }
+        let (wedge, dot) = turns[i - 1].clone();
+        LegHeading::HalfTurn { sign, wedge, dot }
     };
     (0..n.saturating_sub(1))
         .map(|i| ExactLeg {
@@ -514,6 +525,14 @@ pub fn plan(leg: &ExactLeg, index: usize) -> Result<DubinsPlan, DubinsError> {
             reason: "the start and goal points coincide".into(),
         });
     }
+    if let Some(quick) = plan_in_intervals(leg) {
+        return Ok(quick);
+    }
+    plan_in_balls(leg, index)
+}
+
+/// The plan decided in balls at 128 bits, doubling up to [`PLAN_BITS_CAP`].
+fn plan_in_balls(leg: &ExactLeg, index: usize) -> Result<DubinsPlan, DubinsError> {
     let mut bits = 128;
     loop {
         match plan_at(leg, index, bits) {
@@ -522,6 +541,77 @@ pub fn plan(leg: &ExactLeg, index: usize) -> Result<DubinsPlan, DubinsError> {
             Err(_) => bits *= 2,
         }
     }
+}
+
+/// Choices decided in double intervals, strictly: the first choice an interval cannot
+/// decide ends the try ([`plan_in_intervals`]).
+struct Quick {
+    turns: Vec<i64>,
+    stuck: bool,
+}
+
+impl Choices<DoubleInterval> for Quick {
+    fn feasible(&mut self, x: &DoubleInterval) -> Option<bool> {
+        let decided = if x.lo() > 0.0 {
+            Some(true)
+        } else if x.hi() < 0.0 {
+            Some(false)
+        } else {
+            None
+        };
+        self.stuck |= decided.is_none();
+        decided
+    }
+    fn turns(&mut self, x: &DoubleInterval, two_pi: &DoubleInterval) -> Option<i64> {
+        let q = *x / two_pi;
+        let (low, high) = (q.lo().floor(), q.hi().floor());
+        if !q.is_finite() || low != high || low.abs() > 1e15 {
+            self.stuck = true;
+            return None;
+        }
+        self.turns.push(low as i64);
+        Some(low as i64)
+    }
+}
+
+/// The plan of `leg` when double intervals decide every choice of every word strictly and
+/// one word is shorter than all others with no segment that may be 0; `None` otherwise.
+///
+/// Such a plan is the plan of the ball ladder: every decision it records is proven (an
+/// interval encloses the exact value), the shortest word is unique, and no segment is an
+/// exact zero, so the tie and exact-zero rules of [`plan_at`], the only places where the
+/// precision could matter, are not reached. What it saves is MPFR's `atan2`, most of a plan's
+/// cost; the legs it cannot decide (a word at the edge of existing, an arc near 0 or 2π,
+/// near-ties, an exactly straight leg) go to the balls as before.
+fn plan_in_intervals(leg: &ExactLeg) -> Option<DubinsPlan> {
+    let (frame, _, _) = Frame::<DoubleInterval>::new(leg, &());
+    let mut candidates = Vec::with_capacity(WORDS.len());
+    for w in 0..WORDS.len() {
+        let mut quick = Quick {
+            turns: Vec::new(),
+            stuck: false,
+        };
+        let lengths = word_lengths(w, &frame, &mut quick);
+        if quick.stuck {
+            return None;
+        }
+        if let Some((lengths, _)) = lengths {
+            let total = lengths[0] + lengths[1] + lengths[2];
+            candidates.push((w, lengths, total, quick.turns));
+        }
+    }
+    let best = candidates
+        .iter()
+        .min_by(|a, b| a.2.hi().total_cmp(&b.2.hi()))?;
+    let unique = candidates
+        .iter()
+        .all(|c| c.0 == best.0 || c.2.lo() > best.2.hi());
+    let no_zero = best.1.iter().all(|l| l.lo() > 0.0 || l.hi() < 0.0);
+    (unique && no_zero && best.2.is_finite()).then(|| DubinsPlan {
+        word: best.0,
+        turns: best.3.clone(),
+        zero: [false; 3],
+    })
 }
 
 fn plan_at(leg: &ExactLeg, index: usize, bits: u32) -> Result<DubinsPlan, DubinsError> {
@@ -635,10 +725,13 @@ fn name(word: &[Step; 3]) -> String {
 /// The headings Algorithm 1 gives the waypoints: atan2 of its tangent directions m_i.
 ///
 /// # Errors
-/// [`GerbsError::Waypoints`] as [`tangents`] (fewer than 3, non-finite, repeated or collinear
-/// waypoints).
+/// [`GerbsError::Waypoints`] as [`unit_tangents`] (fewer than 3, non-finite, repeated or
+/// collinear waypoints). The turn signs, which the headings do not need, are not decided.
 pub fn algorithm1_headings<T: Real>(w: &[[T; 2]]) -> Result<Vec<T>, GerbsError> {
-    Ok(tangents(w)?.m.iter().map(|m| m[1].atan2(&m[0])).collect())
+    Ok(unit_tangents(w)?
+        .iter()
+        .map(|m| m[1].atan2(&m[0]))
+        .collect())
 }
 
 /// The values of `T` as exact rationals (every f64, MPFR and rational number is one).
@@ -875,6 +968,71 @@ mod tests {
                 path.word_name()
             );
         }
+    }
+
+    /// The interval plan, where it decides, is the ball ladder's plan, on Algorithm 1's legs
+    /// and on legs with absolute headings through random waypoints; and it decides most legs
+    /// (otherwise it would save nothing).
+    #[test]
+    fn interval_plans_are_the_ball_plans() {
+        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
+        let mut next = |modulus: u64| {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state % modulus) as i64
+        };
+        let waypoints: Vec<[Exact; 2]> = (0..400)
+            .map(|i| {
+                let x = Exact::from((i * 2000 + next(1500), 10));
+                [x, Exact::from((next(4001) - 2000, 10))]
+            })
+            .collect();
+        let radius = Exact::from((next(900) + 100, 10));
+        let headings: Vec<ExactReal> = (0..waypoints.len())
+            .map(|_| ExactReal::Exact(BigRational::new((next(2001) - 1000).into(), 150.into())))
+            .collect();
+        let mut legs = algorithm1_legs(&waypoints, &radius);
+        legs.extend(legs_with_headings(&waypoints, &headings, &radius));
+        let mut decided = 0;
+        for (i, leg) in legs.iter().enumerate() {
+            if let Some(quick) = plan_in_intervals(leg) {
+                decided += 1;
+                assert_eq!(Ok(quick), plan_in_balls(leg, i), "leg {i}: {leg:?}");
+            }
+        }
+        assert!(
+            decided * 10 >= legs.len() * 9,
+            "{decided} of {}",
+            legs.len()
+        );
+    }
+
+    /// Legs the intervals cannot decide go to the balls: an exactly straight leg (segments
+    /// exactly 0) and a leg whose two shortest words tie exactly.
+    #[test]
+    fn undecidable_legs_go_to_the_balls() {
+        let zero = || LegHeading::Absolute(ExactReal::Exact(BigRational::from_integer(0.into())));
+        let straight = ExactLeg {
+            from: [q(0), q(0)],
+            to: [q(100), q(0)],
+            radius: q(10),
+            start: zero(),
+            goal: zero(),
+        };
+        assert_eq!(plan_in_intervals(&straight), None);
+        assert_eq!(plan(&straight, 0).map(|p| p.zero), Ok([true, false, true]));
+        // A U-turn is symmetric about its chord: each word and its mirror image (left and
+        // right exchanged) are equally long, so no word is shorter than all others.
+        let pi = ExactReal::parse("pi").expect("pi");
+        let u_turn = ExactLeg {
+            from: [q(0), q(0)],
+            to: [q(1), q(0)],
+            radius: q(10),
+            start: zero(),
+            goal: LegHeading::Absolute(pi),
+        };
+        assert_eq!(plan_in_intervals(&u_turn), None);
     }
 
     #[test]

@@ -188,6 +188,24 @@ pub fn tangents_with_turns<T: Real>(w: &[[T; 2]], s: Vec<i32>) -> Result<Tangent
             ),
         });
     }
+    let m = bisector_tangents(w)?;
+    Ok(Tangents { m, s })
+}
+
+/// The unit tangents m_i of Algorithm 1 alone (no turn signs): the chord's direction at the
+/// ends, the bisector of the two chords' directions in between.
+///
+/// # Errors
+/// [`GerbsError::Waypoints`] as [`check_waypoints`], or when the directions between
+/// waypoints overflow.
+pub fn unit_tangents<T: Real>(w: &[[T; 2]]) -> Result<Vec<[T; 2]>, GerbsError> {
+    check_waypoints(w)?;
+    bisector_tangents(w)
+}
+
+/// [`unit_tangents`] on waypoints already checked.
+fn bisector_tangents<T: Real>(w: &[[T; 2]]) -> Result<Vec<[T; 2]>, GerbsError> {
+    let n = w.len();
     let mut m = vec![direction(&w[0], &w[1])];
     for i in 1..n - 1 {
         let (a, b) = (direction(&w[i - 1], &w[i]), direction(&w[i], &w[i + 1]));
@@ -199,7 +217,7 @@ pub fn tangents_with_turns<T: Real>(w: &[[T; 2]], s: Vec<i32>) -> Result<Tangent
             "the directions between waypoints are not finite (coordinates too large or too close to represent their differences)".into(),
         ));
     }
-    Ok(Tangents { m, s })
+    Ok(m)
 }
 
 /// How θ₁ and θ₂ of an arc are chosen.
