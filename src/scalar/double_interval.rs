@@ -11,7 +11,8 @@
 //! a result exact, so 0·x and x + 0 stay exact). Products and quotients take the extreme of
 //! the four end combinations. An end that overflows is ±∞, and an interval with an infinite
 //! or NaN end is the interval of every number ([`DoubleInterval::ENTIRE`]), which every
-//! operation propagates: such an interval decides nothing.
+//! operation propagates (except that an exact 0 times any number is 0, as for balls): such an
+//! interval decides nothing.
 //!
 //! **The transcendental functions** are evaluated by the library itself, never by libm (whose
 //! error is not documented as a bound):
@@ -325,7 +326,7 @@ by_value!(Mul, mul, mul_assign);
 by_value!(Div, div, div_assign);
 
 /// 2⁵³: integers up to it in magnitude are doubles exactly.
-const EXACT_INTEGERS: f64 = 9_007_199_254_740_992.0;
+const EXACT_INTEGERS: u64 = 1 << 53;
 
 impl Field for DoubleInterval {
     type Ctx = ();
@@ -336,11 +337,11 @@ impl Field for DoubleInterval {
         "interval:f64".into()
     }
     fn from_i64(v: i64, _: &()) -> Self {
-        let x = v as f64;
-        if x.abs() <= EXACT_INTEGERS {
-            Self::point(x)
+        // Decided on v itself: 2⁵³ + 1 converts to 2⁵³, which would pass a test on the double.
+        if v.unsigned_abs() <= EXACT_INTEGERS {
+            Self::point(v as f64)
         } else {
-            enclose(x)
+            enclose(v as f64)
         }
     }
     fn from_ratio(n: i64, d: i64, ctx: &()) -> Self {
@@ -353,7 +354,7 @@ impl Field for DoubleInterval {
         // GMP's conversion truncates: the exact value lies strictly between the doubles
         // either side of it, unless it is an integer a double holds exactly.
         let x = q.to_f64();
-        if *q.denom() == 1 && x.abs() <= EXACT_INTEGERS {
+        if *q.denom() == 1 && q.numer().significant_bits() <= 53 {
             Self::point(x)
         } else {
             enclose(x)
@@ -589,10 +590,24 @@ impl Real for DoubleInterval {
                 0.0
             }
         };
-        let (gx, gy) = (gap(x), gap(y));
-        let rho = step_down(step_down(step_down(gx * gx) + step_down(gy * gy)).sqrt());
+        // ρ_min² from below; a gap of 0 stays 0 (stepping 0 down would make it negative).
+        let square_down = |g: f64| {
+            if g == 0.0 {
+                0.0
+            } else {
+                step_down(g * g).max(0.0)
+            }
+        };
+        let (gx, gy) = (square_down(gap(x)), square_down(gap(y)));
+        let rho_squared = if gx == 0.0 || gy == 0.0 {
+            gx + gy
+        } else {
+            step_down(gx + gy).max(0.0)
+        };
+        let rho = step_down(rho_squared.sqrt()).max(0.0);
         let crosses_cut = x.lo < 0.0 && y.contains(0.0);
-        if rho <= 0.0 || crosses_cut {
+        // A box that may hold the origin (ρ_min = 0, or NaN from an overflow) has no angle.
+        if rho.is_nan() || rho <= 0.0 || crosses_cut {
             return whole;
         }
         let ((cx, rx), (cy, ry)) = (x.centre(), y.centre());
@@ -674,6 +689,19 @@ mod tests {
                 encloses(&product, &(wa.clone() * &wb)) && encloses(&product, &(wb.clone() * &wb))
             );
         }
+        // Integers beyond 2⁵³ are enclosed, not taken as the double they round to.
+        let beyond = (1i64 << 53) + 1;
+        let exact_beyond = Float::with_val(256, beyond);
+        assert!(encloses(
+            &DoubleInterval::from_i64(beyond, &()),
+            &exact_beyond
+        ));
+        let rational = rug::Rational::from(beyond);
+        assert!(encloses(
+            &DoubleInterval::from_exact(&rational, &()),
+            &exact_beyond
+        ));
+        assert!(DoubleInterval::from_i64(1 << 53, &()).is_point());
         let zero = DoubleInterval::point(0.0);
         assert!((zero * DoubleInterval::point(3.0)).is_zero());
         assert!((zero + zero).is_zero());
@@ -736,7 +764,14 @@ mod tests {
         for (cy, cx) in [(0.3, -2.0), (0.3000001, -1.9999), (0.3, -1.9999)] {
             assert!(encloses(&angle, &wide(cy).atan2(&wide(cx))));
         }
-        // Across the branch cut or around the origin: the whole range, not a guess.
+        // At or around the origin: the whole range (a point box at the origin once gave −π/2:
+        // its ρ_min was NaN, which no comparison with 0 caught).
+        let origin = DoubleInterval::point(0.0);
+        let at_origin = origin.atan2(&origin);
+        assert!(at_origin.lo <= -std::f64::consts::PI && at_origin.hi >= std::f64::consts::PI);
+        let around = DoubleInterval::new(-1.0, 1.0).atan2(&DoubleInterval::new(-1.0, 1.0));
+        assert!(around.lo <= -std::f64::consts::PI && around.hi >= std::f64::consts::PI);
+        // Across the branch cut: the whole range, not a guess.
         let across = DoubleInterval::new(-1e-9, 1e-9).atan2(&DoubleInterval::point(-1.0));
         assert!(across.lo <= -std::f64::consts::PI && across.hi >= std::f64::consts::PI);
     }

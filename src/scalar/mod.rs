@@ -44,7 +44,8 @@ pub type Exact = rug::Rational;
 
 /// The field operations every algorithm needs, with an explicit context for constants.
 ///
-/// Implemented for `f64`, [`rug::Float`], [`rug::Rational`], [`BigRational`] and balls.
+/// Implemented for `f64`, [`rug::Float`], [`rug::Rational`], [`BigRational`], balls and double
+/// intervals.
 /// Algorithms that need only `+ − × ÷` (Bernstein evaluation, Hermite interpolation,
 /// Gaussian elimination) take `T: Field` and therefore also run exactly in rationals.
 pub trait Field:
