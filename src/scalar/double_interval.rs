@@ -3,13 +3,13 @@
 //! procedure whose answer balls would also give (the Dubins planner decides each leg's word
 //! in it first and goes to [`super::ball::Ball`]s only when an interval cannot decide,
 //! `algo::gerbs::dubins`): an operation costs a few double operations where a ball's costs
-//! an MPFR call, and `atan2` about a hundred times less.
+//! an MPFR call (`run dubins` on 1999 legs went from 145 to about 20 ms).
 //!
 //! **Why the ends are proven.** IEEE 754 rounds each `+ − × ÷ √` of doubles to nearest, so
 //! the exact result lies within one ulp of the rounded one: the lower end is the rounded
 //! result stepped one double down, the upper end one double up (an exact zero operand keeps
-//! a result exact, so 0·x and x + 0 stay exact). Products and quotients take the extreme of
-//! the four end combinations. An end that overflows is ±∞, and an interval with an infinite
+//! a result exact, so 0·x and x + 0 stay exact). Products take the two end products that are
+//! extreme for the operands' signs, quotients the extremes of the four end quotients. An end that overflows is ±∞, and an interval with an infinite
 //! or NaN end is the interval of every number ([`DoubleInterval::ENTIRE`]), which every
 //! operation propagates (except that an exact 0 times any number is 0, as for balls): such an
 //! interval decides nothing.
