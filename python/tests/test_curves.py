@@ -203,6 +203,11 @@ def interrupt_after(seconds):
     import signal
     import threading
 
+    # Python raises KeyboardInterrupt on SIGINT only if SIGINT was not ignored when it started;
+    # a process started in the background by a non-interactive shell (a CI script run with
+    # `nohup … &`) inherits it ignored. Install Python's own handler, as an interactive
+    # interpreter has it, so that the test sends what a user's Ctrl-C sends.
+    signal.signal(signal.SIGINT, signal.default_int_handler)
     timer = threading.Timer(seconds, lambda: os.kill(os.getpid(), signal.SIGINT))
     timer.start()
     return timer
@@ -262,6 +267,7 @@ def test_the_interpreter_exits_cleanly_after_an_interrupted_python_curve():
 
     script = """
 import os, signal, threading, numpy as np, trajverify as tv
+signal.signal(signal.SIGINT, signal.default_int_handler)  # even if started with SIGINT ignored
 threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT)).start()
 try:
     tv.ph_spline(lambda t: (np.cos(t), np.sin(t), t / 5), (0, 6), segments=200000)
