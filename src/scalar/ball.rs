@@ -680,28 +680,7 @@ impl DivAssign<&Ball> for Ball {
     }
 }
 
-macro_rules! by_value {
-    ($op:ident, $method:ident, $assign_method:ident) => {
-        impl $op<&Ball> for Ball {
-            type Output = Ball;
-            fn $method(mut self, b: &Ball) -> Ball {
-                self.$assign_method(b);
-                self
-            }
-        }
-        impl $op<Ball> for Ball {
-            type Output = Ball;
-            fn $method(mut self, b: Ball) -> Ball {
-                self.$assign_method(&b);
-                self
-            }
-        }
-    };
-}
-by_value!(Add, add, add_assign);
-by_value!(Sub, sub, sub_assign);
-by_value!(Mul, mul, mul_assign);
-by_value!(Div, div, div_assign);
+by_value_from_assign!(Ball);
 
 impl Field for Ball {
     type Ctx = u32;
@@ -934,13 +913,7 @@ mod tests {
     /// up carries into the exponent).
     #[test]
     fn limb_bounds_equal_mpfr_directed_conversions() {
-        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
-        let mut next = || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state
-        };
+        let mut next = crate::scalar::xorshift(0x9e37_79b9_7f4a_7c15);
         for bits in [24, 53, 54, 64, 65, 128, 256, 1000] {
             for _ in 0..2000 {
                 let numerator = Float::with_val(bits, next() as i64);

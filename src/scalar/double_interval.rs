@@ -302,28 +302,7 @@ impl DivAssign<&DoubleInterval> for DoubleInterval {
     }
 }
 
-macro_rules! by_value {
-    ($op:ident, $method:ident, $assign_method:ident) => {
-        impl $op<&DoubleInterval> for DoubleInterval {
-            type Output = DoubleInterval;
-            fn $method(mut self, b: &DoubleInterval) -> DoubleInterval {
-                self.$assign_method(b);
-                self
-            }
-        }
-        impl $op<DoubleInterval> for DoubleInterval {
-            type Output = DoubleInterval;
-            fn $method(mut self, b: DoubleInterval) -> DoubleInterval {
-                self.$assign_method(&b);
-                self
-            }
-        }
-    };
-}
-by_value!(Add, add, add_assign);
-by_value!(Sub, sub, sub_assign);
-by_value!(Mul, mul, mul_assign);
-by_value!(Div, div, div_assign);
+by_value_from_assign!(DoubleInterval);
 
 /// 2⁵³: integers up to it in magnitude are doubles exactly.
 const EXACT_INTEGERS: u64 = 1 << 53;
@@ -652,13 +631,7 @@ mod tests {
 
     /// A reproducible stream of doubles spread over several scales and signs.
     fn samples(count: usize) -> Vec<f64> {
-        let mut state = 0x2545_f491_4f6c_dd1d_u64;
-        let mut next = || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state
-        };
+        let mut next = crate::scalar::xorshift(0x2545_f491_4f6c_dd1d);
         (0..count)
             .map(|_| {
                 let unit = (next() >> 11) as f64 / (1u64 << 53) as f64;

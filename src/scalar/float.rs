@@ -450,13 +450,7 @@ mod tests {
             assert_eq!(format_f64(x), core_debug(x), "{x:e}");
         }
         // Random bit patterns (every exponent), and random doubles near each layout switch.
-        let mut state = 0x9e3779b97f4a7c15u64;
-        let mut next = || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state
-        };
+        let mut next = crate::scalar::xorshift(0x9e37_79b9_7f4a_7c15);
         for _ in 0..200_000 {
             let x = f64::from_bits(next());
             assert_eq!(format_f64(x), core_debug(x), "{:#x}", x.to_bits());

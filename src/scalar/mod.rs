@@ -20,6 +20,33 @@
 //! [`parse`] reads decimal and fraction strings exactly; [`certify`] turns two computations at
 //! different precisions into a decimal string carrying only the digits on which they agree.
 
+/// `a op b` and `a op &b` for a number type `$t` from its in-place `a op= &b`, which reuses the
+/// left operand's storage (balls and double intervals; defined before the modules that use it).
+macro_rules! by_value_from_assign {
+    ($t:ty) => {
+        by_value_from_assign!($t, Add, add, add_assign);
+        by_value_from_assign!($t, Sub, sub, sub_assign);
+        by_value_from_assign!($t, Mul, mul, mul_assign);
+        by_value_from_assign!($t, Div, div, div_assign);
+    };
+    ($t:ty, $op:ident, $method:ident, $assign_method:ident) => {
+        impl $op<&$t> for $t {
+            type Output = $t;
+            fn $method(mut self, b: &$t) -> $t {
+                self.$assign_method(b);
+                self
+            }
+        }
+        impl $op<$t> for $t {
+            type Output = $t;
+            fn $method(mut self, b: $t) -> $t {
+                self.$assign_method(&b);
+                self
+            }
+        }
+    };
+}
+
 pub mod ball;
 pub mod certify;
 pub mod double_interval;
@@ -382,6 +409,17 @@ pub fn big_rational(q: &Exact) -> BigRational {
 /// The shortest decimal that reads back as the same double (see `Field::to_plain_string`).
 pub fn float_text(x: f64) -> String {
     float::format_f64(x)
+}
+
+/// A reproducible stream of 64-bit words (xorshift64) for the tests' random inputs.
+#[cfg(test)]
+pub(crate) fn xorshift(mut state: u64) -> impl FnMut() -> u64 {
+    move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        state
+    }
 }
 
 #[cfg(test)]

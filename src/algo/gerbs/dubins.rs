@@ -978,13 +978,8 @@ mod tests {
     /// (otherwise it would save nothing).
     #[test]
     fn interval_plans_are_the_ball_plans() {
-        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
-        let mut next = |modulus: u64| {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state % modulus) as i64
-        };
+        let mut word = crate::scalar::xorshift(0x9e37_79b9_7f4a_7c15);
+        let mut next = |modulus: u64| (word() % modulus) as i64;
         let waypoints: Vec<[Exact; 2]> = (0..400)
             .map(|i| {
                 let x = Exact::from((i * 2000 + next(1500), 10));
