@@ -8,6 +8,7 @@ use super::output::Out;
 use super::Rendered;
 use crate::algo::param::descent::{descend, refine, Descent};
 use crate::algo::param::natural::NaturalCubicSpline;
+use crate::algo::param::natural_exact::ExactNaturalSpline;
 use crate::algo::param::objective::{chord_length_spacing, objective, Objective};
 use crate::algo::param::one_d::{
     chord_length_1d, classify, parametrization_exact, Case, ParamError, Shape,
@@ -144,48 +145,15 @@ pub fn run_natural_spline(doc: &Map, scalar: ScalarKind) -> Result<Rendered, Run
             at[k]
         ));
     }
-    // A tridiagonal solve per coordinate and one bisection per point: about N + P operations
-    // (measured: N = P = 160000 in 0.25 s in f64 since the points are evaluated on two
-    // threads, 16000 in 0.56 s at mpfr:256). In rationals the second derivatives' numbers
-    // grow to about N times the input's bits, and every operation on them costs about N^1.4
-    // times the input's size factor (budget::exact_size_factor; measured in GMP's rationals,
-    // N = P, points on two threads: 800 knots of 6 digits in 1.9 s, of 16 digits in 11 s).
-    let (knots_n, dims) = (t.len() as f64, z[0].len() as f64);
-    let units = dims * (knots_n + at.len() as f64);
-    let exact_size = if scalar == ScalarKind::Rational {
-        let mut values = Vec::new();
-        for (index, point) in z.iter().enumerate() {
-            for (coordinate, v) in point.iter().enumerate() {
-                let path = ValuePath {
-                    name: "z",
-                    index,
-                    coordinate,
-                    is_point,
-                };
-                values.push(input::number(v, path)?);
-            }
-        }
-        budget::exact_size_factor(t.iter().chain(&values), 2.4)
-    } else {
-        1.0
+    let job = NaturalSplineJob {
+        t,
+        z,
+        at,
+        is_point,
+        exact: scalar == ScalarKind::Rational,
     };
-    let rates = Rates {
-        f64: 1.2e-6,
-        mpfr256: 4e-5,
-        rational: 1.0e-9 * knots_n.powf(1.4) * exact_size,
-    };
-    rates.check(
-        units,
-        scalar,
-        "t",
-        &format!(
-            "a spline on {} knots evaluated at {} points at {scalar}",
-            t.len(),
-            at.len()
-        ),
-    )?;
-    check_output(3.0 * dims * at.len() as f64, "at", "this run")?;
-    run_field(&NaturalSplineJob { t, z, at, is_point }, scalar)
+    job.check_budget(scalar)?;
+    run_field(&job, scalar)
 }
 
 /// The knots, values (one list per point) and evaluation points of `natural-spline`. The
@@ -196,11 +164,19 @@ struct NaturalSplineJob<'a> {
     z: Vec<Vec<&'a Value<'a>>>,
     at: Vec<Exact>,
     is_point: bool,
+    /// Rational output: computed by fraction-free elimination
+    /// ([`ExactNaturalSpline`], the same numbers as the generic spline in rationals).
+    exact: bool,
 }
 
 impl FieldJob for NaturalSplineJob<'_> {
     fn run<T: Field>(&self, ctx: &T::Ctx) -> Result<Out<T>, RunError> {
-        Ok(eval(&self.t, &self.z, &self.at, self.is_point, ctx)?)
+        let rows = if self.exact {
+            self.exact_rows(|q| T::from_exact(q, ctx))?
+        } else {
+            self.rows(ctx)?
+        };
+        Ok(columns(rows, self.is_point, ctx))
     }
 }
 
@@ -208,60 +184,152 @@ impl FieldJob for NaturalSplineJob<'_> {
 /// costs about as much as 64 rational evaluations, or thousands in f64).
 const PARALLEL_EVALUATIONS: usize = 64;
 
-/// Values, first and second derivatives of the natural spline of each coordinate at `at`.
-fn eval<T: Field>(
-    t: &[Exact],
-    z: &[Vec<&Value>],
-    at: &[Exact],
-    is_point: bool,
-    ctx: &T::Ctx,
-) -> Result<Out<T>, InputError> {
-    let conv = |q: &Exact| T::from_exact(q, ctx);
-    let knots: Vec<T> = t.iter().map(conv).collect();
-    // The knots increase exactly (checked on the input); each spacing is formed exactly and
-    // rounded once, so knots closer than the precision keep their true spacing.
-    let spacings: Vec<T> = t
-        .windows(2)
-        .map(|w| conv(&(w[1].clone() - &w[0])))
-        .collect();
-    let splines = (0..z[0].len())
-        .map(|c| {
-            let values = z
-                .iter()
-                .enumerate()
-                .map(|(index, v)| {
+/// Value, slope and curvature of every coordinate at each point.
+type Rows<T> = Vec<Vec<[T; 3]>>;
+
+impl NaturalSplineJob<'_> {
+    /// Refuses a run whose estimated time or output exceeds the budget.
+    fn check_budget(&self, scalar: ScalarKind) -> Result<(), RunError> {
+        // A tridiagonal solve per coordinate and one bisection per point: about N + P operations
+        // (measured: N = P = 160000 in 0.25 s in f64 since the points are evaluated on two
+        // threads, 16000 in 0.56 s at mpfr:256). In rationals the second derivatives' numbers
+        // grow to about N times the input's bits, and every operation on them costs about N^1.4
+        // times the input's size factor (budget::exact_size_factor; measured with the
+        // fraction-free solve, N = P, points on two threads: 800 knots of 6 digits in 0.93 s,
+        // `cargo bench --bench cost_models -- natural-spline`).
+        let (knots_n, dims) = (self.t.len() as f64, self.z[0].len() as f64);
+        let units = dims * (knots_n + self.at.len() as f64);
+        let exact_size = if scalar == ScalarKind::Rational {
+            let mut values = Vec::new();
+            for (index, point) in self.z.iter().enumerate() {
+                for (coordinate, v) in point.iter().enumerate() {
                     let path = ValuePath {
                         name: "z",
                         index,
-                        coordinate: c,
-                        is_point,
+                        coordinate,
+                        is_point: self.is_point,
                     };
-                    input::number_in(v[c], path, ctx)
-                })
-                .collect::<Result<Vec<T>, _>>()?;
-            NaturalCubicSpline::with_spacings(knots.clone(), spacings.clone(), values)
-                .map_err(|e| InputError(format!("field \"t\": {e}")))
-        })
-        .collect::<Result<Vec<_>, _>>()?;
-    // Value, slope and curvature of every coordinate at each point, each point evaluated once
-    // and on its own (the points on two threads: in rationals each output costs a gcd of
-    // numbers of thousands of bits).
-    let row = |q: &Exact| -> Vec<[T; 3]> {
-        // The piece is located on the exact point: the first i ≥ 1 with q ≤ tᵢ.
-        let piece = crate::algo::param::natural::piece_index(t, q);
-        // The distances to the piece's ends, exact, then rounded once.
-        let u = conv(&(t[piece].clone() - q));
-        let v = conv(&(q.clone() - &t[piece - 1]));
-        splines
+                    values.push(input::number(v, path)?);
+                }
+            }
+            budget::exact_size_factor(self.t.iter().chain(&values), 2.4)
+        } else {
+            1.0
+        };
+        let rates = Rates {
+            f64: 1.2e-6,
+            mpfr256: 4e-5,
+            rational: 4.5e-10 * knots_n.powf(1.4) * exact_size,
+        };
+        rates.check(
+            units,
+            scalar,
+            "t",
+            &format!(
+                "a spline on {} knots evaluated at {} points at {scalar}",
+                self.t.len(),
+                self.at.len()
+            ),
+        )?;
+        check_output(3.0 * dims * self.at.len() as f64, "at", "this run")?;
+        Ok(())
+    }
+
+    /// The values of coordinate `c` read by `read`.
+    fn coordinate<T>(
+        &self,
+        c: usize,
+        read: impl Fn(&Value, ValuePath) -> Result<T, InputError>,
+    ) -> Result<Vec<T>, InputError> {
+        self.z
             .iter()
-            .map(|s| s.eval_offsets(&u, &v, piece))
+            .enumerate()
+            .map(|(index, v)| {
+                let path = ValuePath {
+                    name: "z",
+                    index,
+                    coordinate: c,
+                    is_point: self.is_point,
+                };
+                read(v[c], path)
+            })
             .collect()
-    };
-    let rows: Vec<Vec<[T; 3]>> = if at.len() * splines.len() >= PARALLEL_EVALUATIONS {
-        at.par_iter().map(carried(row)).collect()
-    } else {
-        at.iter().map(row).collect()
-    };
+    }
+
+    /// [`Rows`] from `row`, called with the exact distances u = tᵢ − q and v = q − tᵢ₋₁ of
+    /// each point q to the ends of its piece i, located on the exact point (the first i ≥ 1
+    /// with q ≤ tᵢ). Each point is evaluated once and on its own (on two threads from
+    /// [`PARALLEL_EVALUATIONS`]: in rationals each output costs a gcd of numbers of
+    /// thousands of bits).
+    fn rows_at<T: Send>(
+        &self,
+        row: impl Fn(&Exact, &Exact, usize) -> Vec<[T; 3]> + Sync,
+    ) -> Rows<T> {
+        let t = &self.t;
+        let at_point = |q: &Exact| {
+            let piece = crate::algo::param::natural::piece_index(t, q);
+            row(&(t[piece].clone() - q), &(q.clone() - &t[piece - 1]), piece)
+        };
+        if self.at.len() * self.z[0].len() >= PARALLEL_EVALUATIONS {
+            self.at.par_iter().map(carried(at_point)).collect()
+        } else {
+            self.at.iter().map(at_point).collect()
+        }
+    }
+
+    /// The generic spline of each coordinate in `T`, evaluated at every point.
+    fn rows<T: Field>(&self, ctx: &T::Ctx) -> Result<Rows<T>, InputError> {
+        let conv = |q: &Exact| T::from_exact(q, ctx);
+        let knots: Vec<T> = self.t.iter().map(conv).collect();
+        // The knots increase exactly (checked on the input); each spacing is formed exactly
+        // and rounded once, so knots closer than the precision keep their true spacing.
+        let spacings: Vec<T> = self
+            .t
+            .windows(2)
+            .map(|w| conv(&(w[1].clone() - &w[0])))
+            .collect();
+        let splines = (0..self.z[0].len())
+            .map(|c| {
+                let values = self.coordinate(c, |v, path| input::number_in(v, path, ctx))?;
+                NaturalCubicSpline::with_spacings(knots.clone(), spacings.clone(), values)
+                    .map_err(|e| InputError(format!("field \"t\": {e}")))
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        Ok(self.rows_at(|u, v, piece| {
+            // The exact distances rounded once.
+            let (u, v) = (conv(u), conv(v));
+            splines
+                .iter()
+                .map(|s| s.eval_offsets(&u, &v, piece))
+                .collect()
+        }))
+    }
+
+    /// The exact spline of each coordinate, evaluated at every point, each number given to
+    /// `into` (the identity for rationals).
+    fn exact_rows<T: Send>(
+        &self,
+        into: impl Fn(&Exact) -> T + Sync,
+    ) -> Result<Rows<T>, InputError> {
+        let splines = (0..self.z[0].len())
+            .map(|c| {
+                let values = self.coordinate(c, |v, path| input::number(v, path))?;
+                ExactNaturalSpline::new(&self.t, values)
+                    .map_err(|e| InputError(format!("field \"t\": {e}")))
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        Ok(self.rows_at(|u, v, piece| {
+            splines
+                .iter()
+                .map(|s| s.eval_offsets(u, v, piece).map(|x| into(&x)))
+                .collect()
+        }))
+    }
+}
+
+/// The output: values, first and second derivatives, each a list over the points (of
+/// lists over the coordinates for points).
+fn columns<T: Field>(rows: Rows<T>, is_point: bool, ctx: &T::Ctx) -> Out<T> {
     let column = |j: usize| -> Out<T> {
         Out::List(
             rows.iter()
@@ -276,11 +344,11 @@ fn eval<T: Field>(
                 .collect(),
         )
     };
-    Ok(Out::object(vec![
+    Out::object(vec![
         ("values", column(0)),
         ("first", column(1)),
         ("second", column(2)),
-    ]))
+    ])
 }
 
 struct MarinInput {
@@ -477,5 +545,39 @@ impl RealJob for MarinJob {
             chord,
             m.projected_gradient_norm.to_f64(),
         ))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The rational run's fraction-free route against the generic spline in rationals: the
+    /// same output, number for number, for points of two coordinates evaluated at knots
+    /// (both ends included) and inside pieces.
+    #[test]
+    fn the_exact_route_gives_the_generic_splines_numbers() {
+        let text = r#"{"t": [0, 0.3, 0.45, 1.2, 2, 2.05, 7], "z": [[0, 1], [0.25, -2], [1, 3.5], [-0.75, 0], [2, 2], [1, 1], [1e3, -1e-3]], "at": [0, 0.3, 0.31, 1, 2.05, 1.7, 6.999, 7]}"#;
+        let doc = input::parse_document(text).unwrap();
+        let t = numbers(input::field(&doc, "t").unwrap(), "t").unwrap();
+        let (z, is_point) =
+            input::uniform_values_with(input::field(&doc, "z").unwrap(), "z", |x, p| {
+                input::number_value(x, p)
+            })
+            .unwrap();
+        let at = numbers(input::field(&doc, "at").unwrap(), "at").unwrap();
+        let job = |exact| NaturalSplineJob {
+            t: t.clone(),
+            z: z.clone(),
+            at: at.clone(),
+            is_point,
+            exact,
+        };
+        let text_of = |exact| {
+            let out: Out<Exact> = job(exact).run(&()).unwrap();
+            super::super::output::render_plain(&out).to_string()
+        };
+        assert!(is_point);
+        assert_eq!(text_of(true), text_of(false));
     }
 }

@@ -1,6 +1,8 @@
 //! Optimal data parametrization for parametric cubic spline interpolation (paper 004, Marin).
 //!
 //! - [`natural`]: natural cubic spline interpolation on any knots, with ∫θ″².
+//! - [`natural_exact`]: the same spline in exact rationals by fraction-free elimination (one
+//!   common denominator, one reduction per printed number).
 //! - [`objective`]: the smoothness objective G(h) in its exact (Eq. 31) and approximate
 //!   (Eq. 34) algebraic forms.
 //! - [`one_d`]: the exact minimizing parametrization of scalar data, cases I–III (Sec. 2).
@@ -27,6 +29,7 @@
 pub mod descent;
 pub mod gradient;
 pub mod natural;
+pub mod natural_exact;
 pub mod objective;
 pub mod one_d;
 pub mod proven;
