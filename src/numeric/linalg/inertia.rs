@@ -56,21 +56,14 @@ impl IntegerSymmetric {
     /// The Gram matrix BᵀB of the exact rational `b`, formed in GMP (much faster than
     /// `num-rational` for the wide entries of graded matrices); `None` never for a matrix
     /// with at least one row.
-    pub fn gram(b: &Matrix<crate::scalar::BigRational>) -> Option<Self> {
+    pub fn gram(b: &Matrix<rug::Rational>) -> Option<Self> {
         let (rows, cols) = (b.rows(), b.cols());
-        let gmp: Vec<Vec<rug::Rational>> = (0..rows)
-            .map(|i| {
-                (0..cols)
-                    .map(|j| crate::scalar::mpfr_rational(&b[(i, j)]))
-                    .collect()
-            })
-            .collect();
         let gram = (0..cols)
             .map(|i| {
                 (0..cols)
                     .map(|j| {
-                        gmp.iter().fold(rug::Rational::new(), |sum, row| {
-                            sum + rug::Rational::from(&row[i] * &row[j])
+                        (0..rows).fold(rug::Rational::new(), |sum, r| {
+                            sum + rug::Rational::from(&b[(r, i)] * &b[(r, j)])
                         })
                     })
                     .collect()
@@ -234,7 +227,7 @@ mod tests {
     fn gram_in_gmp_counts_as_the_rational_gram() {
         let b = Matrix::from_fn(3, 3, |i, j| q((i * 3 + j) as i64 % 5 - 2, 1 + j as i64));
         let slow = IntegerSymmetric::new(&b.transpose().mul(&b)).unwrap();
-        let fast = IntegerSymmetric::gram(&b).unwrap();
+        let fast = IntegerSymmetric::gram(&b.map(crate::scalar::mpfr_rational)).unwrap();
         for (n, d) in [(1, 3), (1, 2), (2, 1), (9, 2), (25, 1)] {
             let shift = rug::Rational::from((n, d));
             assert_eq!(
