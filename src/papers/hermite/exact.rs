@@ -1,5 +1,7 @@
 //! The exact claims of paper 000: Eqs. 8–9, 12–18, App. A and degree elevation, all checked
-//! in rational arithmetic on deterministic pseudo-random data.
+//! in rational arithmetic on deterministic pseudo-random data: GMP's rationals (`Exact`),
+//! whose gcd is several times faster than num-rational's on these numbers, except Fig. 2,
+//! whose curves the statements of `mod.rs` read in `BigRational`.
 
 use super::super::sample::SplitMix64;
 use super::super::{Outcome, Verdict};
@@ -8,31 +10,45 @@ use crate::numeric::linalg::{solve, Matrix};
 use crate::numeric::poly::bernstein::power_basis_derivative;
 use crate::numeric::poly::differences::*;
 use crate::numeric::poly::Bernstein;
-use crate::scalar::{BigRational, Field};
+use crate::scalar::{mpfr_rational, BigRational, Exact, Field};
 
-type Q = BigRational;
+type Q = Exact;
 
 fn q(n: i64) -> Q {
-    Q::from_integer(n.into())
+    Q::from(n)
+}
+
+/// The generator's draws, as GMP rationals (the same numbers, the same sequence).
+fn draw(rng: &mut SplitMix64) -> Q {
+    mpfr_rational(&rng.rational())
+}
+
+fn draw_positive(rng: &mut SplitMix64) -> Q {
+    mpfr_rational(&rng.positive())
+}
+
+fn draws(rng: &mut SplitMix64, n: usize) -> Vec<Q> {
+    (0..n).map(|_| draw(rng)).collect()
 }
 
 /// Random Hermite data with m derivatives on a random interval.
 fn random_problem(rng: &mut SplitMix64, m: usize) -> HermiteData<Q> {
-    let t0 = rng.rational();
-    let t1 = t0.clone() + rng.positive();
+    let t0 = draw(rng);
+    let t1 = t0.clone() + draw_positive(rng);
     // The interval is non-empty by construction, so `new` cannot fail here.
-    HermiteData::new_unchecked(rng.rationals(m + 1), rng.rationals(m + 1), t0, t1)
+    HermiteData::new_unchecked(draws(rng, m + 1), draws(rng, m + 1), t0, t1)
 }
 
 /// How many boundary conditions of `data` the curve `b` violates, judged by the
 /// power-basis expansion (independent of the difference operators used to build `b`).
-fn violated_conditions(data: &HermiteData<Q>, b: &Bernstein<Q>) -> usize {
+fn violated_conditions<T: Field<Ctx = ()>>(data: &HermiteData<T>, b: &Bernstein<T>) -> usize {
     let a = b.to_power_basis();
     let width = b.duration();
+    let (zero, one) = (T::zero_in(&()), T::one_in(&()));
     let mut bad = 0;
     for j in 0..=data.derivatives() {
-        bad += (power_basis_derivative(&a, j, &q(0), &width) != data.start()[j]) as usize;
-        bad += (power_basis_derivative(&a, j, &q(1), &width) != data.end()[j]) as usize;
+        bad += (power_basis_derivative(&a, j, &zero, &width) != data.start()[j]) as usize;
+        bad += (power_basis_derivative(&a, j, &one, &width) != data.end()[j]) as usize;
     }
     bad
 }
@@ -205,7 +221,7 @@ pub fn eq8() -> (Outcome, Outcome) {
     let (mut compared, mut differ, mut example) = (0, 0, None);
     let mut restored_bad = 0;
     for n in 0..=30 {
-        let y = rng.rationals(n + 1);
+        let y = draws(&mut rng, n + 1);
         let a2 = binomial_matrix::<Q>(n, &()).mul_vec(&y);
         restored_bad += (anti_difference(&y) != a2) as usize;
         for (j, printed) in anti_difference_as_printed(&y)
@@ -262,7 +278,7 @@ pub fn eq9_self_inverse() -> Outcome {
     let mut rng = SplitMix64::new(9);
     let bad = (0..=30)
         .filter(|&n| {
-            let x = rng.rationals(n + 1);
+            let x = draws(&mut rng, n + 1);
             backward_anti_difference(&backward_differences(&x)) != x
         })
         .count();
@@ -280,15 +296,15 @@ pub fn eq13_derivatives() -> Outcome {
     let mut rng = SplitMix64::new(13);
     let (mut checks, mut bad) = (0, 0);
     for n in 0..=15 {
-        let t0 = rng.rational();
-        let t1 = t0.clone() + rng.positive();
-        let b = Bernstein::new(rng.rationals(n + 1), (t0.clone(), t1.clone()))
+        let t0 = draw(&mut rng);
+        let t1 = t0.clone() + draw_positive(&mut rng);
+        let b = Bernstein::new(draws(&mut rng, n + 1), (t0.clone(), t1.clone()))
             .expect("t0 < t1 and n + 1 points by construction");
         let power = b.to_power_basis();
         for j in 0..=n + 1 {
             for _ in 0..3 {
                 // A random point of [t0, t1].
-                let zeta = Q::new(rng.int(0, 100).into(), 100.into());
+                let zeta = Q::from((rng.int(0, 100), 100));
                 let t = t0.clone() + zeta.clone() * b.duration();
                 let expected = power_basis_derivative(&power, j, &zeta, &b.duration());
                 checks += 2;
@@ -341,7 +357,8 @@ pub fn degree_elevation() -> Outcome {
 }
 
 /// Fig. 2: the two control point vectors, exactly.
-pub fn fig2(duration: i64, printed: &str) -> (Outcome, Bernstein<Q>) {
+pub fn fig2(duration: i64, printed: &str) -> (Outcome, Bernstein<BigRational>) {
+    let q = |n: i64| BigRational::from_integer(n.into());
     let data = HermiteData::new(
         vec![q(0), q(0), q(0)],
         vec![q(1), q(1), q(0)],
@@ -364,7 +381,7 @@ pub fn fig2(duration: i64, printed: &str) -> (Outcome, Bernstein<Q>) {
         .iter()
         .map(|x| x.to_plain_string())
         .collect();
-    let printed_values: Vec<Option<Q>> = printed
+    let printed_values: Vec<Option<BigRational>> = printed
         .split_whitespace()
         .map(|s| crate::scalar::parse::parse_rational(s).ok())
         .collect();
