@@ -84,7 +84,7 @@ pub struct NaturalCubicSpline<T> {
 }
 
 /// At least two knots, and one value per knot.
-fn check_lengths<T>(knots: &[T], values: &[T]) -> Result<(), SplineError> {
+pub(super) fn check_lengths<T>(knots: &[T], values: &[T]) -> Result<(), SplineError> {
     if knots.len() < 2 {
         return Err(SplineError::TooFewKnots);
     }
@@ -95,6 +95,14 @@ fn check_lengths<T>(knots: &[T], values: &[T]) -> Result<(), SplineError> {
         });
     }
     Ok(())
+}
+
+/// Knots that increase strictly ([`SplineError::NotIncreasing`] names the first that does not).
+pub(super) fn check_increasing<T: PartialOrd>(knots: &[T]) -> Result<(), SplineError> {
+    match (1..knots.len()).find(|&i| knots[i] <= knots[i - 1]) {
+        Some(index) => Err(SplineError::NotIncreasing { index }),
+        None => Ok(()),
+    }
 }
 
 /// The piece i with t in [tᵢ₋₁, tᵢ] of increasing `knots` t₀ < … < t_N, clamped to the first
@@ -119,9 +127,7 @@ impl<T: Field> NaturalCubicSpline<T> {
                 return Err(SplineError::NotFinite { field, index });
             }
         }
-        if let Some(i) = (1..knots.len()).find(|&i| knots[i] <= knots[i - 1]) {
-            return Err(SplineError::NotIncreasing { index: i });
-        }
+        check_increasing(&knots)?;
         Self::with_increasing_knots(knots, values)
     }
 

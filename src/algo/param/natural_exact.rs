@@ -28,7 +28,7 @@
 //! reduction of a fraction of about 3400 bits per printed number, as many instructions as
 //! the generic formula's reduced steps), and so do the printed digits.
 
-use super::natural::SplineError;
+use super::natural::{check_increasing, check_lengths, SplineError};
 use rug::{Integer, Rational};
 
 /// The natural cubic spline through (tᵢ, zᵢ) in exact rationals, its second derivatives held
@@ -51,18 +51,8 @@ impl ExactNaturalSpline {
     /// [`SplineError::TooFewKnots`], [`SplineError::LengthMismatch`] or
     /// [`SplineError::NotIncreasing`], as [`super::natural::NaturalCubicSpline::new`].
     pub fn new(knots: &[Rational], values: Vec<Rational>) -> Result<Self, SplineError> {
-        if knots.len() < 2 {
-            return Err(SplineError::TooFewKnots);
-        }
-        if knots.len() != values.len() {
-            return Err(SplineError::LengthMismatch {
-                knots: knots.len(),
-                values: values.len(),
-            });
-        }
-        if let Some(index) = (1..knots.len()).find(|&i| knots[i] <= knots[i - 1]) {
-            return Err(SplineError::NotIncreasing { index });
-        }
+        check_lengths(knots, &values)?;
+        check_increasing(knots)?;
         let spacings: Vec<Rational> = knots
             .windows(2)
             .map(|w| Rational::from(&w[1] - &w[0]))
